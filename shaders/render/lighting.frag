@@ -1,0 +1,99 @@
+// Deferred lighting: ambient + sum over lights of
+// shadow * (Lambert diffuse + normalized Blinn-Phong specular).
+// SHADOW_TECHNIQUE is a compile-time define (TECHNIQUE_*).
+#include "../common/uniforms.glsl"
+#include "../shadow/lookup.glsl"
+#include "../shadow/hard.glsl"
+
+layout(std140, binding = BINDING_SHADOW_UBO) uniform ShadowBlock { GpuShadow shadow_params; };
+
+layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gbuffer_depth;
+layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gbuffer_normal;
+layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gbuffer_albedo;
+layout(binding = UNIT_GBUFFER_SPECULAR) uniform sampler2D gbuffer_specular;
+layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2D shadow_depth[MAX_LIGHTS];
+
+in vec2 v_uv;
+layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
+
+vec3 world_position(ivec2 pixel, float depth) {
+  vec2 ndc = (vec2(pixel) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
+  vec4 p = frame.inverse_view_projection * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+  return p.xyz / p.w;
+}
+
+// Fraction of light i's light that reaches the point (1 = lit).
+float shadow_factor(int i, vec3 world, vec3 normal) {
+#if SHADOW_TECHNIQUE == TECHNIQUE_NONE
+  return 1.0;
+#else
+  GpuLight light = lights[i];
+  ShadowLookup s = shadow_lookup(light, world, normal, shadow_params.bias.z);
+  if (!s.inside) return 1.0;
+  float bias = shadow_bias(light, shadow_params, s, normal, direction_to_light(light, world));
+#if SHADOW_TECHNIQUE == TECHNIQUE_HARD
+  return shadow_hard(shadow_depth[i], s.uv, s.depth, bias);
+#endif
+#endif
+}
+
+// Light arriving from light i (irradiance on a surface facing it), and the
+// unit direction towards it.
+vec3 incident_light(int i, vec3 world, out vec3 to_light) {
+  GpuLight light = lights[i];
+  vec3 radiance = light.radiance_cos_inner.rgb;
+  if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
+    to_light = -light.direction_cos_outer.xyz;
+    return radiance;
+  }
+  vec3 d = light.position_type.xyz - world;
+  float distance2 = max(dot(d, d), 1e-8);
+  to_light = d * inversesqrt(distance2);
+  float cos_axis = dot(-to_light, light.direction_cos_outer.xyz);
+  float cone = smoothstep(light.direction_cos_outer.w, light.radiance_cos_inner.w, cos_axis);
+  return radiance * cone / distance2;
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 normal_shininess = texelFetch(gbuffer_normal, pixel, 0);
+  int view = frame.options.y;
+  if (normal_shininess.w == 0.0) {  // background
+    out_color = view == VIEW_FINAL ? vec4(frame.ambient.rgb * 0.5, 0.0)
+                                   : vec4(view == VIEW_SHADOW ? vec3(1.0) : vec3(0.0), 0.0);
+    return;
+  }
+  vec3 n = normalize(normal_shininess.xyz);
+  vec3 world = world_position(pixel, texelFetch(gbuffer_depth, pixel, 0).r);
+  vec3 albedo = texelFetch(gbuffer_albedo, pixel, 0).rgb;
+
+  if (view == VIEW_NORMALS) {
+    out_color = vec4(n * 0.5 + 0.5, 1.0);
+    return;
+  }
+  if (view == VIEW_ALBEDO) {
+    out_color = vec4(albedo, 1.0);
+    return;
+  }
+  if (view == VIEW_SHADOW) {
+    out_color = vec4(vec3(shadow_factor(frame.options.z, world, n)), 1.0);
+    return;
+  }
+
+  vec3 specular = texelFetch(gbuffer_specular, pixel, 0).rgb;
+  float shininess = normal_shininess.w;
+  vec3 to_eye = normalize(frame.camera_position.xyz - world);
+  vec3 color = frame.ambient.rgb * albedo;
+  for (int i = 0; i < frame.options.x; ++i) {
+    vec3 to_light;
+    vec3 irradiance = incident_light(i, world, to_light);
+    float n_dot_l = dot(n, to_light);
+    if (n_dot_l <= 0.0 || all(equal(irradiance, vec3(0.0)))) continue;
+    vec3 h = normalize(to_light + to_eye);
+    // Normalized Blinn-Phong: (s + 8) / 8 keeps the highlight's energy
+    // constant as the exponent changes (Akenine-Moller et al., RTR 4th ed.).
+    vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
+    color += shadow_factor(i, world, n) * irradiance * n_dot_l * brdf;
+  }
+  out_color = vec4(color, 1.0);
+}

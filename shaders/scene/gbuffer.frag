@@ -1,0 +1,20 @@
+// Writes the surface attributes the lighting pass needs; position comes
+// back from the depth buffer.
+#include "../shared/bindings.h"
+#include "material.glsl"
+
+in vec3 v_normal;
+flat in uint v_material;
+
+layout(location = 0) out vec4 out_normal;    // xyz: world normal, w: shininess (0 = background)
+layout(location = 1) out vec4 out_albedo;    // rgb: albedo (stored sRGB-encoded)
+layout(location = 2) out vec4 out_specular;  // rgb: specular colour
+
+void main() {
+  Material m = materials[v_material];
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;  // single-sided planes seen from below
+  out_normal = vec4(n, m.specular_shininess.w);
+  out_albedo = vec4(m.albedo.rgb, 1.0);
+  out_specular = vec4(m.specular_shininess.rgb, 1.0);
+}

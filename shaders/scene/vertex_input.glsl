@@ -1,0 +1,4 @@
+// World-space scene vertices (see src/scene/mesh.hpp: Vertex).
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in uint in_material;

@@ -1,0 +1,54 @@
+// Where a world-space point falls in a light's shadow map, and how much
+// bias its depth comparison needs.
+
+struct ShadowLookup {
+  vec2 uv;      // shadow-map coordinates, in [0, 1] inside the map
+  float depth;  // receiver's relative depth z-bar
+  float texel;  // world size of one shadow-map texel at the receiver
+  bool inside;  // false outside the light's frustum: treated as lit
+};
+
+float light_linear_depth(GpuLight light, vec3 world) {
+  return -(light.view * vec4(world, 1.0)).z;
+}
+
+// World size of one texel where the point is: grows with depth for a
+// perspective (spot) light, constant for an orthographic (directional) one.
+float shadow_texel_world(GpuLight light, float linear_depth) {
+  return int(light.position_type.w) == LIGHT_SPOT ? light.depth_range.z * linear_depth
+                                                  : light.depth_range.z;
+}
+
+// Unit direction from the point towards the light.
+vec3 direction_to_light(GpuLight light, vec3 world) {
+  return int(light.position_type.w) == LIGHT_SPOT ? normalize(light.position_type.xyz - world)
+                                                  : -light.direction_cos_outer.xyz;
+}
+
+// Projects the point after moving it `normal_offset` texels along its
+// normal (normal-offset shadows: the shift scales with the texel size, so
+// it does not depend on the map's resolution).
+ShadowLookup shadow_lookup(GpuLight light, vec3 world, vec3 normal, float normal_offset) {
+  float texel = shadow_texel_world(light, light_linear_depth(light, world));
+  vec3 p = world + normal * (normal_offset * texel);
+  vec4 clip = light.view_projection * vec4(p, 1.0);
+  ShadowLookup s;
+  s.uv = clip.xy / clip.w * 0.5 + 0.5;
+  float z = light_linear_depth(light, p);
+  s.depth = (z - light.depth_range.x) / (light.depth_range.y - light.depth_range.x);
+  s.texel = shadow_texel_world(light, z);
+  s.inside = clip.w > 0.0 && all(greaterThanEqual(s.uv, vec2(0.0))) &&
+             all(lessThanEqual(s.uv, vec2(1.0)));
+  return s;
+}
+
+// Constant plus slope-scaled bias, in z-bar units. The slope term is the
+// receiver's depth change across one texel, tan(theta) * texel, where theta
+// is the angle between its normal and the direction to the light; tan is
+// capped so that grazing surfaces do not push the bias to infinity.
+float shadow_bias(GpuLight light, GpuShadow params, ShadowLookup s, vec3 normal, vec3 to_light) {
+  float cos_theta = clamp(abs(dot(normal, to_light)), 1e-4, 1.0);
+  float tan_theta = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, params.bias.w);
+  float depth_span = light.depth_range.y - light.depth_range.x;
+  return params.bias.x + params.bias.y * tan_theta * s.texel / depth_span;
+}

@@ -1,0 +1,46 @@
+// Binding points shared by the C++ host and the GLSL shaders: this file is
+// included by both, so a binding has one number in one place.
+#ifndef PENUMBRA_BINDINGS_H
+#define PENUMBRA_BINDINGS_H
+
+// Uniform blocks
+#define BINDING_FRAME_UBO 0
+#define BINDING_LIGHTS_UBO 1
+#define BINDING_SHADOW_UBO 2
+#define BINDING_PASS_UBO 3
+
+// Storage buffers
+#define BINDING_MATERIALS_SSBO 0
+#define BINDING_FILTER_WEIGHTS_SSBO 1
+
+// Texture units
+#define UNIT_GBUFFER_DEPTH 0
+#define UNIT_GBUFFER_NORMAL 1
+#define UNIT_GBUFFER_ALBEDO 2
+#define UNIT_GBUFFER_SPECULAR 3
+#define UNIT_AMBIENT_OCCLUSION 4
+#define UNIT_SHADOW_DEPTH 8    // MAX_LIGHTS units: each light's z-bar depth map
+#define UNIT_SHADOW_FILTERED 12  // MAX_LIGHTS units: each light's filtered representation
+#define UNIT_COMPUTE_INPUT 0
+
+// Image units (compute)
+#define IMAGE_OUTPUT 0
+#define IMAGE_OUTPUT_2 1
+
+#define MAX_LIGHTS 4
+
+// Light types (GpuLight::position_type.w)
+#define LIGHT_SPOT 0
+#define LIGHT_DIRECTIONAL 1
+
+// Views written by the lighting pass (GpuFrame::options.y)
+#define VIEW_FINAL 0
+#define VIEW_SHADOW 1
+#define VIEW_NORMALS 2
+#define VIEW_ALBEDO 3
+
+// Shadow techniques (compile-time define SHADOW_TECHNIQUE)
+#define TECHNIQUE_NONE 0
+#define TECHNIQUE_HARD 1
+
+#endif

@@ -1,0 +1,50 @@
+// Uniform-block structs shared by the C++ host and the GLSL shaders. Only
+// vec4/mat4/ivec4 members, so std140 and the C++ layout agree (checked by
+// static_asserts on the host side and a test against the driver's offsets).
+#ifndef PENUMBRA_GPU_TYPES_H
+#define PENUMBRA_GPU_TYPES_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace penumbra::gpu {
+using vec4 = glm::vec4;
+using ivec4 = glm::ivec4;
+using mat4 = glm::mat4;
+#endif
+
+// One light as the shaders see it (one entry of the lights block).
+struct GpuLight {
+  mat4 view;                 // world -> light view (light looks down -z)
+  mat4 view_projection;      // world -> light clip space
+  vec4 position_type;        // xyz: position (spot); w: LIGHT_SPOT or LIGHT_DIRECTIONAL
+  vec4 direction_cos_outer;  // xyz: unit direction the light shines along; w: cos(outer cone)
+  vec4 radiance_cos_inner;   // rgb: colour * intensity; w: cos(inner cone)
+  // x: z0, y: z1 (light-space depth range mapped to z-bar = (z - z0)/(z1 - z0));
+  // z: world size of one shadow-map texel at unit depth (spot) or anywhere
+  //    (directional); w: shadow-map size in texels
+  vec4 depth_range;
+};
+
+// Per-frame camera data.
+struct GpuFrame {
+  mat4 view;
+  mat4 projection;
+  mat4 inverse_view_projection;
+  vec4 camera_position;  // xyz: world position
+  vec4 viewport;         // xy: size in pixels, zw: 1 / size
+  ivec4 options;         // x: light count, y: VIEW_*, z: light shown by the shadow view
+  vec4 ambient;          // rgb: ambient light colour
+};
+
+// Shadow parameters, all in z-bar units unless stated.
+struct GpuShadow {
+  // x: constant bias; y: slope-scaled bias (texels of depth slope);
+  // z: normal offset (texels); w: largest slope (tan) the slope bias follows
+  vec4 bias;
+};
+
+#ifdef __cplusplus
+}  // namespace penumbra::gpu
+#endif
+
+#endif

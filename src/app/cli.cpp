@@ -1,0 +1,73 @@
+#include "app/cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <memory>
+
+#include "app/options.hpp"
+#include "app/render_command.hpp"
+#include "core/error.hpp"
+
+namespace penumbra {
+
+namespace {
+
+void print_error(const std::string& message) {
+  // One line: later lines of a multi-line message (a shader log) are kept
+  // but indented under it.
+  std::string text = message;
+  for (std::size_t pos = 0; (pos = text.find('\n', pos)) != std::string::npos; pos += 3) {
+    if (pos + 1 == text.size()) {
+      text.erase(pos);
+      break;
+    }
+    text.replace(pos, 1, "\n  ");
+  }
+  std::fprintf(stderr, "penumbra: error: %s\n", text.c_str());
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"penumbra: real-time shadow techniques, rendered headless and measured"};
+  app.name("penumbra");
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "penumbra 0.1.0");
+
+  RenderArgs render_args;
+  CLI::App* render = app.add_subcommand("render", "render one image of a scene (PNG or EXR)");
+  add_render_command_options(*render, render_args);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
+      what = "a command is required: render (see 'penumbra --help')";
+    }
+    print_error(what);
+    return 2;
+  }
+
+  try {
+    if (render->parsed()) return run_render_command(render_args);
+  } catch (const UsageError& e) {
+    print_error(e.what());
+    return 2;
+  } catch (const RuntimeError& e) {
+    print_error(e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    print_error(std::string("internal error: ") + e.what());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,25 @@
+#pragma once
+// Registers the shared settings structs with CLI11, from the parameter
+// tables in core/settings.hpp: one name, one help text, one range and one
+// default (the struct's) per parameter.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "core/settings.hpp"
+
+namespace penumbra {
+
+// Options whose values are names are read as strings, then parsed by
+// parse_named_options(), so errors list the valid names.
+struct NamedOptions {
+  std::string technique;
+  std::string view;
+};
+
+void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& named);
+void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named);
+
+// Throws UsageError for an unknown name.
+void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render);
+
+}  // namespace penumbra

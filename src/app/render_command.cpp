@@ -1,0 +1,50 @@
+#include "app/render_command.hpp"
+
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "gl/context.hpp"
+#include "io/image.hpp"
+#include "render/renderer.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/scene_file.hpp"
+
+namespace penumbra {
+
+void add_render_command_options(CLI::App& command, RenderArgs& args) {
+  command.add_option("--scene", args.scene,
+                     "built-in scene (default, spot) or a .json scene file")
+      ->capture_default_str();
+  command.add_option("-o,--output", args.output, "output image: .png, or .exr for raw 32-bit floats")
+      ->required();
+  command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
+  add_render_options(command, args.render, args.named);
+  add_shadow_options(command, args.shadow, args.named);
+}
+
+int run_render_command(RenderArgs& args) {
+  parse_named_options(args.named, args.shadow, args.render);
+  validate(args.render);
+  validate(args.shadow);
+  image_format_for(args.output);
+  check_output_path(args.output);
+  Scene scene = resolve_scene(args.scene);
+
+  auto context = gl::Context::create_headless({.debug = true, .verbose = args.verbose});
+  if (args.verbose) {
+    std::fprintf(stderr, "penumbra: %s via %s (%s)\n", context->renderer().c_str(),
+                 context->platform().c_str(), context->version().c_str());
+  }
+  Renderer renderer(scene);
+  renderer.render(args.render, args.shadow);
+  Image image = renderer.read_view();
+  if (context->error_count() > 0) {
+    throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
+                       " error(s); last: " + context->last_error());
+  }
+  write_image(image, args.output,
+              args.render.view == View::Final ? PngEncoding::Srgb : PngEncoding::Linear);
+  return 0;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,25 @@
+#pragma once
+// `penumbra render`: one image of a scene.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "app/options.hpp"
+#include "core/settings.hpp"
+
+namespace penumbra {
+
+struct RenderArgs {
+  std::string scene = "default";
+  std::string output;
+  bool verbose = false;
+  RenderSettings render;
+  ShadowSettings shadow;
+  NamedOptions named;
+};
+
+void add_render_command_options(CLI::App& command, RenderArgs& args);
+
+// Renders and writes the image; throws UsageError or RuntimeError.
+int run_render_command(RenderArgs& args);
+
+}  // namespace penumbra

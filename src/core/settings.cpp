@@ -1,0 +1,36 @@
+#include "core/settings.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace penumbra {
+
+namespace {
+
+template <class Settings, class T, std::size_t N>
+void check_ranges(const Settings& settings, const std::array<NumericParam<Settings, T>, N>& params) {
+  for (const auto& p : params) {
+    const T value = settings.*(p.field);
+    bool ok = value >= p.min && value <= p.max;
+    if constexpr (std::is_floating_point_v<T>) ok = ok && std::isfinite(value);
+    if (!ok) {
+      std::ostringstream msg;
+      msg << "--" << p.name << " must be between " << p.min << " and " << p.max << " (got "
+          << value << ")";
+      throw UsageError(msg.str());
+    }
+  }
+}
+
+}  // namespace
+
+void validate(const ShadowSettings& settings) {
+  check_ranges(settings, kShadowFloatParams);
+  check_ranges(settings, kShadowIntParams);
+}
+
+void validate(const RenderSettings& settings) { check_ranges(settings, kRenderIntParams); }
+
+}  // namespace penumbra

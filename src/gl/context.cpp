@@ -1,0 +1,179 @@
+#include "gl/context.hpp"
+
+#include <epoxy/gl.h>
+
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace penumbra::gl {
+
+namespace {
+
+bool has_extension(const char* list, const char* name) {
+  if (list == nullptr) return false;
+  const std::size_t n = std::strlen(name);
+  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n) {
+    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+  }
+  return false;
+}
+
+struct Attempt {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLContext context = EGL_NO_CONTEXT;
+  EGLSurface surface = EGL_NO_SURFACE;
+};
+
+// Initializes `display` and creates a current 4.5 core context on it.
+// Returns an empty string on success, or why it failed.
+std::string try_display(EGLDisplay display, bool debug, Attempt& out) {
+  if (display == EGL_NO_DISPLAY) return "no display";
+  EGLint major = 0, minor = 0;
+  if (!eglInitialize(display, &major, &minor)) return "eglInitialize failed";
+  auto fail = [&](const std::string& why) {
+    eglTerminate(display);
+    return why;
+  };
+  if (!eglBindAPI(EGL_OPENGL_API)) return fail("desktop OpenGL API not available");
+  const char* extensions = eglQueryString(display, EGL_EXTENSIONS);
+
+  EGLConfig config = EGL_NO_CONFIG_KHR;
+  const bool no_config = has_extension(extensions, "EGL_KHR_no_config_context");
+  const bool surfaceless = has_extension(extensions, "EGL_KHR_surfaceless_context");
+  if (!no_config || !surfaceless) {
+    const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
+                                     EGL_OPENGL_BIT, EGL_NONE};
+    EGLint count = 0;
+    if (!eglChooseConfig(display, config_attribs, &config, 1, &count) || count < 1) {
+      return fail("no EGL config for desktop OpenGL");
+    }
+  }
+  const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                    4,
+                                    EGL_CONTEXT_MINOR_VERSION,
+                                    5,
+                                    EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                    EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                    EGL_CONTEXT_OPENGL_DEBUG,
+                                    debug ? EGL_TRUE : EGL_FALSE,
+                                    EGL_NONE};
+  EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
+  if (context == EGL_NO_CONTEXT) return fail("no OpenGL 4.5 core context");
+  EGLSurface surface = EGL_NO_SURFACE;
+  if (!surfaceless) {
+    const EGLint pbuffer_attribs[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
+    surface = eglCreatePbufferSurface(display, config, pbuffer_attribs);
+  }
+  if (!eglMakeCurrent(display, surface, surface, context)) {
+    eglDestroyContext(display, context);
+    return fail("eglMakeCurrent failed");
+  }
+  out = {display, context, surface};
+  return {};
+}
+
+}  // namespace
+
+std::unique_ptr<Context> Context::create_headless(const ContextOptions& options) {
+  std::unique_ptr<Context> ctx(new Context());
+  ctx->verbose_ = options.verbose;
+  const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  std::string tried;
+  Attempt attempt;
+  bool ok = false;
+
+  if (has_extension(client_extensions, "EGL_EXT_platform_device") &&
+      has_extension(client_extensions, "EGL_EXT_device_enumeration")) {
+    EGLDeviceEXT devices[16];
+    EGLint count = 0;
+    if (eglQueryDevicesEXT(16, devices, &count)) {
+      for (EGLint i = 0; i < count && !ok; ++i) {
+        EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        std::string why = try_display(display, options.debug, attempt);
+        ok = why.empty();
+        if (!ok) tried += "EGL device " + std::to_string(i) + ": " + why + "; ";
+      }
+      if (count == 0) tried += "EGL device platform: no devices; ";
+    }
+    if (ok) ctx->platform_ = "EGL device";
+  } else {
+    tried += "EGL device platform: not supported; ";
+  }
+  if (!ok && has_extension(client_extensions, "EGL_MESA_platform_surfaceless")) {
+    EGLDisplay display =
+        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    std::string why = try_display(display, options.debug, attempt);
+    ok = why.empty();
+    if (ok) ctx->platform_ = "Mesa surfaceless";
+    if (!ok) tried += "Mesa surfaceless platform: " + why + "; ";
+  } else if (!ok) {
+    tried += "Mesa surfaceless platform: not supported; ";
+  }
+  if (!ok) {
+    tried.resize(tried.size() - 2);
+    throw RuntimeError(
+        "cannot create a headless OpenGL 4.5 core context (" + tried +
+        "); install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU driver with EGL");
+  }
+  ctx->display_ = attempt.display;
+  ctx->context_ = attempt.context;
+  ctx->surface_ = attempt.surface;
+  if (epoxy_gl_version() < 45) {
+    throw RuntimeError("the OpenGL context is version " + ctx->version() + ", 4.5 is required");
+  }
+  ctx->install_debug_output(options);
+  return ctx;
+}
+
+Context::~Context() {
+  if (display_ != EGL_NO_DISPLAY) {
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
+    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+    // The display is shared by every context on it in this process; EGL
+    // reference-counts nothing, so terminating here would break the others.
+  }
+}
+
+void Context::install_debug_output(const ContextOptions& options) {
+  if (!options.debug) return;
+  glEnable(GL_DEBUG_OUTPUT);
+  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+  glDebugMessageCallback(&Context::on_debug_message, this);
+  glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+}
+
+void GLAPIENTRY Context::on_debug_message(GLenum /*source*/, GLenum type, GLuint id,
+                                          GLenum severity, GLsizei /*length*/,
+                                          const GLchar* message, const void* user) {
+  auto* self = static_cast<Context*>(const_cast<void*>(user));
+  if (type == GL_DEBUG_TYPE_ERROR) {
+    ++self->error_count_;
+    self->last_error_ = message;
+    std::fprintf(stderr, "penumbra: GL error %u: %s\n", id, message);
+    return;
+  }
+  if (self->verbose_ && severity != GL_DEBUG_SEVERITY_NOTIFICATION) {
+    std::fprintf(stderr, "penumbra: GL: %s\n", message);
+  }
+}
+
+std::string Context::renderer() const {
+  return reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+}
+std::string Context::vendor() const {
+  return reinterpret_cast<const char*>(glGetString(GL_VENDOR));
+}
+std::string Context::version() const {
+  return reinterpret_cast<const char*>(glGetString(GL_VERSION));
+}
+int Context::max_texture_size() const {
+  GLint size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+  return size;
+}
+
+}  // namespace penumbra::gl

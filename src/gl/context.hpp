@@ -1,0 +1,57 @@
+#pragma once
+// A headless OpenGL 4.5 core context through EGL: the device platform first
+// (NVIDIA and other GPUs without a display), then Mesa's surfaceless platform
+// (llvmpipe on a machine without a GPU).
+#include <epoxy/egl.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace penumbra::gl {
+
+struct ContextOptions {
+  // Routes KHR_debug messages to the log; errors are always counted.
+  bool debug = true;
+  // Print debug messages of medium and high severity to stderr.
+  bool verbose = false;
+};
+
+class Context {
+ public:
+  // Creates the context and makes it current on this thread. Throws
+  // RuntimeError naming what is missing if no 4.5 core context can be had.
+  static std::unique_ptr<Context> create_headless(const ContextOptions& options = {});
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  [[nodiscard]] std::string renderer() const;
+  [[nodiscard]] std::string vendor() const;
+  [[nodiscard]] std::string version() const;
+  // "EGL device" or "Mesa surfaceless": how the context was obtained.
+  [[nodiscard]] const std::string& platform() const { return platform_; }
+  [[nodiscard]] int max_texture_size() const;
+
+  // Number of GL_DEBUG_TYPE_ERROR messages seen since creation; tests fail
+  // when it grows.
+  [[nodiscard]] int error_count() const { return error_count_; }
+  [[nodiscard]] const std::string& last_error() const { return last_error_; }
+
+ private:
+  Context() = default;
+  void install_debug_output(const ContextOptions& options);
+  static void GLAPIENTRY on_debug_message(GLenum source, GLenum type, GLuint id, GLenum severity,
+                                          GLsizei length, const GLchar* message,
+                                          const void* user);
+
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+  EGLSurface surface_ = EGL_NO_SURFACE;
+  std::string platform_;
+  bool verbose_ = false;
+  int error_count_ = 0;
+  std::string last_error_;
+};
+
+}  // namespace penumbra::gl

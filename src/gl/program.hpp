@@ -1,0 +1,31 @@
+#pragma once
+// A linked GLSL program built from embedded shader files.
+#include <string>
+
+#include "gl/handle.hpp"
+#include "gl/shader_source.hpp"
+
+namespace penumbra::gl {
+
+namespace detail {
+inline void delete_program(GLuint id) { glDeleteProgram(id); }
+}  // namespace detail
+
+class Program {
+ public:
+  Program() = default;
+  // Compiles and links; throws RuntimeError with "file:line: message" lines
+  // if a stage fails to compile or the program fails to link.
+  static Program graphics(const std::string& vertex, const std::string& fragment,
+                          const Defines& defines = {});
+  static Program compute(const std::string& compute, const Defines& defines = {});
+
+  void use() const { glUseProgram(handle_.id()); }
+  [[nodiscard]] GLuint id() const { return handle_.id(); }
+  [[nodiscard]] explicit operator bool() const { return static_cast<bool>(handle_); }
+
+ private:
+  Handle<detail::delete_program> handle_;
+};
+
+}  // namespace penumbra::gl

@@ -1,0 +1,158 @@
+#include "io/image.hpp"
+
+#include <tinyexr.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/error.hpp"
+
+#include <stb_image_write.h>
+#include <stb_image.h>
+
+namespace penumbra {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+float srgb_encode(float linear) {
+  linear = std::clamp(linear, 0.0f, 1.0f);
+  return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+// A temporary name beside the target, unique to this process.
+std::string temporary_name(const std::string& path) {
+  fs::path p(path);
+  std::string name = ".";
+  name.append(p.filename().string()).append(".tmp").append(std::to_string(getpid()));
+  return (p.parent_path() / name).string();
+}
+
+void commit(const std::string& temporary, const std::string& path) {
+  std::error_code ec;
+  fs::rename(temporary, path, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    throw RuntimeError("cannot write '" + path + "': " + ec.message());
+  }
+}
+
+}  // namespace
+
+ImageFormat image_format_for(const std::string& path) {
+  std::string ext = lower_extension(path);
+  if (ext == ".png") return ImageFormat::Png;
+  if (ext == ".exr") return ImageFormat::Exr;
+  throw UsageError("output '" + path + "' must end in .png or .exr");
+}
+
+void check_output_path(const std::string& path) {
+  fs::path parent = fs::path(path).parent_path();
+  if (parent.empty()) parent = ".";
+  std::error_code ec;
+  if (!fs::is_directory(parent, ec)) {
+    throw UsageError("output folder '" + parent.string() + "' does not exist");
+  }
+  if (access(parent.c_str(), W_OK) != 0) {
+    throw UsageError("output folder '" + parent.string() + "' is not writable");
+  }
+  if (fs::is_directory(path, ec)) throw UsageError("output '" + path + "' is a folder");
+}
+
+void write_png(const Image& image, const std::string& path, PngEncoding encoding) {
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * image.height * 3);
+  for (std::size_t i = 0, n = static_cast<std::size_t>(image.width) * image.height; i < n; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      float v = image.rgba[i * 4 + static_cast<std::size_t>(c)];
+      if (!std::isfinite(v)) v = 0.0f;
+      v = encoding == PngEncoding::Srgb ? srgb_encode(v) : std::clamp(v, 0.0f, 1.0f);
+      bytes[i * 3 + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
+    }
+  }
+  const std::string temporary = temporary_name(path);
+  if (!stbi_write_png(temporary.c_str(), image.width, image.height, 3, bytes.data(),
+                      image.width * 3)) {
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    throw RuntimeError("cannot write '" + path + "'");
+  }
+  commit(temporary, path);
+}
+
+void write_exr(const Image& image, const std::string& path) {
+  // tinyexr wants planar channels in A, B, G, R order.
+  const std::size_t n = static_cast<std::size_t>(image.width) * image.height;
+  std::vector<float> planes[4];
+  for (auto& p : planes) p.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 4; ++c) planes[c][i] = image.rgba[i * 4 + static_cast<std::size_t>(c)];
+  }
+  EXRHeader header;
+  InitEXRHeader(&header);
+  EXRImage exr;
+  InitEXRImage(&exr);
+  float* channel_ptrs[4] = {planes[3].data(), planes[2].data(), planes[1].data(), planes[0].data()};
+  exr.images = reinterpret_cast<unsigned char**>(channel_ptrs);
+  exr.num_channels = 4;
+  exr.width = image.width;
+  exr.height = image.height;
+  EXRChannelInfo channels[4] = {};
+  const char* names[4] = {"A", "B", "G", "R"};
+  int pixel_types[4], requested[4];
+  for (int c = 0; c < 4; ++c) {
+    std::snprintf(channels[c].name, sizeof channels[c].name, "%s", names[c]);
+    pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+    requested[c] = TINYEXR_PIXELTYPE_FLOAT;
+  }
+  header.num_channels = 4;
+  header.channels = channels;
+  header.pixel_types = pixel_types;
+  header.requested_pixel_types = requested;
+  header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+
+  const std::string temporary = temporary_name(path);
+  const char* err = nullptr;
+  int result = SaveEXRImageToFile(&exr, &header, temporary.c_str(), &err);
+  if (result != TINYEXR_SUCCESS) {
+    std::string why = err ? err : "unknown error";
+    if (err) FreeEXRErrorMessage(err);
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    throw RuntimeError("cannot write '" + path + "': " + why);
+  }
+  commit(temporary, path);
+}
+
+void write_image(const Image& image, const std::string& path, PngEncoding png_encoding) {
+  if (image_format_for(path) == ImageFormat::Exr) {
+    write_exr(image, path);
+  } else {
+    write_png(image, path, png_encoding);
+  }
+}
+
+Image read_png(const std::string& path) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+  if (data == nullptr) throw RuntimeError("cannot read PNG '" + path + "'");
+  Image image(w, h);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(w) * h * 4; ++i) {
+    image.rgba[i] = static_cast<float>(data[i]) / 255.0f;
+  }
+  stbi_image_free(data);
+  return image;
+}
+
+}  // namespace penumbra

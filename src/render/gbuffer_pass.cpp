@@ -1,0 +1,46 @@
+#include "render/gbuffer_pass.hpp"
+
+namespace penumbra {
+
+GBufferPass::GBufferPass()
+    : program_(gl::Program::graphics("scene/gbuffer.vert", "scene/gbuffer.frag")) {}
+
+void GBufferPass::execute(const GpuScene& scene, int width, int height) {
+  if (width != width_ || height != height_) {
+    auto make = [&](GLenum format, const char* label) {
+      return gl::Texture(
+          gl::TextureInfo{.format = format, .width = width, .height = height, .label = label});
+    };
+    depth_ = make(GL_DEPTH_COMPONENT32F, "gbuffer depth");
+    normal_ = make(GL_RGBA16F, "gbuffer normal");
+    albedo_ = make(GL_SRGB8_ALPHA8, "gbuffer albedo");
+    specular_ = make(GL_RGBA8, "gbuffer specular");
+    framebuffer_ = gl::Framebuffer("gbuffer");
+    framebuffer_.attach_depth(depth_);
+    framebuffer_.attach_color(0, normal_);
+    framebuffer_.attach_color(1, albedo_);
+    framebuffer_.attach_color(2, specular_);
+    framebuffer_.set_draw_buffers(3);
+    framebuffer_.check_complete();
+    width_ = width;
+    height_ = height;
+  }
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "gbuffer");
+  const GLuint fb = framebuffer_.id();
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glViewport(0, 0, width, height);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  const float far_depth = 1.0f;
+  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, zero);
+  glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  program_.use();
+  scene.draw();
+  glPopDebugGroup();
+}
+
+}  // namespace penumbra

@@ -1,0 +1,73 @@
+#include "render/lighting_pass.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "shared/bindings.h"
+
+namespace penumbra {
+
+int technique_define(Technique technique) {
+  switch (technique) {
+    case Technique::None: return TECHNIQUE_NONE;
+    case Technique::Hard: return TECHNIQUE_HARD;
+  }
+  return TECHNIQUE_NONE;
+}
+
+LightingPass::LightingPass()
+    : empty_vao_("fullscreen"),
+      nearest_(gl::SamplerInfo{.min_filter = GL_NEAREST, .mag_filter = GL_NEAREST,
+                               .label = "nearest clamp"}) {}
+
+const gl::Program& LightingPass::program_for(Technique technique) {
+  auto it = programs_.find(technique);
+  if (it == programs_.end()) {
+    gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(technique_define(technique))}};
+    it = programs_
+             .emplace(technique, gl::Program::graphics("common/fullscreen.vert",
+                                                       "render/lighting.frag", defines))
+             .first;
+  }
+  return it->second;
+}
+
+void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shadows,
+                           int light_count, Technique technique, int width, int height) {
+  if (width != width_ || height != height_) {
+    output_ = gl::Texture(gl::TextureInfo{
+        .format = GL_RGBA32F, .width = width, .height = height, .label = "lighting output"});
+    framebuffer_ = gl::Framebuffer("lighting");
+    framebuffer_.attach_color(0, output_);
+    framebuffer_.set_draw_buffers(1);
+    framebuffer_.check_complete();
+    width_ = width;
+    height_ = height;
+  }
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "lighting");
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  program_for(technique).use();
+  glBindTextureUnit(UNIT_GBUFFER_DEPTH, gbuffer.depth().id());
+  glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
+  glBindTextureUnit(UNIT_GBUFFER_ALBEDO, gbuffer.albedo().id());
+  glBindTextureUnit(UNIT_GBUFFER_SPECULAR, gbuffer.specular().id());
+  for (int unit = UNIT_GBUFFER_DEPTH; unit <= UNIT_GBUFFER_SPECULAR; ++unit) {
+    glBindSampler(static_cast<GLuint>(unit), nearest_.id());
+  }
+  // Lights beyond the maps rendered (none for Technique::None) are never
+  // read; their units get map 0 or nothing.
+  const int maps = std::min(shadows.map_count(), light_count);
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    const GLuint unit = static_cast<GLuint>(UNIT_SHADOW_DEPTH + i);
+    glBindTextureUnit(unit, maps > 0 ? shadows.depth_map(i < maps ? i : 0).id() : 0);
+    glBindSampler(unit, nearest_.id());
+  }
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glPopDebugGroup();
+}
+
+}  // namespace penumbra

@@ -1,0 +1,178 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <glm/gtc/matrix_transform.hpp>
+#include <string>
+
+#include "core/error.hpp"
+#include "shared/bindings.h"
+#include "shared/gpu_types.h"
+
+namespace penumbra {
+
+static_assert(sizeof(gpu::GpuLight) == 2 * 64 + 4 * 16, "GpuLight must match std140");
+static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
+static_assert(sizeof(gpu::GpuShadow) == 16, "GpuShadow must match std140");
+
+namespace {
+
+gpu::GpuLight to_gpu(const Light& light, const LightView& view, int map_size) {
+  gpu::GpuLight g{};
+  g.view = view.view;
+  g.view_projection = view.view_projection;
+  const bool spot = light.type == LightType::Spot;
+  g.position_type = glm::vec4(light.position, spot ? LIGHT_SPOT : LIGHT_DIRECTIONAL);
+  g.direction_cos_outer =
+      glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.cone_degrees)));
+  const float inner = std::min(light.inner_cone_degrees, light.cone_degrees - 0.01f);
+  g.radiance_cos_inner = glm::vec4(light.color * light.intensity, std::cos(glm::radians(inner)));
+  g.depth_range = glm::vec4(view.z0, view.z1, view.texel_world, static_cast<float>(map_size));
+  return g;
+}
+
+Image read_texture(GLuint texture, int width, int height, GLenum format) {
+  Image image(width, height);
+  std::vector<float> raw(static_cast<std::size_t>(width) * height * 4);
+  const GLenum component = format == GL_DEPTH_COMPONENT ? GL_DEPTH_COMPONENT : GL_RGBA;
+  const std::size_t channels = component == GL_DEPTH_COMPONENT ? 1 : 4;
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(texture, 0, component, GL_FLOAT,
+                    static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
+  // GL rows run bottom to top; images run top to bottom.
+  for (int y = 0; y < height; ++y) {
+    const float* src = raw.data() + static_cast<std::size_t>(height - 1 - y) * width * channels;
+    for (int x = 0; x < width; ++x) {
+      float* dst = image.pixel(x, y);
+      if (channels == 1) {
+        dst[0] = dst[1] = dst[2] = src[x];
+        dst[3] = 1.0f;
+      } else {
+        for (int c = 0; c < 4; ++c) dst[c] = src[static_cast<std::size_t>(x) * 4 + c];
+      }
+    }
+  }
+  return image;
+}
+
+int view_define(View view) {
+  switch (view) {
+    case View::Shadow: return VIEW_SHADOW;
+    case View::Normals: return VIEW_NORMALS;
+    case View::Albedo: return VIEW_ALBEDO;
+    default: return VIEW_FINAL;
+  }
+}
+
+}  // namespace
+
+Renderer::Renderer(const Scene& scene)
+    : scene_(scene),
+      mesh_(build_scene_mesh(scene)),
+      bounds_(mesh_.bounds()),
+      gpu_scene_(scene_, mesh_),
+      frame_ubo_(sizeof(gpu::GpuFrame), nullptr, true, "frame block"),
+      lights_ubo_(sizeof(gpu::GpuLight) * MAX_LIGHTS, nullptr, true, "lights block"),
+      shadow_ubo_(sizeof(gpu::GpuShadow), nullptr, true, "shadow block") {
+  if (scene_.lights.size() > MAX_LIGHTS) {
+    throw UsageError("scene '" + scene_.name + "' has " + std::to_string(scene_.lights.size()) +
+                     " lights; at most " + std::to_string(MAX_LIGHTS) + " are supported");
+  }
+}
+
+glm::mat4 Renderer::camera_view() const {
+  return glm::lookAt(scene_.camera.position, scene_.camera.target, scene_.camera.up);
+}
+
+glm::mat4 Renderer::camera_projection(int width, int height) const {
+  // Near and far planes hug the scene so depth precision is not wasted.
+  const glm::mat4 view = camera_view();
+  float zmin = 1e30f, zmax = 0.0f;
+  for (int i = 0; i < 8; ++i) {
+    glm::vec3 corner{(i & 1) ? bounds_.max.x : bounds_.min.x, (i & 2) ? bounds_.max.y : bounds_.min.y,
+                     (i & 4) ? bounds_.max.z : bounds_.min.z};
+    float z = -(view * glm::vec4(corner, 1.0f)).z;
+    zmin = std::min(zmin, z);
+    zmax = std::max(zmax, z);
+  }
+  const float far_plane = std::max(zmax * 1.01f, 1e-2f);
+  const float near_plane = std::max(zmin * 0.99f, far_plane * 1e-4f);
+  return glm::perspective(glm::radians(scene_.camera.fov_y_degrees),
+                          static_cast<float>(width) / static_cast<float>(height), near_plane,
+                          far_plane);
+}
+
+void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow) {
+  validate(render);
+  validate(shadow);
+  GLint max_texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  if (shadow.map_size > max_texture) {
+    throw UsageError("--shadow-map-size " + std::to_string(shadow.map_size) +
+                     " exceeds this GPU's limit of " + std::to_string(max_texture));
+  }
+  if (render.width > max_texture || render.height > max_texture) {
+    throw UsageError("image size " + std::to_string(render.width) + "x" +
+                     std::to_string(render.height) + " exceeds this GPU's limit of " +
+                     std::to_string(max_texture));
+  }
+  const int light_count = static_cast<int>(scene_.lights.size());
+  if (render.light_index >= light_count &&
+      (render.view == View::Shadow || render.view == View::ShadowMap)) {
+    throw UsageError("--light-index " + std::to_string(render.light_index) + ": scene '" +
+                     scene_.name + "' has " + std::to_string(light_count) + " light(s)");
+  }
+  last_render_ = render;
+
+  // Per-frame blocks.
+  gpu::GpuLight lights[MAX_LIGHTS] = {};
+  light_views_.clear();
+  for (int i = 0; i < light_count; ++i) {
+    const Light& light = scene_.lights[static_cast<std::size_t>(i)];
+    light_views_.push_back(fit_light_view(light, mesh_, shadow.map_size));
+    lights[i] = to_gpu(light, light_views_.back(), shadow.map_size);
+  }
+  lights_ubo_.update(lights, sizeof lights);
+
+  gpu::GpuFrame frame{};
+  frame.view = camera_view();
+  frame.projection = camera_projection(render.width, render.height);
+  frame.inverse_view_projection = glm::inverse(frame.projection * frame.view);
+  frame.camera_position = glm::vec4(scene_.camera.position, 1.0f);
+  frame.viewport = glm::vec4(render.width, render.height, 1.0f / static_cast<float>(render.width),
+                             1.0f / static_cast<float>(render.height));
+  frame.options = glm::ivec4(light_count, view_define(render.view), render.light_index, 0);
+  frame.ambient = glm::vec4(0.06f, 0.065f, 0.08f, 0.0f);
+  frame_ubo_.update(&frame, sizeof frame);
+
+  gpu::GpuShadow shadow_block{};
+  shadow_block.bias =
+      glm::vec4(shadow.constant_bias, shadow.slope_bias, shadow.normal_offset, shadow.max_slope);
+  shadow_ubo_.update(&shadow_block, sizeof shadow_block);
+
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_LIGHTS_UBO, lights_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_UBO, shadow_ubo_.id());
+
+  if (shadow.technique != Technique::None || render.view == View::ShadowMap) {
+    shadow_pass_.execute(gpu_scene_, light_count, shadow.map_size);
+  }
+  if (render.view != View::ShadowMap) {
+    gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
+    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, light_count, shadow.technique,
+                           render.width, render.height);
+  }
+}
+
+Image Renderer::read_view() const {
+  if (last_render_.view == View::ShadowMap) return read_shadow_map(last_render_.light_index);
+  const gl::Texture& out = lighting_pass_.output();
+  return read_texture(out.id(), out.width(), out.height(), GL_RGBA);
+}
+
+Image Renderer::read_shadow_map(int light) const {
+  const gl::Texture& map = shadow_pass_.depth_map(light);
+  return read_texture(map.id(), map.width(), map.height(), GL_DEPTH_COMPONENT);
+}
+
+}  // namespace penumbra

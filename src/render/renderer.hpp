@@ -1,0 +1,55 @@
+#pragma once
+// One frame: shadow maps, G-buffer, lighting. Wires the passes together and
+// owns the per-frame uniform blocks; the algorithms live in the passes and
+// the shaders.
+#include <memory>
+#include <vector>
+
+#include "core/settings.hpp"
+#include "gl/resources.hpp"
+#include "io/image.hpp"
+#include "render/gbuffer_pass.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/lighting_pass.hpp"
+#include "scene/mesh.hpp"
+#include "scene/scene.hpp"
+#include "shadow/light_view.hpp"
+#include "shadow/shadow_map_pass.hpp"
+
+namespace penumbra {
+
+class Renderer {
+ public:
+  // Uploads the scene. Needs a current OpenGL 4.5 context.
+  explicit Renderer(const Scene& scene);
+
+  // Renders one frame. Throws UsageError for settings the GPU cannot honour
+  // (a shadow map larger than its texture limit, a light index out of range).
+  void render(const RenderSettings& render, const ShadowSettings& shadow);
+
+  // The view chosen in the last render(): the lighting pass's output for
+  // camera views, the light's z-bar map for View::ShadowMap.
+  [[nodiscard]] Image read_view() const;
+  // Light i's shadow map (z-bar in every channel), as last rendered.
+  [[nodiscard]] Image read_shadow_map(int light) const;
+
+  [[nodiscard]] const Scene& scene() const { return scene_; }
+  [[nodiscard]] const TriangleMesh& mesh() const { return mesh_; }
+  [[nodiscard]] const LightView& light_view(int light) const { return light_views_.at(light); }
+  [[nodiscard]] glm::mat4 camera_view() const;
+  [[nodiscard]] glm::mat4 camera_projection(int width, int height) const;
+
+ private:
+  Scene scene_;
+  TriangleMesh mesh_;
+  Bounds bounds_;
+  GpuScene gpu_scene_;
+  ShadowMapPass shadow_pass_;
+  GBufferPass gbuffer_pass_;
+  LightingPass lighting_pass_;
+  gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_;
+  std::vector<LightView> light_views_;
+  RenderSettings last_render_;
+};
+
+}  // namespace penumbra

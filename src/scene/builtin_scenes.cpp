@@ -1,0 +1,138 @@
+#include "scene/builtin_scenes.hpp"
+
+#include <glm/gtc/constants.hpp>
+
+namespace penumbra {
+
+namespace {
+
+std::vector<Material> standard_materials() {
+  return {
+      {"ground", {0.70f, 0.70f, 0.68f}, {0.02f, 0.02f, 0.02f}, 8.0f},
+      {"red", {0.70f, 0.12f, 0.10f}, {0.25f, 0.25f, 0.25f}, 48.0f},
+      {"blue", {0.12f, 0.25f, 0.70f}, {0.30f, 0.30f, 0.30f}, 96.0f},
+      {"gold", {0.75f, 0.55f, 0.15f}, {0.40f, 0.35f, 0.20f}, 64.0f},
+      {"white", {0.80f, 0.80f, 0.80f}, {0.10f, 0.10f, 0.10f}, 24.0f},
+      {"green", {0.15f, 0.55f, 0.20f}, {0.20f, 0.20f, 0.20f}, 32.0f},
+  };
+}
+
+Shape make(ShapeKind kind, glm::vec3 position, int material) {
+  Shape s;
+  s.kind = kind;
+  s.position = position;
+  s.material = material;
+  return s;
+}
+
+// A ground plane with casters at several heights, so that contact shadows
+// and penumbrae of different widths appear side by side.
+Scene default_scene() {
+  Scene scene;
+  scene.name = "default";
+  scene.materials = standard_materials();
+
+  Shape ground = make(ShapeKind::Plane, {0, 0, 0}, 0);
+  ground.size = {24.0f, 0.0f, 24.0f};
+  scene.shapes.push_back(ground);
+
+  Shape box = make(ShapeKind::Box, {-2.6f, 0.75f, 0.6f}, 1);  // on the ground: contact shadow
+  box.size = {1.5f, 1.5f, 1.5f};
+  box.rotation_degrees = {0.0f, 25.0f, 0.0f};
+  scene.shapes.push_back(box);
+
+  Shape sphere = make(ShapeKind::Sphere, {0.2f, 1.6f, 1.4f}, 2);  // floating low
+  sphere.radius = 0.7f;
+  scene.shapes.push_back(sphere);
+
+  Shape torus = make(ShapeKind::Torus, {2.6f, 1.1f, 0.2f}, 3);  // tilted, middle height
+  torus.radius = 0.75f;
+  torus.tube = 0.22f;
+  torus.rotation_degrees = {60.0f, 20.0f, 0.0f};
+  scene.shapes.push_back(torus);
+
+  Shape pole = make(ShapeKind::Cylinder, {-0.6f, 1.5f, -1.6f}, 4);  // thin, standing
+  pole.radius = 0.06f;
+  pole.height = 3.0f;
+  scene.shapes.push_back(pole);
+
+  Shape slab = make(ShapeKind::Box, {1.2f, 3.6f, -1.8f}, 5);  // flat, high: wide penumbra
+  slab.size = {1.8f, 0.12f, 1.2f};
+  slab.rotation_degrees = {0.0f, -15.0f, 0.0f};
+  scene.shapes.push_back(slab);
+
+  scene.camera.position = {0.0f, 6.5f, 10.5f};
+  scene.camera.target = {0.0f, 0.9f, 0.0f};
+  scene.camera.fov_y_degrees = 45.0f;
+
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.position = {3.5f, 9.0f, 4.5f};
+  spot.direction = glm::normalize(glm::vec3(0.0f, 0.6f, 0.0f) - spot.position);
+  spot.color = {1.0f, 0.95f, 0.85f};
+  spot.intensity = 90.0f;
+  spot.cone_degrees = 38.0f;
+  spot.inner_cone_degrees = 30.0f;
+  scene.lights.push_back(spot);
+
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(0.7f, -1.0f, -0.25f));
+  sun.color = {0.75f, 0.82f, 1.0f};
+  sun.intensity = 0.35f;
+  scene.lights.push_back(sun);
+  return scene;
+}
+
+// One spot light shining down at a few objects on a floor, the set-up of
+// the seed assignment's "Spot Light" scene.
+Scene spot_scene() {
+  Scene scene;
+  scene.name = "spot";
+  scene.materials = standard_materials();
+
+  Shape floor = make(ShapeKind::Plane, {0, 0, 0}, 0);
+  floor.size = {16.0f, 0.0f, 16.0f};
+  scene.shapes.push_back(floor);
+
+  Shape sphere = make(ShapeKind::Sphere, {-1.2f, 1.0f, 0.0f}, 2);
+  sphere.radius = 1.0f;
+  scene.shapes.push_back(sphere);
+
+  Shape box = make(ShapeKind::Box, {1.4f, 0.6f, 0.8f}, 1);
+  box.size = {1.2f, 1.2f, 1.2f};
+  box.rotation_degrees = {0.0f, 40.0f, 0.0f};
+  scene.shapes.push_back(box);
+
+  Shape pillar = make(ShapeKind::Cylinder, {0.6f, 1.25f, -1.6f}, 4);
+  pillar.radius = 0.3f;
+  pillar.height = 2.5f;
+  scene.shapes.push_back(pillar);
+
+  scene.camera.position = {0.0f, 5.0f, 8.0f};
+  scene.camera.target = {0.0f, 0.6f, 0.0f};
+  scene.camera.fov_y_degrees = 45.0f;
+
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.position = {-1.5f, 7.0f, 3.0f};
+  spot.direction = glm::normalize(glm::vec3(0.3f, 0.0f, -0.2f) - spot.position);
+  spot.color = {1.0f, 1.0f, 1.0f};
+  spot.intensity = 60.0f;
+  spot.cone_degrees = 35.0f;
+  spot.inner_cone_degrees = 27.0f;
+  scene.lights.push_back(spot);
+  return scene;
+}
+
+}  // namespace
+
+std::vector<std::string> builtin_scene_names() { return {"default", "spot"}; }
+
+std::optional<Scene> builtin_scene(const std::string& name) {
+  if (name == "default") return default_scene();
+  if (name == "spot") return spot_scene();
+  return std::nullopt;
+}
+
+}  // namespace penumbra

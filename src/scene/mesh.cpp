@@ -1,0 +1,187 @@
+#include "scene/mesh.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <numbers>
+
+namespace penumbra {
+
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+// Builds in object space; the caller transforms.
+struct Builder {
+  TriangleMesh local;
+  std::uint32_t add(glm::vec3 p, glm::vec3 n) {
+    local.vertices.push_back({p, n, 0});
+    return static_cast<std::uint32_t>(local.vertices.size() - 1);
+  }
+  void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    local.indices.insert(local.indices.end(), {a, b, c});
+  }
+  // Quad a-b-c-d counter-clockwise seen from the side the normal points to.
+  void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    triangle(a, b, c);
+    triangle(a, c, d);
+  }
+  // A flat rectangle centred at `center` spanning u and v, facing u x v.
+  void face(glm::vec3 center, glm::vec3 u, glm::vec3 v) {
+    glm::vec3 n = glm::normalize(glm::cross(u, v));
+    std::uint32_t a = add(center - u - v, n);
+    std::uint32_t b = add(center + u - v, n);
+    std::uint32_t c = add(center + u + v, n);
+    std::uint32_t d = add(center - u + v, n);
+    quad(a, b, c, d);
+  }
+};
+
+void build_plane(Builder& b, const Shape& s) {
+  // Subdivided so that per-vertex work (and light-space depth fitting) sees
+  // the plane's interior, and large planes interpolate well.
+  const int n = 8;
+  const float hx = 0.5f * s.size.x, hz = 0.5f * s.size.z;
+  const std::uint32_t base = static_cast<std::uint32_t>(b.local.vertices.size());
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      float x = -hx + 2.0f * hx * static_cast<float>(i) / n;
+      float z = -hz + 2.0f * hz * static_cast<float>(j) / n;
+      b.add({x, 0.0f, z}, {0.0f, 1.0f, 0.0f});
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      std::uint32_t a = base + static_cast<std::uint32_t>(j * (n + 1) + i);
+      std::uint32_t c = a + static_cast<std::uint32_t>(n + 1);
+      // Counter-clockwise seen from +y: (x, z+) comes before (x+, z).
+      b.quad(a, c, c + 1, a + 1);
+    }
+  }
+}
+
+void build_box(Builder& b, const Shape& s) {
+  glm::vec3 h = 0.5f * s.size;
+  b.face({h.x, 0, 0}, {0, 0, -h.z}, {0, h.y, 0});
+  b.face({-h.x, 0, 0}, {0, 0, h.z}, {0, h.y, 0});
+  b.face({0, h.y, 0}, {h.x, 0, 0}, {0, 0, -h.z});
+  b.face({0, -h.y, 0}, {h.x, 0, 0}, {0, 0, h.z});
+  b.face({0, 0, h.z}, {h.x, 0, 0}, {0, h.y, 0});
+  b.face({0, 0, -h.z}, {-h.x, 0, 0}, {0, h.y, 0});
+}
+
+void build_sphere(Builder& b, const Shape& s) {
+  const int slices = kCurveSegments, stacks = kCurveSegments / 2;
+  const std::uint32_t base = static_cast<std::uint32_t>(b.local.vertices.size());
+  for (int j = 0; j <= stacks; ++j) {
+    float theta = kPi * static_cast<float>(j) / stacks;
+    for (int i = 0; i <= slices; ++i) {
+      float phi = 2.0f * kPi * static_cast<float>(i) / slices;
+      glm::vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
+      b.add(s.radius * n, n);
+    }
+  }
+  for (int j = 0; j < stacks; ++j) {
+    for (int i = 0; i < slices; ++i) {
+      std::uint32_t a = base + static_cast<std::uint32_t>(j * (slices + 1) + i);
+      std::uint32_t c = a + static_cast<std::uint32_t>(slices + 1);
+      b.quad(a, c, c + 1, a + 1);
+    }
+  }
+}
+
+void build_cylinder(Builder& b, const Shape& s) {
+  const int n = kCurveSegments;
+  const float h = 0.5f * s.height;
+  const std::uint32_t side = static_cast<std::uint32_t>(b.local.vertices.size());
+  for (int i = 0; i <= n; ++i) {
+    float phi = 2.0f * kPi * static_cast<float>(i) / n;
+    glm::vec3 d{std::cos(phi), 0.0f, -std::sin(phi)};
+    b.add(s.radius * d + glm::vec3(0, -h, 0), d);
+    b.add(s.radius * d + glm::vec3(0, h, 0), d);
+  }
+  for (int i = 0; i < n; ++i) {
+    std::uint32_t a = side + static_cast<std::uint32_t>(2 * i);
+    b.quad(a, a + 2, a + 3, a + 1);
+  }
+  for (float y : {-h, h}) {
+    glm::vec3 normal{0.0f, y > 0 ? 1.0f : -1.0f, 0.0f};
+    std::uint32_t center = b.add({0.0f, y, 0.0f}, normal);
+    std::uint32_t ring = static_cast<std::uint32_t>(b.local.vertices.size());
+    for (int i = 0; i <= n; ++i) {
+      float phi = 2.0f * kPi * static_cast<float>(i) / n;
+      b.add({s.radius * std::cos(phi), y, -s.radius * std::sin(phi)}, normal);
+    }
+    for (int i = 0; i < n; ++i) {
+      std::uint32_t r = ring + static_cast<std::uint32_t>(i);
+      if (y > 0) {
+        b.triangle(center, r, r + 1);
+      } else {
+        b.triangle(center, r + 1, r);
+      }
+    }
+  }
+}
+
+void build_torus(Builder& b, const Shape& s) {
+  const int rings = kCurveSegments, sides = kCurveSegments / 2;
+  const std::uint32_t base = static_cast<std::uint32_t>(b.local.vertices.size());
+  for (int j = 0; j <= rings; ++j) {
+    float phi = 2.0f * kPi * static_cast<float>(j) / rings;
+    glm::vec3 d{std::cos(phi), 0.0f, -std::sin(phi)};
+    for (int i = 0; i <= sides; ++i) {
+      float theta = 2.0f * kPi * static_cast<float>(i) / sides;
+      glm::vec3 n = std::cos(theta) * d + glm::vec3(0.0f, std::sin(theta), 0.0f);
+      b.add(s.radius * d + s.tube * n, n);
+    }
+  }
+  for (int j = 0; j < rings; ++j) {
+    for (int i = 0; i < sides; ++i) {
+      std::uint32_t a = base + static_cast<std::uint32_t>(j * (sides + 1) + i);
+      std::uint32_t c = a + static_cast<std::uint32_t>(sides + 1);
+      b.quad(a, c, c + 1, a + 1);
+    }
+  }
+}
+
+}  // namespace
+
+glm::mat4 shape_transform(const Shape& shape) {
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), shape.position);
+  m = glm::rotate(m, glm::radians(shape.rotation_degrees.z), {0, 0, 1});
+  m = glm::rotate(m, glm::radians(shape.rotation_degrees.y), {0, 1, 0});
+  m = glm::rotate(m, glm::radians(shape.rotation_degrees.x), {1, 0, 0});
+  return m;
+}
+
+void append_shape(TriangleMesh& mesh, const Shape& shape) {
+  Builder b;
+  switch (shape.kind) {
+    case ShapeKind::Plane: build_plane(b, shape); break;
+    case ShapeKind::Box: build_box(b, shape); break;
+    case ShapeKind::Sphere: build_sphere(b, shape); break;
+    case ShapeKind::Cylinder: build_cylinder(b, shape); break;
+    case ShapeKind::Torus: build_torus(b, shape); break;
+  }
+  const glm::mat4 m = shape_transform(shape);
+  const glm::mat3 normal_matrix = glm::mat3(m);  // rotation only: no scale to undo
+  const std::uint32_t base = static_cast<std::uint32_t>(mesh.vertices.size());
+  for (const Vertex& v : b.local.vertices) {
+    mesh.vertices.push_back({glm::vec3(m * glm::vec4(v.position, 1.0f)),
+                             glm::normalize(normal_matrix * v.normal),
+                             static_cast<std::uint32_t>(shape.material)});
+  }
+  for (std::uint32_t i : b.local.indices) mesh.indices.push_back(base + i);
+}
+
+TriangleMesh build_scene_mesh(const Scene& scene) {
+  TriangleMesh mesh;
+  for (const Shape& shape : scene.shapes) append_shape(mesh, shape);
+  return mesh;
+}
+
+Bounds TriangleMesh::bounds() const {
+  Bounds b;
+  for (const Vertex& v : vertices) b.extend(v.position);
+  return b;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,72 @@
+#pragma once
+// A static scene: materials, shapes placed with transforms, a camera and
+// lights. Shapes are described by their parameters; mesh.hpp turns them
+// into world-space triangles.
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace penumbra {
+
+struct Material {
+  std::string name;
+  glm::vec3 albedo{0.8f};     // linear diffuse reflectance
+  glm::vec3 specular{0.04f};  // Blinn-Phong specular colour
+  float shininess = 32.0f;    // Blinn-Phong exponent
+};
+
+enum class ShapeKind { Plane, Box, Sphere, Cylinder, Torus };
+
+struct Shape {
+  ShapeKind kind = ShapeKind::Box;
+  // Shape parameters; each kind reads the ones it needs:
+  glm::vec3 size{1.0f};  // plane: x,z extent; box: x,y,z extent
+  float radius = 0.5f;   // sphere, cylinder; torus: ring radius
+  float height = 1.0f;   // cylinder, centred on the origin along y
+  float tube = 0.15f;    // torus: tube radius
+  // Placement: scale, then rotate (degrees about x, then y, then z), then translate.
+  glm::vec3 position{0.0f};
+  glm::vec3 rotation_degrees{0.0f};
+  int material = 0;
+};
+
+struct Camera {
+  glm::vec3 position{0.0f, 5.0f, 10.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_y_degrees = 45.0f;
+};
+
+enum class LightType { Spot, Directional };
+
+struct Light {
+  LightType type = LightType::Spot;
+  glm::vec3 position{0.0f, 10.0f, 0.0f};    // spot only
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};   // the way the light shines
+  glm::vec3 color{1.0f};                    // linear RGB
+  float intensity = 1.0f;  // spot: radiant intensity (irradiance at 1 m); directional: irradiance
+  float cone_degrees = 35.0f;        // spot: half-angle where the light ends
+  float inner_cone_degrees = 28.0f;  // spot: half-angle where the fall-off starts
+};
+
+struct Scene {
+  std::string name;
+  std::vector<Material> materials;
+  std::vector<Shape> shapes;
+  Camera camera;
+  std::vector<Light> lights;
+};
+
+// Axis-aligned bounds of world-space points.
+struct Bounds {
+  glm::vec3 min{1e30f};
+  glm::vec3 max{-1e30f};
+  void extend(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  [[nodiscard]] bool empty() const { return min.x > max.x; }
+  [[nodiscard]] glm::vec3 center() const { return 0.5f * (min + max); }
+};
+
+}  // namespace penumbra

@@ -1,0 +1,34 @@
+#pragma once
+// Scenes as JSON files. The format (every key optional unless stated):
+//
+// {
+//   "camera":    {"position": [x,y,z], "target": [x,y,z], "up": [x,y,z], "fov": degrees},
+//   "materials": {"NAME": {"albedo": [r,g,b], "specular": [r,g,b], "shininess": s}, ...},
+//   "lights":    [{"type": "spot"|"directional", "position": [..], "direction": [..] or
+//                  "target": [..], "color": [r,g,b], "intensity": i,
+//                  "cone": degrees, "inner_cone": degrees}, ...],      (at least one)
+//   "objects":   [{"shape": "plane"|"box"|"sphere"|"cylinder"|"torus", "size": [..],
+//                  "radius": r, "height": h, "tube": t, "position": [..],
+//                  "rotation": [x,y,z degrees], "material": "NAME"}, ...]  (at least one)
+// }
+//
+// Unknown keys and bad values are errors naming the file and the key's path
+// (e.g. "scene.json: /objects/2/radius: must be > 0").
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+// Parses a scene from JSON text; `origin` names the source in messages.
+// Throws RuntimeError.
+Scene parse_scene_json(const std::string& text, const std::string& origin);
+
+// Reads and parses a scene file. Throws RuntimeError.
+Scene load_scene_file(const std::string& path);
+
+// A built-in scene name or a path to a .json file. Throws UsageError for an
+// unknown name, RuntimeError for a file that cannot be read or parsed.
+Scene resolve_scene(const std::string& name_or_path);
+
+}  // namespace penumbra

@@ -1,0 +1,125 @@
+#include "shadow/light_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <vector>
+
+namespace penumbra {
+
+namespace {
+
+// An up vector that is not parallel to the light's direction.
+glm::vec3 stable_up(const glm::vec3& direction) {
+  return std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+// Light-space depth range of the parts of the triangles inside the spot
+// light's frustum side planes (|x| <= k*z, |y| <= k*z in view space, with
+// k = tan(fov / 2)). Each triangle is clipped Sutherland-Hodgman style, so
+// geometry outside the cone does not widen the range and a large triangle
+// that crosses the cone still counts where it is seen.
+bool clipped_depth_range(const glm::mat4& view, float k, std::span<const Vertex> vertices,
+                         std::span<const std::uint32_t> indices, float& zmin, float& zmax) {
+  bool any = false;
+  std::vector<glm::vec3> poly, next;
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    poly.clear();
+    for (std::size_t c = 0; c < 3; ++c) {
+      glm::vec4 p = view * glm::vec4(vertices[indices[t + c]].position, 1.0f);
+      poly.emplace_back(p.x, p.y, -p.z);  // z: depth in front of the light
+    }
+    // Plane i keeps points with distance(p) >= 0.
+    for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
+      auto distance = [&](const glm::vec3& p) {
+        switch (plane) {
+          case 0: return k * p.z - p.x;
+          case 1: return k * p.z + p.x;
+          case 2: return k * p.z - p.y;
+          default: return k * p.z + p.y;
+        }
+      };
+      next.clear();
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const glm::vec3& a = poly[i];
+        const glm::vec3& b = poly[(i + 1) % poly.size()];
+        const float da = distance(a), db = distance(b);
+        if (da >= 0.0f) next.push_back(a);
+        if ((da >= 0.0f) != (db >= 0.0f)) next.push_back(a + (b - a) * (da / (da - db)));
+      }
+      std::swap(poly, next);
+    }
+    for (const glm::vec3& p : poly) {
+      if (p.z <= 0.0f) continue;
+      zmin = std::min(zmin, p.z);
+      zmax = std::max(zmax, p.z);
+      any = true;
+    }
+  }
+  return any;
+}
+
+}  // namespace
+
+float LightView::relative_depth(const glm::vec3& world) const {
+  const float z = -(view * glm::vec4(world, 1.0f)).z;
+  return (z - z0) / (z1 - z0);
+}
+
+LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
+                         std::span<const std::uint32_t> indices, int map_size) {
+  LightView lv;
+  const glm::vec3 dir = glm::normalize(light.direction);
+  const float size = static_cast<float>(map_size);
+
+  if (light.type == LightType::Spot) {
+    lv.perspective = true;
+    lv.view = glm::lookAt(light.position, light.position + dir, stable_up(dir));
+    const float fov = 2.0f * glm::radians(std::min(light.cone_degrees, 85.0f));
+    // Depth range of the geometry the light's frustum sees: geometry behind
+    // the light or outside its cone would only waste precision.
+    float zmin = 1e30f, zmax = 0.0f;
+    if (!clipped_depth_range(lv.view, std::tan(0.5f * fov), vertices, indices, zmin, zmax)) {
+      zmin = 0.1f;  // nothing in view
+      zmax = 1.0f;
+    }
+    // Pad so that the nearest and farthest surfaces do not touch the clip
+    // planes, and keep the near plane far enough out for depth precision.
+    lv.z1 = zmax * 1.01f + 1e-3f;
+    lv.z0 = std::max(zmin * 0.99f, lv.z1 * 1e-3f);
+    lv.projection = glm::perspective(fov, 1.0f, lv.z0, lv.z1);
+    lv.texel_world = 2.0f * std::tan(0.5f * fov) / size;
+  } else {
+    lv.perspective = false;
+    lv.view = glm::lookAt(glm::vec3(0.0f), dir, stable_up(dir));
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const Vertex& v : vertices) {
+      glm::vec3 p = glm::vec3(lv.view * glm::vec4(v.position, 1.0f));
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    if (vertices.empty()) {
+      lo = glm::vec3(-1.0f);
+      hi = glm::vec3(1.0f);
+    }
+    // Square texels: the larger of the two extents sets the texel size.
+    glm::vec2 center = 0.5f * (glm::vec2(lo) + glm::vec2(hi));
+    float half = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) * 1.01f + 1e-3f;
+    float depth_pad = 0.01f * (hi.z - lo.z) + 1e-3f;
+    lv.z0 = -hi.z - depth_pad;  // view space looks down -z: depth = -z
+    lv.z1 = -lo.z + depth_pad;
+    lv.projection = glm::ortho(center.x - half, center.x + half, center.y - half, center.y + half,
+                               lv.z0, lv.z1);
+    lv.texel_world = 2.0f * half / size;
+  }
+  lv.view_projection = lv.projection * lv.view;
+  return lv;
+}
+
+}  // namespace penumbra
+
+namespace penumbra {
+LightView fit_light_view(const Light& light, const TriangleMesh& mesh, int map_size) {
+  return fit_light_view(light, mesh.vertices, mesh.indices, map_size);
+}
+}  // namespace penumbra

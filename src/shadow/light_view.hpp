@@ -1,0 +1,37 @@
+#pragma once
+// Where a light's shadow map looks: its view and projection, fitted to the
+// scene, and the depth range [z0, z1] that maps light-space depth to the
+// relative depth z-bar = (z - z0) / (z1 - z0) every technique stores.
+// Pure CPU functions, tested without a GPU.
+#include <glm/glm.hpp>
+#include <span>
+
+#include "scene/mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+struct LightView {
+  glm::mat4 view{1.0f};        // world -> light view space (looking down -z)
+  glm::mat4 projection{1.0f};  // light view -> clip space
+  glm::mat4 view_projection{1.0f};
+  bool perspective = true;
+  float z0 = 0.0f;  // nearest light-space depth of the scene
+  float z1 = 1.0f;  // farthest light-space depth of the scene
+  // World size of one shadow-map texel: at unit depth for a perspective
+  // (spot) light, everywhere for an orthographic (directional) one.
+  float texel_world = 0.0f;
+
+  // Relative depth z-bar of a world-space point.
+  [[nodiscard]] float relative_depth(const glm::vec3& world) const;
+};
+
+// Fits the light's shadow frustum to the scene's triangles: a spot light's
+// perspective frustum covers its cone and its near/far planes hug the
+// geometry inside it; a directional light's orthographic box encloses
+// every vertex.
+LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
+                         std::span<const std::uint32_t> indices, int map_size);
+LightView fit_light_view(const Light& light, const TriangleMesh& mesh, int map_size);
+
+}  // namespace penumbra

@@ -1,0 +1,164 @@
+// The real binary with bad inputs: one "penumbra: error:" line naming the
+// culprit, the documented exit status, and no output file left behind.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string err;
+  std::string out;
+};
+
+Result run(const std::string& args) {
+  const fs::path dir = fs::path(PENUMBRA_TEST_OUTPUT) / "cli";
+  fs::create_directories(dir);
+  const std::string err_file = (dir / "stderr.txt").string();
+  const std::string cmd = std::string(PENUMBRA_BINARY) + " " + args + " 2>" + err_file;
+  Result r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), pipe)) r.out += buf.data();
+  int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream in(err_file);
+  r.err.assign(std::istreambuf_iterator<char>(in), {});
+  return r;
+}
+
+std::string out_path(const std::string& name) {
+  fs::path dir = fs::path(PENUMBRA_TEST_OUTPUT) / "cli";
+  fs::create_directories(dir);
+  fs::path p = dir / name;
+  fs::remove(p);
+  return p.string();
+}
+
+void expect_error(const std::string& args, int status, const std::string& culprit,
+                  const std::string& output) {
+  Result r = run(args + " -o " + output);
+  EXPECT_EQ(r.status, status) << args << "\n" << r.err;
+  EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << args << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected:\n" << r.err;
+  EXPECT_NE(r.err.find(culprit), std::string::npos) << args << "\nmessage: " << r.err;
+  EXPECT_FALSE(fs::exists(output)) << "output left behind for: " << args;
+  // No temporary files either.
+  const fs::path folder = fs::path(output).parent_path();
+  if (!fs::is_directory(folder)) return;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
+        << entry.path() << " left behind by: " << args;
+  }
+}
+
+TEST(Cli, UsageErrorsExitWithStatus2) {
+  const std::string out = out_path("bad.png");
+  expect_error("render --scene nosuchscene", 2, "nosuchscene", out);
+  expect_error("render --technique blurry", 2, "blurry", out);
+  expect_error("render --view sideways", 2, "sideways", out);
+  expect_error("render --shadow-map-size 0", 2, "--shadow-map-size", out);
+  expect_error("render --shadow-map-size -5", 2, "--shadow-map-size", out);
+  expect_error("render --shadow-map-size 99999", 2, "--shadow-map-size", out);
+  expect_error("render --shadow-map-size 1e3", 2, "--shadow-map-size", out);
+  expect_error("render --width 0", 2, "--width", out);
+  expect_error("render --height abc", 2, "--height", out);
+  expect_error("render --constant-bias nan", 2, "--constant-bias", out);
+  expect_error("render --slope-bias -1", 2, "--slope-bias", out);
+  expect_error("render --light-size inf", 2, "--light-size", out);
+  expect_error("render --no-such-flag", 2, "--no-such-flag", out);
+  expect_error("render --view shadow --light-index 3", 2, "--light-index", out);
+}
+
+TEST(Cli, ShadowMapAboveTheGpuLimitIsRefused) {
+  // Within the option's range but above what llvmpipe (16384) and most
+  // GPUs allow.
+  const std::string out = out_path("huge.png");
+  expect_error("render --shadow-map-size 32768 --width 8 --height 8", 2, "exceeds this GPU's limit",
+               out);
+}
+
+TEST(Cli, BadOutputPaths) {
+  expect_error("render --width 8 --height 8", 2, "does not exist",
+               (fs::path(PENUMBRA_TEST_OUTPUT) / "no-such-folder" / "x.png").string());
+  expect_error("render --width 8 --height 8", 2, ".png or .exr", out_path("image.jpg"));
+  // procfs refuses new files even to root.
+  expect_error("render --width 8 --height 8", 2, "not writable", "/proc/self/x.png");
+  const fs::path locked = fs::path(PENUMBRA_TEST_OUTPUT) / "cli" / "locked";
+  fs::create_directories(locked);
+  fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
+  if (access(locked.c_str(), W_OK) != 0) {  // root may write anyway
+    expect_error("render --width 8 --height 8", 2, "not writable", (locked / "x.png").string());
+  }
+  fs::permissions(locked, fs::perms::owner_all);
+  // A folder that claims to be writable but refuses the file: the failure
+  // comes at write time (status 1) and still leaves nothing behind.
+  if (access("/sys", W_OK) == 0) {
+    expect_error("render --width 8 --height 8", 1, "cannot write '/sys/x.png'", "/sys/x.png");
+  }
+}
+
+TEST(Cli, BadSceneFiles) {
+  const fs::path dir = fs::path(PENUMBRA_TEST_OUTPUT) / "cli";
+  fs::create_directories(dir);
+  const std::string out = out_path("scene.png");
+  expect_error("render --scene " + (dir / "missing.json").string(), 1, "missing.json", out);
+  {
+    std::ofstream(dir / "truncated.json") << R"({"lights": [{"type": "spot"}], "obj)";
+  }
+  expect_error("render --scene " + (dir / "truncated.json").string(), 1, "truncated.json", out);
+  {
+    std::ofstream(dir / "badkey.json")
+        << R"({"lights": [{"type": "spot"}], "objects": [{"shape": "box", "szie": [1,1,1]}]})";
+  }
+  expect_error("render --scene " + (dir / "badkey.json").string(), 1, "/objects/0/szie", out);
+}
+
+TEST(Cli, HelpListsEveryOptionWithItsDefault) {
+  Result r = run("render --help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* option :
+       {"--scene", "--technique", "--view", "--width", "--height", "--shadow-map-size",
+        "--constant-bias", "--slope-bias", "--normal-offset", "--light-size", "--output"}) {
+    EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from --help";
+  }
+  EXPECT_NE(r.out.find("2048"), std::string::npos) << "shadow-map-size default not shown";
+}
+
+TEST(Cli, NoCommandIsAUsageError) {
+  Result r = run("");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << r.err;
+}
+
+TEST(Cli, RendersPngAndExr) {
+  const std::string png = out_path("ok.png");
+  Result r = run("render --width 64 --height 48 --shadow-map-size 256 -o " + png);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(png));
+  const std::string exr = out_path("ok.exr");
+  r = run("render --width 64 --height 48 --shadow-map-size 256 --view shadow -o " + exr);
+  EXPECT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(fs::exists(exr));
+  // 64 x 48 RGBA floats, compressed, but certainly more than a header.
+  EXPECT_GT(fs::file_size(exr), 200u);
+  std::ifstream in(exr, std::ios::binary);
+  unsigned char magic[4] = {};
+  in.read(reinterpret_cast<char*>(magic), 4);
+  EXPECT_EQ(magic[0], 0x76);  // OpenEXR magic number 20000630
+  EXPECT_EQ(magic[1], 0x2f);
+  EXPECT_EQ(magic[2], 0x31);
+  EXPECT_EQ(magic[3], 0x01);
+}
+
+}  // namespace
