@@ -1,9 +1,14 @@
 // Deferred lighting: ambient + sum over lights of
 // shadow * (Lambert diffuse + normalized Blinn-Phong specular).
-// SHADOW_TECHNIQUE is a compile-time define (TECHNIQUE_*).
+// Compile-time defines: SHADOW_TECHNIQUE (TECHNIQUE_*), SHADOW_FILTER
+// (FILTER_*).
 #include "../common/uniforms.glsl"
 #include "../shadow/lookup.glsl"
 #include "../shadow/hard.glsl"
+#include "../shadow/vsm.glsl"
+#include "../shadow/esm.glsl"
+#include "../shadow/msm.glsl"
+#include "../filter/sat.glsl"
 
 layout(std140, binding = BINDING_SHADOW_UBO) uniform ShadowBlock { GpuShadow shadow_params; };
 
@@ -12,6 +17,12 @@ layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gbuffer_normal;
 layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gbuffer_albedo;
 layout(binding = UNIT_GBUFFER_SPECULAR) uniform sampler2D gbuffer_specular;
 layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2D shadow_depth[MAX_LIGHTS];
+#if SHADOW_FILTER == FILTER_SAT
+layout(binding = UNIT_SHADOW_FILTERED) uniform usampler2D shadow_sat[MAX_LIGHTS];
+#else
+// The technique's representation, filtered or not; sampled bilinearly.
+layout(binding = UNIT_SHADOW_FILTERED) uniform sampler2D shadow_filtered[MAX_LIGHTS];
+#endif
 
 in vec2 v_uv;
 layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
@@ -22,17 +33,44 @@ vec3 world_position(ivec2 pixel, float depth) {
   return p.xyz / p.w;
 }
 
+#if SHADOW_TECHNIQUE >= TECHNIQUE_VSM
+// The light's filtered representation at the lookup point.
+vec4 filtered_map(int i, vec2 uv) {
+#if SHADOW_FILTER == FILTER_SAT
+  ivec2 size = textureSize(shadow_sat[i], 0);
+  ivec2 center = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+  return sat_box_average(shadow_sat[i], center, shadow_params.blur_radius, shadow_params.sat_scale);
+#else
+  return texture(shadow_filtered[i], uv);
+#endif
+}
+#endif
+
 // Fraction of light i's light that reaches the point (1 = lit).
 float shadow_factor(int i, vec3 world, vec3 normal) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_NONE
   return 1.0;
 #else
   GpuLight light = lights[i];
-  ShadowLookup s = shadow_lookup(light, world, normal, shadow_params.bias.z);
+  ShadowLookup s = shadow_lookup(light, world, normal, shadow_params.normal_offset);
   if (!s.inside) return 1.0;
   float bias = shadow_bias(light, shadow_params, s, normal, direction_to_light(light, world));
 #if SHADOW_TECHNIQUE == TECHNIQUE_HARD
   return shadow_hard(shadow_depth[i], s.uv, s.depth, bias);
+#else
+  vec4 m = filtered_map(i, s.uv);
+  float z = s.depth - bias;
+#if SHADOW_TECHNIQUE == TECHNIQUE_VSM
+  return shadow_vsm(m.xy, z, shadow_params.vsm_min_variance, shadow_params.bleed_reduction);
+#elif SHADOW_TECHNIQUE == TECHNIQUE_ESM
+  return shadow_esm(m.x, z, shadow_params.esm_c);
+#elif SHADOW_TECHNIQUE == TECHNIQUE_MSM
+  float g = msm_hamburger(m, z, shadow_params.msm_alpha);
+  return reduce_light_bleeding(1.0 - g, shadow_params.bleed_reduction);
+#elif SHADOW_TECHNIQUE == TECHNIQUE_MSM16
+  float g = msm_hamburger16(msm_dequantize(m), z, shadow_params.msm_alpha);
+  return reduce_light_bleeding(1.0 - g, shadow_params.bleed_reduction);
+#endif
 #endif
 #endif
 }

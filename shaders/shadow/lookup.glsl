@@ -48,7 +48,7 @@ ShadowLookup shadow_lookup(GpuLight light, vec3 world, vec3 normal, float normal
 // capped so that grazing surfaces do not push the bias to infinity.
 float shadow_bias(GpuLight light, GpuShadow params, ShadowLookup s, vec3 normal, vec3 to_light) {
   float cos_theta = clamp(abs(dot(normal, to_light)), 1e-4, 1.0);
-  float tan_theta = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, params.bias.w);
+  float tan_theta = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, params.max_slope);
   float depth_span = light.depth_range.y - light.depth_range.x;
-  return params.bias.x + params.bias.y * tan_theta * s.texel / depth_span;
+  return params.constant_bias + params.slope_bias * tan_theta * s.texel / depth_span;
 }

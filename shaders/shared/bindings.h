@@ -42,5 +42,18 @@
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 #define TECHNIQUE_NONE 0
 #define TECHNIQUE_HARD 1
+#define TECHNIQUE_VSM 2
+#define TECHNIQUE_ESM 3
+#define TECHNIQUE_MSM 4
+#define TECHNIQUE_MSM16 5
+
+// Filters of the filterable maps (compile-time define SHADOW_FILTER)
+#define FILTER_NONE 0
+#define FILTER_GAUSSIAN 1
+#define FILTER_SAT 2
+
+// Views of a light's map written by the map-view kernel
+#define MAP_VIEW_RAW 0
+#define MAP_VIEW_ESM_LOG 1
 
 #endif

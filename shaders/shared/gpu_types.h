@@ -36,11 +36,21 @@ struct GpuFrame {
   vec4 ambient;          // rgb: ambient light colour
 };
 
-// Shadow parameters, all in z-bar units unless stated.
+// Shadow parameters (see ShadowSettings in src/core/settings.hpp for their
+// meaning). Scalars only, four to a row, so std140 matches the C++ layout.
 struct GpuShadow {
-  // x: constant bias; y: slope-scaled bias (texels of depth slope);
-  // z: normal offset (texels); w: largest slope (tan) the slope bias follows
-  vec4 bias;
+  float constant_bias;  // z-bar units
+  float slope_bias;     // texels of the receiver's depth slope
+  float normal_offset;  // texels
+  float max_slope;      // largest tan(theta) the slope bias follows
+  float esm_c;
+  float msm_alpha;  // the alpha for the technique in use (32-bit, or 16-bit/SAT)
+  float bleed_reduction;
+  float vsm_min_variance;
+  int blur_radius;  // texels
+  float sat_scale;  // fixed-point scale of the summed-area table (values * scale)
+  float unused0;
+  float unused1;
 };
 
 #ifdef __cplusplus

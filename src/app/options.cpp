@@ -52,6 +52,11 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
   named.technique = std::string(enum_name<Technique>(kTechniqueNames, settings.technique));
   app.add_option("--technique", named.technique, "shadow technique: " + choices(kTechniqueNames))
       ->capture_default_str();
+  named.filter = std::string(enum_name<Filter>(kFilterNames, settings.filter));
+  app.add_option("--filter", named.filter,
+                 "filter of the vsm/esm/msm/msm16 maps: " + choices(kFilterNames) +
+                     " (separable Gaussian, or summed-area table)")
+      ->capture_default_str();
   add_params(app, settings, kShadowIntParams);
   add_params(app, settings, kShadowFloatParams);
 }
@@ -61,7 +66,8 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
   app.add_option("--view", named.view,
                  "what to write: " + choices(kViewNames) +
                      " (shadow: the shadow factor, 1 = lit; shadow-map: the light's relative "
-                     "depth z-bar)")
+                     "depth z-bar; moments, moments-filtered: the technique's map before and "
+                     "after the filter, as colour; for esm, log(map)/c + 1, in depth units)")
       ->capture_default_str();
   add_params(app, settings, kRenderIntParams);
 }
@@ -72,6 +78,12 @@ void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, Rend
   } else {
     throw UsageError("unknown technique '" + named.technique + "' (choose from " +
                      choices(kTechniqueNames) + ")");
+  }
+  if (auto f = parse_enum<Filter>(kFilterNames, named.filter)) {
+    shadow.filter = *f;
+  } else {
+    throw UsageError("unknown filter '" + named.filter + "' (choose from " +
+                     choices(kFilterNames) + ")");
   }
   if (auto v = parse_enum<View>(kViewNames, named.view)) {
     render.view = *v;

@@ -13,6 +13,7 @@ namespace penumbra {
 // parse_named_options(), so errors list the valid names.
 struct NamedOptions {
   std::string technique;
+  std::string filter;
   std::string view;
 };
 

@@ -29,6 +29,13 @@ void check_ranges(const Settings& settings, const std::array<NumericParam<Settin
 void validate(const ShadowSettings& settings) {
   check_ranges(settings, kShadowFloatParams);
   check_ranges(settings, kShadowIntParams);
+  if (settings.technique == Technique::Esm && settings.filter == Filter::Sat &&
+      settings.blur > 0) {
+    throw UsageError(
+        "--technique esm cannot use --filter sat: exp(c*z) spans exp(-c) to 1 (1e-26 at c = 60), "
+        "far beyond the 17 bits per texel a 32-bit summed-area table keeps; use --filter "
+        "gaussian, or vsm/msm/msm16 with sat");
+  }
 }
 
 void validate(const RenderSettings& settings) { check_ranges(settings, kRenderIntParams); }

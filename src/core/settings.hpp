@@ -10,22 +10,47 @@
 
 namespace penumbra {
 
-enum class Technique { None, Hard };
+enum class Technique { None, Hard, Vsm, Esm, Msm, Msm16 };
 
-inline constexpr std::array<std::pair<Technique, std::string_view>, 2> kTechniqueNames{{
+inline constexpr std::array<std::pair<Technique, std::string_view>, 6> kTechniqueNames{{
     {Technique::None, "none"},
     {Technique::Hard, "hard"},
+    {Technique::Vsm, "vsm"},
+    {Technique::Esm, "esm"},
+    {Technique::Msm, "msm"},
+    {Technique::Msm16, "msm16"},
 }};
 
-enum class View { Final, Shadow, ShadowMap, Normals, Albedo };
+// Techniques whose map is a filterable representation of depth (moments or
+// an exponential) rather than depth itself.
+constexpr bool is_filterable(Technique t) {
+  return t == Technique::Vsm || t == Technique::Esm || t == Technique::Msm ||
+         t == Technique::Msm16;
+}
 
-inline constexpr std::array<std::pair<View, std::string_view>, 5> kViewNames{{
+enum class Filter { Gaussian, Sat };
+
+inline constexpr std::array<std::pair<Filter, std::string_view>, 2> kFilterNames{{
+    {Filter::Gaussian, "gaussian"},
+    {Filter::Sat, "sat"},
+}};
+
+enum class View { Final, Shadow, ShadowMap, Moments, MomentsFiltered, Normals, Albedo };
+
+inline constexpr std::array<std::pair<View, std::string_view>, 7> kViewNames{{
     {View::Final, "final"},
     {View::Shadow, "shadow"},
     {View::ShadowMap, "shadow-map"},
+    {View::Moments, "moments"},
+    {View::MomentsFiltered, "moments-filtered"},
     {View::Normals, "normals"},
     {View::Albedo, "albedo"},
 }};
+
+// Views that show a light's map rather than the camera's image.
+constexpr bool is_map_view(View v) {
+  return v == View::ShadowMap || v == View::Moments || v == View::MomentsFiltered;
+}
 
 struct ShadowSettings {
   Technique technique = Technique::Hard;
@@ -41,6 +66,24 @@ struct ShadowSettings {
   float normal_offset = 0.5f;
   // Width of the light source in world units (0: a point light, hard shadows).
   float light_size = 0.0f;
+
+  // Filtering of the vsm, esm, msm and msm16 maps.
+  Filter filter = Filter::Gaussian;
+  // Filter radius W in texels: a Gaussian of 2W+1 taps (s = W/2), or a
+  // (2W+1)^2 box from the summed-area table. 0: no filtering.
+  int blur = 2;
+  // ESM exponent c (Annen et al. 2008); the map stores exp(c (z - 1)).
+  float esm_c = 60.0f;
+  // MSM moment bias alpha for 32-bit moments (Peters & Klein 2015, Alg. 3).
+  float msm_alpha = 1e-5f;
+  // MSM moment bias alpha for 16-bit quantized moments, and for moments
+  // summed in the fixed-point summed-area table.
+  float msm16_alpha = 5e-5f;
+  // VSM minimum variance, in z-bar squared.
+  float vsm_min_variance = 1e-4f;
+  // Light-bleeding reduction for vsm and msm: lit fractions below this
+  // amount become 0 and the rest is rescaled. 0: off.
+  float bleed_reduction = 0.0f;
 };
 
 struct RenderSettings {
@@ -65,7 +108,12 @@ struct NumericParam {
 inline constexpr int kMaxMapSize = 32768;  // the largest any GPU offers; each GPU's own limit is checked too
 inline constexpr int kMaxImageSize = 16384;
 
-inline constexpr std::array<NumericParam<ShadowSettings, float>, 5> kShadowFloatParams{{
+// The ESM map stores exp(c (z - 1)) in 32-bit float: in (0, 1], so it
+// cannot overflow; c <= 87 keeps exp(-c) above the smallest normal float.
+inline constexpr float kEsmMaxC = 87.0f;
+inline constexpr int kMaxBlur = 64;
+
+inline constexpr std::array<NumericParam<ShadowSettings, float>, 10> kShadowFloatParams{{
     {"constant-bias", "constant depth bias, in relative light depth z-bar", 0.0f, 0.1f,
      &ShadowSettings::constant_bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
@@ -76,11 +124,22 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 5> kShadowFloat
      &ShadowSettings::normal_offset},
     {"light-size", "width of the light source in world units (0: point light)", 0.0f, 100.0f,
      &ShadowSettings::light_size},
+    {"esm-c", "ESM exponent c", 1.0f, kEsmMaxC, &ShadowSettings::esm_c},
+    {"msm-alpha", "MSM moment bias alpha, 32-bit moments", 1e-8f, 0.5f,
+     &ShadowSettings::msm_alpha},
+    {"msm16-alpha", "MSM moment bias alpha, 16-bit and summed-area-table moments", 1e-8f, 0.5f,
+     &ShadowSettings::msm16_alpha},
+    {"vsm-min-variance", "VSM minimum variance (z-bar squared)", 0.0f, 0.25f,
+     &ShadowSettings::vsm_min_variance},
+    {"bleed-reduction", "light-bleeding reduction for vsm and msm (0: off)", 0.0f, 0.99f,
+     &ShadowSettings::bleed_reduction},
 }};
 
-inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 2> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowSettings::map_size},
+    {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none",
+     0, kMaxBlur, &ShadowSettings::blur},
 }};
 
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{

@@ -50,6 +50,13 @@ Texture::Texture(const TextureInfo& info)
     default:
       throw RuntimeError("unsupported texture target");
   }
+  // Filter with NEAREST unless a sampler says otherwise: the default
+  // (NEAREST_MIPMAP_LINEAR) makes integer textures incomplete, and then even
+  // texelFetch reads zeros.
+  if (info.target != GL_TEXTURE_2D_MULTISAMPLE) {
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
   set_label(GL_TEXTURE, id, info.label);
 }
 

@@ -3,37 +3,35 @@
 #include <algorithm>
 #include <string>
 
+#include "shadow/representation.hpp"
 #include "shared/bindings.h"
 
 namespace penumbra {
 
-int technique_define(Technique technique) {
-  switch (technique) {
-    case Technique::None: return TECHNIQUE_NONE;
-    case Technique::Hard: return TECHNIQUE_HARD;
-  }
-  return TECHNIQUE_NONE;
-}
-
 LightingPass::LightingPass()
     : empty_vao_("fullscreen"),
       nearest_(gl::SamplerInfo{.min_filter = GL_NEAREST, .mag_filter = GL_NEAREST,
-                               .label = "nearest clamp"}) {}
+                               .label = "nearest clamp"}),
+      bilinear_(gl::SamplerInfo{.label = "bilinear clamp"}) {}
 
-const gl::Program& LightingPass::program_for(Technique technique) {
-  auto it = programs_.find(technique);
+const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
+  const auto key = std::make_pair(technique_define(settings.technique), filter_define(settings));
+  auto it = programs_.find(key);
   if (it == programs_.end()) {
-    gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(technique_define(technique))}};
+    gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(key.first)},
+                           {"SHADOW_FILTER", std::to_string(key.second)}};
     it = programs_
-             .emplace(technique, gl::Program::graphics("common/fullscreen.vert",
-                                                       "render/lighting.frag", defines))
+             .emplace(key, gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
+                                                 defines))
              .first;
   }
   return it->second;
 }
 
 void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shadows,
-                           int light_count, Technique technique, int width, int height) {
+                           const std::array<GLuint, 4>& filtered_maps, int light_count,
+                           const ShadowSettings& settings, int width, int height) {
+  static_assert(MAX_LIGHTS == 4);
   if (width != width_ || height != height_) {
     output_ = gl::Texture(gl::TextureInfo{
         .format = GL_RGBA32F, .width = width, .height = height, .label = "lighting output"});
@@ -49,7 +47,7 @@ void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shad
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
-  program_for(technique).use();
+  program_for(settings).use();
   glBindTextureUnit(UNIT_GBUFFER_DEPTH, gbuffer.depth().id());
   glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
   glBindTextureUnit(UNIT_GBUFFER_ALBEDO, gbuffer.albedo().id());
@@ -64,6 +62,11 @@ void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shad
     const GLuint unit = static_cast<GLuint>(UNIT_SHADOW_DEPTH + i);
     glBindTextureUnit(unit, maps > 0 ? shadows.depth_map(i < maps ? i : 0).id() : 0);
     glBindSampler(unit, nearest_.id());
+    // Filtered maps are sampled bilinearly (linear filters commute with
+    // the moments' linearity); integer tables are read with texelFetch.
+    const GLuint filtered_unit = static_cast<GLuint>(UNIT_SHADOW_FILTERED + i);
+    glBindTextureUnit(filtered_unit, filtered_maps[static_cast<std::size_t>(i < light_count ? i : 0)]);
+    glBindSampler(filtered_unit, filter_define(settings) == FILTER_SAT ? 0 : bilinear_.id());
   }
   glBindVertexArray(empty_vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

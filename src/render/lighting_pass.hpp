@@ -1,6 +1,7 @@
 #pragma once
 // Full-screen deferred lighting into a 32-bit float target: the final
 // linear colour, or one of the debug views.
+#include <array>
 #include <map>
 
 #include "core/settings.hpp"
@@ -15,25 +16,27 @@ class LightingPass {
  public:
   LightingPass();
 
-  // The frame, lights and shadow blocks must be bound.
-  void execute(const GBufferPass& gbuffer, const ShadowMapPass& shadows, int light_count,
-               Technique technique, int width, int height);
+  // The frame, lights and shadow blocks must be bound. `filtered_maps[i]`
+  // is light i's filtered representation (a summed-area table for the sat
+  // filter), or 0 for techniques that read the depth map.
+  void execute(const GBufferPass& gbuffer, const ShadowMapPass& shadows,
+               const std::array<GLuint, 4>& filtered_maps, int light_count,
+               const ShadowSettings& settings, int width, int height);
 
   // RGBA32F: rgb as the view defines, alpha 1 where geometry was seen.
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
  private:
-  const gl::Program& program_for(Technique technique);
+  const gl::Program& program_for(const ShadowSettings& settings);
 
-  std::map<Technique, gl::Program> programs_;  // one per technique, compiled on first use
+  // One per (technique, filter) define pair, compiled on first use.
+  std::map<std::pair<int, int>, gl::Program> programs_;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
+  gl::Sampler bilinear_;
   gl::Texture output_;
   gl::Framebuffer framebuffer_;
   int width_ = 0, height_ = 0;
 };
-
-// The value of the SHADOW_TECHNIQUE define for a technique.
-int technique_define(Technique technique);
 
 }  // namespace penumbra

@@ -1,11 +1,14 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
 #include "core/error.hpp"
+#include "shadow/representation.hpp"
 #include "shared/bindings.h"
 #include "shared/gpu_types.h"
 
@@ -13,7 +16,7 @@ namespace penumbra {
 
 static_assert(sizeof(gpu::GpuLight) == 2 * 64 + 4 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
-static_assert(sizeof(gpu::GpuShadow) == 16, "GpuShadow must match std140");
+static_assert(sizeof(gpu::GpuShadow) == 48, "GpuShadow must match std140");
 
 namespace {
 
@@ -118,11 +121,17 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   }
   const int light_count = static_cast<int>(scene_.lights.size());
   if (render.light_index >= light_count &&
-      (render.view == View::Shadow || render.view == View::ShadowMap)) {
+      (render.view == View::Shadow || is_map_view(render.view))) {
     throw UsageError("--light-index " + std::to_string(render.light_index) + ": scene '" +
                      scene_.name + "' has " + std::to_string(light_count) + " light(s)");
   }
+  if ((render.view == View::Moments || render.view == View::MomentsFiltered) &&
+      !is_filterable(shadow.technique)) {
+    throw UsageError("--view " + std::string(enum_name<View>(kViewNames, render.view)) +
+                     " needs a filterable technique (vsm, esm, msm or msm16)");
+  }
   last_render_ = render;
+  last_shadow_ = shadow;
 
   // Per-frame blocks.
   gpu::GpuLight lights[MAX_LIGHTS] = {};
@@ -146,26 +155,78 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   frame_ubo_.update(&frame, sizeof frame);
 
   gpu::GpuShadow shadow_block{};
-  shadow_block.bias =
-      glm::vec4(shadow.constant_bias, shadow.slope_bias, shadow.normal_offset, shadow.max_slope);
+  shadow_block.constant_bias = shadow.constant_bias;
+  shadow_block.slope_bias = shadow.slope_bias;
+  shadow_block.normal_offset = shadow.normal_offset;
+  shadow_block.max_slope = shadow.max_slope;
+  shadow_block.esm_c = shadow.esm_c;
+  // The fixed-point summed-area table keeps 17 bits per value, about what
+  // the 16-bit moments keep: both need the larger moment bias.
+  const bool coarse_moments =
+      shadow.technique == Technique::Msm16 || filter_define(shadow) == FILTER_SAT;
+  shadow_block.msm_alpha = coarse_moments ? shadow.msm16_alpha : shadow.msm_alpha;
+  shadow_block.bleed_reduction = shadow.bleed_reduction;
+  shadow_block.vsm_min_variance = shadow.vsm_min_variance;
+  shadow_block.blur_radius = shadow.blur;
+  shadow_block.sat_scale = static_cast<float>(sat_fixed_point_scale());
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_LIGHTS_UBO, lights_ubo_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_UBO, shadow_ubo_.id());
 
-  if (shadow.technique != Technique::None || render.view == View::ShadowMap) {
+  if (shadow.technique != Technique::None || is_map_view(render.view)) {
     shadow_pass_.execute(gpu_scene_, light_count, shadow.map_size);
   }
-  if (render.view != View::ShadowMap) {
+  std::array<GLuint, MAX_LIGHTS> filtered{};
+  if (is_filterable(shadow.technique)) {
+    const int filter = filter_define(shadow);
+    for (int i = 0; i < light_count; ++i) {
+      resolve_pass_.execute(i, shadow_pass_.depth_map(i), shadow.technique, shadow.esm_c);
+      const gl::Texture& representation = resolve_pass_.representation(i);
+      GLuint map = representation.id();
+      if (filter == FILTER_GAUSSIAN) {
+        blur_pass_.execute(i, representation, shadow.blur);
+        map = blur_pass_.output(i).id();
+      } else if (filter == FILTER_SAT) {
+        sat_pass_.execute(i, representation);
+        map = sat_pass_.table(i).id();
+      }
+      filtered[static_cast<std::size_t>(i)] = map;
+    }
+  }
+  if (!is_map_view(render.view)) {
     gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
-    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, light_count, shadow.technique,
+    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow,
                            render.width, render.height);
   }
 }
 
-Image Renderer::read_view() const {
-  if (last_render_.view == View::ShadowMap) return read_shadow_map(last_render_.light_index);
+Image Renderer::read_view() {
+  const int light = last_render_.light_index;
+  const View view = last_render_.view;
+  if (view == View::ShadowMap) return read_shadow_map(light);
+  if (view == View::Moments || view == View::MomentsFiltered) {
+    const gl::Texture* map = &resolve_pass_.representation(light);
+    const int filter = filter_define(last_shadow_);
+    if (view == View::MomentsFiltered && filter == FILTER_GAUSSIAN) {
+      map = &blur_pass_.output(light);
+    } else if (view == View::MomentsFiltered && filter == FILTER_SAT) {
+      map = &sat_pass_.box_filtered(light, last_shadow_.blur);
+    }
+    Image image = read_texture(map->id(), map->width(), map->height(), GL_RGBA);
+    if (last_shadow_.technique == Technique::Esm) {
+      // log(map) / c + 1 is the occluder depth for an unfiltered map; after
+      // the blur it is log(blur(exp(c z))) / c + 1, which is not blur(z).
+      for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
+        const float v = image.rgba[p];
+        const float depth = v > 0.0f ? std::log(v) / last_shadow_.esm_c + 1.0f : 0.0f;
+        image.rgba[p] = image.rgba[p + 1] = image.rgba[p + 2] = depth;
+        image.rgba[p + 3] = 1.0f;
+      }
+    }
+    return image;
+  }
   const gl::Texture& out = lighting_pass_.output();
   return read_texture(out.id(), out.width(), out.height(), GL_RGBA);
 }

@@ -13,7 +13,10 @@
 #include "render/lighting_pass.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
+#include "filter/gaussian_blur_pass.hpp"
+#include "filter/summed_area_table_pass.hpp"
 #include "shadow/light_view.hpp"
+#include "shadow/moment_resolve_pass.hpp"
 #include "shadow/shadow_map_pass.hpp"
 
 namespace penumbra {
@@ -28,8 +31,10 @@ class Renderer {
   void render(const RenderSettings& render, const ShadowSettings& shadow);
 
   // The view chosen in the last render(): the lighting pass's output for
-  // camera views, the light's z-bar map for View::ShadowMap.
-  [[nodiscard]] Image read_view() const;
+  // camera views; for map views, the light's z-bar map (shadow-map) or its
+  // representation before or after the filter (moments,
+  // moments-filtered; for esm shown as log(map)/c + 1, in depth units).
+  [[nodiscard]] Image read_view();
   // Light i's shadow map (z-bar in every channel), as last rendered.
   [[nodiscard]] Image read_shadow_map(int light) const;
 
@@ -45,11 +50,15 @@ class Renderer {
   Bounds bounds_;
   GpuScene gpu_scene_;
   ShadowMapPass shadow_pass_;
+  MomentResolvePass resolve_pass_;
+  GaussianBlurPass blur_pass_;
+  SummedAreaTablePass sat_pass_;
   GBufferPass gbuffer_pass_;
   LightingPass lighting_pass_;
   gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_;
   std::vector<LightView> light_views_;
   RenderSettings last_render_;
+  ShadowSettings last_shadow_;
 };
 
 }  // namespace penumbra

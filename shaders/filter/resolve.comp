@@ -1,0 +1,34 @@
+// Resolve: the light's depth map (z-bar) -> the technique's filterable
+// representation. REPRESENTATION is the TECHNIQUE_* of vsm, esm, msm or
+// msm16; IMAGE_FORMAT the matching image format.
+#include "../shared/bindings.h"
+#include "../shadow/esm.glsl"
+#include "../shadow/msm.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2D depth_map;
+layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2D representation;
+layout(location = 0) uniform float u_esm_c;
+
+vec4 represent(float z) {
+#if REPRESENTATION == TECHNIQUE_VSM
+  return vec4(z, z * z, 0.0, 0.0);  // Donnelly & Lauritzen 2006: the first two moments
+#elif REPRESENTATION == TECHNIQUE_ESM
+  return vec4(esm_encode(z, u_esm_c), 0.0, 0.0, 0.0);
+#else
+  float z2 = z * z;
+  vec4 moments = vec4(z, z2, z2 * z, z2 * z2);  // Peters & Klein 2015: b = (z, z^2, z^3, z^4)
+#if REPRESENTATION == TECHNIQUE_MSM16
+  return msm_quantize(moments);
+#else
+  return moments;
+#endif
+#endif
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, textureSize(depth_map, 0)))) return;
+  imageStore(representation, p, represent(texelFetch(depth_map, p, 0).r));
+}

@@ -1,0 +1,18 @@
+// Writes the (2 RADIUS + 1)^2 box average of every texel, read from a
+// summed-area table: the "moments-filtered" view of a SAT-filtered map, and
+// the GPU side of the SAT tests.
+#include "../shared/bindings.h"
+#include "sat.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+layout(binding = UNIT_COMPUTE_INPUT) uniform usampler2D table;
+layout(rgba32f, binding = IMAGE_OUTPUT) uniform writeonly image2D averages;
+layout(location = 0) uniform int u_radius;
+layout(location = 1) uniform float u_scale;
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, textureSize(table, 0)))) return;
+  imageStore(averages, p, sat_box_average(table, p, u_radius, u_scale));
+}

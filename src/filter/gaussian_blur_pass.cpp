@@ -1,0 +1,76 @@
+#include "filter/gaussian_blur_pass.hpp"
+
+#include <string>
+
+#include "core/settings.hpp"
+#include "filter/gaussian.hpp"
+#include "shadow/representation.hpp"
+#include "shared/bindings.h"
+
+namespace penumbra {
+
+namespace {
+
+constexpr int kTileAlong = 64;  // TILE_ALONG and TILE_ACROSS of gaussian_blur.comp
+constexpr int kTileAcross = 8;
+
+GLuint groups(int size, int tile) { return static_cast<GLuint>((size + tile - 1) / tile); }
+
+void ensure(gl::Texture& texture, const gl::Texture& like, const char* label) {
+  if (!texture || texture.width() != like.width() || texture.height() != like.height() ||
+      texture.format() != like.format()) {
+    texture = gl::Texture(gl::TextureInfo{
+        .format = like.format(), .width = like.width(), .height = like.height(), .label = label});
+  }
+}
+
+}  // namespace
+
+GaussianBlurPass::GaussianBlurPass()
+    : weights_(sizeof(float) * (2 * kMaxBlur + 1), nullptr, true, "gaussian weights") {}
+
+const gl::Program& GaussianBlurPass::program(GLenum format, int axis, int radius) {
+  auto key = std::make_tuple(format, axis, radius);
+  auto it = programs_.find(key);
+  if (it == programs_.end()) {
+    gl::Defines defines = {{"AXIS", std::to_string(axis)},
+                           {"RADIUS", std::to_string(radius)},
+                           {"IMAGE_FORMAT", image_format_qualifier(format)}};
+    it = programs_.emplace(key, gl::Program::compute("filter/gaussian_blur.comp", defines)).first;
+  }
+  return it->second;
+}
+
+void GaussianBlurPass::dispatch(const gl::Program& program, const gl::Texture& from,
+                                const gl::Texture& to, int axis) {
+  program.use();
+  glBindTextureUnit(UNIT_COMPUTE_INPUT, from.id());
+  glBindSampler(UNIT_COMPUTE_INPUT, 0);
+  glBindImageTexture(IMAGE_OUTPUT, to.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, to.format());
+  if (axis == 0) {
+    glDispatchCompute(groups(from.width(), kTileAlong), groups(from.height(), kTileAcross), 1);
+  } else {
+    glDispatchCompute(groups(from.width(), kTileAcross), groups(from.height(), kTileAlong), 1);
+  }
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void GaussianBlurPass::execute(int light, const gl::Texture& source, int radius) {
+  if (radius != weights_radius_) {
+    std::vector<float> weights = gaussian_weights(radius);
+    weights_.update(weights.data(), weights.size() * sizeof(float));
+    weights_radius_ = radius;
+  }
+  const std::size_t index = static_cast<std::size_t>(light);
+  if (outputs_.size() <= index) outputs_.resize(index + 1);
+  ensure(intermediate_, source, "blur intermediate");
+  ensure(outputs_[index], source, "blurred shadow map");
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "gaussian blur");
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, weights_.id());
+  dispatch(program(source.format(), 0, radius), source, intermediate_, 0);
+  dispatch(program(source.format(), 1, radius), intermediate_, outputs_[index], 1);
+  glPopDebugGroup();
+}
+
+}  // namespace penumbra

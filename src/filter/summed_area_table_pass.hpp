@@ -1,0 +1,40 @@
+#pragma once
+// Summed-area table of a light's map, in 32-bit fixed point with
+// wrap-around sums (shaders/filter/sat*.glsl): rows, then columns.
+#include <map>
+#include <vector>
+
+#include "core/settings.hpp"
+#include "gl/program.hpp"
+#include "gl/resources.hpp"
+
+namespace penumbra {
+
+// Largest box (in texels) a lookup may cover: the (2 kMaxBlur + 1)^2 box.
+inline constexpr double kSatMaxBoxArea = double(2 * kMaxBlur + 1) * double(2 * kMaxBlur + 1);
+// Fixed-point scale 2^F: the largest power of two for which a box of
+// kSatMaxBoxArea values of at most 1 still sums below 2^32. With kMaxBlur =
+// 64 that is 2^17: each value is stored to within 2^-18 (3.8e-6).
+double sat_fixed_point_scale();
+
+class SummedAreaTablePass {
+ public:
+  // Builds light `light`'s table from `source` (values in [0, 1]).
+  void execute(int light, const gl::Texture& source);
+
+  // Valid after execute() for that light: an unsigned-integer texture.
+  [[nodiscard]] const gl::Texture& table(int light) const { return tables_.at(light); }
+
+  // Box averages of every texel, (2 radius + 1)^2 boxes cropped to the map,
+  // read from light `light`'s table: RGBA32F. For views and tests.
+  const gl::Texture& box_filtered(int light, int radius);
+
+ private:
+  const gl::Program& program(const char* path, GLenum format);
+
+  std::map<std::pair<std::string, GLenum>, gl::Program> programs_;
+  std::vector<gl::Texture> tables_;
+  gl::Texture box_filtered_;
+};
+
+}  // namespace penumbra

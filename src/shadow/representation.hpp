@@ -1,0 +1,33 @@
+#pragma once
+// What each filterable technique stores per shadow-map texel, and in which
+// texture format.
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include "core/settings.hpp"
+
+namespace penumbra {
+
+// The value of the SHADOW_TECHNIQUE define (TECHNIQUE_*) for a technique.
+int technique_define(Technique technique);
+
+// The value of the SHADOW_FILTER define (FILTER_*) for the shadow settings.
+int filter_define(const ShadowSettings& settings);
+
+// Sized internal format of the technique's map: vsm RG32F (z, z^2),
+// esm R32F exp(c (z - 1)), msm RGBA32F (z, z^2, z^3, z^4), msm16 RGBA16
+// (the quantized moments). Only for filterable techniques.
+GLenum representation_format(Technique technique);
+
+// The GLSL image format qualifier of a sized internal format ("rgba32f").
+std::string image_format_qualifier(GLenum format);
+
+// The unsigned-integer format with as many channels (for summed-area
+// tables of the representation).
+GLenum integer_format_with_channels_of(GLenum format);
+
+// Bytes per texel of a sized internal format used here.
+int bytes_per_texel(GLenum format);
+
+}  // namespace penumbra
