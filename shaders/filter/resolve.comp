@@ -1,6 +1,8 @@
 // Resolve: the light's depth map (z-bar) -> the technique's filterable
 // representation. REPRESENTATION is the TECHNIQUE_* of vsm, esm, msm or
-// msm16; IMAGE_FORMAT the matching image format.
+// msm16; MSM_QUANTIZED (0/1) whether the moments are stored in the
+// quantization basis (see uses_quantized_moments()); IMAGE_FORMAT the
+// matching image format.
 #include "../shared/bindings.h"
 #include "../shadow/esm.glsl"
 #include "../shadow/msm.glsl"
@@ -19,7 +21,7 @@ vec4 represent(float z) {
 #else
   float z2 = z * z;
   vec4 moments = vec4(z, z2, z2 * z, z2 * z2);  // Peters & Klein 2015: b = (z, z^2, z^3, z^4)
-#if REPRESENTATION == TECHNIQUE_MSM16
+#if MSM_QUANTIZED
   return msm_quantize(moments);
 #else
   return moments;

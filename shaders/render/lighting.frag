@@ -1,7 +1,10 @@
+
+
+
 // Deferred lighting: ambient + sum over lights of
 // shadow * (Lambert diffuse + normalized Blinn-Phong specular).
 // Compile-time defines: SHADOW_TECHNIQUE (TECHNIQUE_*), SHADOW_FILTER
-// (FILTER_*).
+// (FILTER_*), MSM_QUANTIZED (0/1: moments in the quantization basis).
 #include "../common/uniforms.glsl"
 #include "../shadow/lookup.glsl"
 #include "../shadow/hard.glsl"
@@ -46,15 +49,74 @@ vec4 filtered_map(int i, vec2 uv) {
 }
 #endif
 
+struct ReceiverPlane {
+  vec3 world;   // the lookup point
+  vec3 normal;
+  float depth;  // its z-bar
+  float bias;
+};
+
+// The filtered hard-shadow reference (--view shadow-reference): the binary
+// depth tests of the unfiltered map, averaged with the kernel the
+// technique's filter applies, by brute force; each texel is tested against
+// the receiver's plane where that texel's ray meets it. It is what a filtered
+// technique approximates. Test quality: (2W+1)^2 fetches per pixel (four
+// times that for the Gaussian, which is read bilinearly like the blurred map).
+layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer ReferenceWeights {
+  float reference_weights[];  // 2 W + 1: the filter's 1D kernel
+};
+
+// The biased test of one texel against the receiver's plane there.
+float depth_test(int i, ivec2 texel, ReceiverPlane plane) {
+  vec2 uv = (vec2(texel) + 0.5) / vec2(textureSize(shadow_depth[i], 0));
+  float z = receiver_plane_depth(lights[i], plane.world, plane.normal, uv, plane.depth) - plane.bias;
+  return z <= texelFetch(shadow_depth[i], texel, 0).r ? 1.0 : 0.0;
+}
+
+float filtered_hard_reference(int i, vec2 uv, ReceiverPlane z) {
+  const int r = shadow_params.blur_radius;
+  ivec2 size = textureSize(shadow_depth[i], 0);
+#if SHADOW_FILTER == FILTER_SAT
+  // The box of sat_box_average(): centred on the texel under uv, cropped.
+  ivec2 center = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+  ivec2 lo = max(center - r, ivec2(0)), hi = min(center + r, size - 1);
+  float sum = 0.0;
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int x = lo.x; x <= hi.x; ++x) sum += depth_test(i, ivec2(x, y), z);
+  return sum / float((hi.x - lo.x + 1) * (hi.y - lo.y + 1));
+#else
+  // The blurred map (edges clamped), read bilinearly at uv.
+  vec2 p = uv * vec2(size) - 0.5;
+  ivec2 base = ivec2(floor(p));
+  vec2 f = p - vec2(base);
+  float corners[4];
+  for (int c = 0; c < 4; ++c) {
+    ivec2 center = base + ivec2(c & 1, c >> 1);
+    float sum = 0.0;
+    for (int y = -r; y <= r; ++y)
+      for (int x = -r; x <= r; ++x)
+        sum += reference_weights[x + r] * reference_weights[y + r] *
+               depth_test(i, clamp(center + ivec2(x, y), ivec2(0), size - 1), z);
+    corners[c] = sum;
+  }
+  return mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
+#endif
+}
+
 // Fraction of light i's light that reaches the point (1 = lit).
-float shadow_factor(int i, vec3 world, vec3 normal) {
+float shadow_factor(int i, vec3 world, vec3 normal, bool reference) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_NONE
   return 1.0;
 #else
   GpuLight light = lights[i];
   ShadowLookup s = shadow_lookup(light, world, normal, shadow_params.normal_offset);
   if (!s.inside) return 1.0;
-  float bias = shadow_bias(light, shadow_params, s, normal, direction_to_light(light, world));
+  float bias = shadow_bias(light, shadow_params, s, normal, direction_to_light(light, world),
+                           SHADOW_TECHNIQUE >= TECHNIQUE_VSM && !reference
+                               ? shadow_params.blur_radius : 0);
+  if (reference) {
+    return filtered_hard_reference(i, s.uv, ReceiverPlane(s.position, normal, s.depth, bias));
+  }
 #if SHADOW_TECHNIQUE == TECHNIQUE_HARD
   return shadow_hard(shadow_depth[i], s.uv, s.depth, bias);
 #else
@@ -64,11 +126,12 @@ float shadow_factor(int i, vec3 world, vec3 normal) {
   return shadow_vsm(m.xy, z, shadow_params.vsm_min_variance, shadow_params.bleed_reduction);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_ESM
   return shadow_esm(m.x, z, shadow_params.esm_c);
-#elif SHADOW_TECHNIQUE == TECHNIQUE_MSM
-  float g = msm_hamburger(m, z, shadow_params.msm_alpha);
-  return reduce_light_bleeding(1.0 - g, shadow_params.bleed_reduction);
-#elif SHADOW_TECHNIQUE == TECHNIQUE_MSM16
+#else  // msm, msm16
+#if MSM_QUANTIZED
   float g = msm_hamburger16(msm_dequantize(m), z, shadow_params.msm_alpha);
+#else
+  float g = msm_hamburger(m, z, shadow_params.msm_alpha);
+#endif
   return reduce_light_bleeding(1.0 - g, shadow_params.bleed_reduction);
 #endif
 #endif
@@ -98,7 +161,8 @@ void main() {
   int view = frame.options.y;
   if (normal_shininess.w == 0.0) {  // background
     out_color = view == VIEW_FINAL ? vec4(frame.ambient.rgb * 0.5, 0.0)
-                                   : vec4(view == VIEW_SHADOW ? vec3(1.0) : vec3(0.0), 0.0);
+                                   : vec4(view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE
+                                              ? vec3(1.0) : vec3(0.0), 0.0);
     return;
   }
   vec3 n = normalize(normal_shininess.xyz);
@@ -113,8 +177,14 @@ void main() {
     out_color = vec4(albedo, 1.0);
     return;
   }
-  if (view == VIEW_SHADOW) {
-    out_color = vec4(vec3(shadow_factor(frame.options.z, world, n)), 1.0);
+  if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {
+    // Surfaces facing away from the light receive none of it (an attached
+    // shadow, as a traced shadow ray would find); elsewhere the shadow map
+    // decides.
+    int i = frame.options.z;
+    bool faces_light = dot(n, direction_to_light(lights[i], world)) > 0.0;
+    float lit = faces_light ? shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE) : 0.0;
+    out_color = vec4(vec3(lit), 1.0);
     return;
   }
 
@@ -131,7 +201,7 @@ void main() {
     // Normalized Blinn-Phong: (s + 8) / 8 keeps the highlight's energy
     // constant as the exponent changes (Akenine-Moller et al., RTR 4th ed.).
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
-    color += shadow_factor(i, world, n) * irradiance * n_dot_l * brdf;
+    color += shadow_factor(i, world, n, false) * irradiance * n_dot_l * brdf;
   }
   out_color = vec4(color, 1.0);
 }

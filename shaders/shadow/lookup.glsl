@@ -2,7 +2,8 @@
 // bias its depth comparison needs.
 
 struct ShadowLookup {
-  vec2 uv;      // shadow-map coordinates, in [0, 1] inside the map
+  vec3 position;  // the looked-up point: the surface point moved by the normal offset
+  vec2 uv;        // shadow-map coordinates, in [0, 1] inside the map
   float depth;  // receiver's relative depth z-bar
   float texel;  // world size of one shadow-map texel at the receiver
   bool inside;  // false outside the light's frustum: treated as lit
@@ -33,6 +34,7 @@ ShadowLookup shadow_lookup(GpuLight light, vec3 world, vec3 normal, float normal
   vec3 p = world + normal * (normal_offset * texel);
   vec4 clip = light.view_projection * vec4(p, 1.0);
   ShadowLookup s;
+  s.position = p;
   s.uv = clip.xy / clip.w * 0.5 + 0.5;
   float z = light_linear_depth(light, p);
   s.depth = (z - light.depth_range.x) / (light.depth_range.y - light.depth_range.x);
@@ -46,9 +48,34 @@ ShadowLookup shadow_lookup(GpuLight light, vec3 world, vec3 normal, float normal
 // receiver's depth change across one texel, tan(theta) * texel, where theta
 // is the angle between its normal and the direction to the light; tan is
 // capped so that grazing surfaces do not push the bias to infinity.
-float shadow_bias(GpuLight light, GpuShadow params, ShadowLookup s, vec3 normal, vec3 to_light) {
+// A filter of radius W texels spreads a planar receiver's own depth over
+// +-W texels of that slope; the filtered techniques compare against the
+// whole spread, so their slope term grows by filter_slope_bias per texel
+// of radius (W = 0 for the techniques that test single texels).
+float shadow_bias(GpuLight light, GpuShadow params, ShadowLookup s, vec3 normal, vec3 to_light,
+                  int filter_radius) {
   float cos_theta = clamp(abs(dot(normal, to_light)), 1e-4, 1.0);
   float tan_theta = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, params.max_slope);
   float depth_span = light.depth_range.y - light.depth_range.x;
-  return params.constant_bias + params.slope_bias * tan_theta * s.texel / depth_span;
+  float slope_texels = params.slope_bias + params.filter_slope_bias * float(filter_radius);
+  return params.constant_bias + slope_texels * tan_theta * s.texel / depth_span;
+}
+
+// Relative depth at which the light's ray through shadow-map point uv meets
+// the receiver's tangent plane (through `world`, normal `normal`). Tests
+// over a filter window compare each texel with this depth rather than the
+// centre's, so a sloped receiver does not shadow itself (receiver-plane
+// depth, after Isidoro 2006, evaluated exactly by ray-plane intersection).
+float receiver_plane_depth(GpuLight light, vec3 world, vec3 normal, vec2 uv, float fallback) {
+  vec4 near_h = light.inverse_view_projection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
+  vec4 far_h = light.inverse_view_projection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
+  vec3 origin = near_h.xyz / near_h.w;
+  vec3 direction = far_h.xyz / far_h.w - origin;
+  float denominator = dot(normal, direction);
+  if (abs(denominator) < 1e-8) return fallback;  // ray along the plane
+  float t = dot(normal, world - origin) / denominator;
+  if (t <= 0.0) return fallback;
+  vec3 hit = origin + t * direction;
+  float z = light_linear_depth(light, hit);
+  return (z - light.depth_range.x) / (light.depth_range.y - light.depth_range.x);
 }

@@ -38,6 +38,7 @@
 #define VIEW_SHADOW 1
 #define VIEW_NORMALS 2
 #define VIEW_ALBEDO 3
+#define VIEW_SHADOW_REFERENCE 4
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 #define TECHNIQUE_NONE 0

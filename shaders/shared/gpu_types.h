@@ -16,6 +16,7 @@ using mat4 = glm::mat4;
 struct GpuLight {
   mat4 view;                 // world -> light view (light looks down -z)
   mat4 view_projection;      // world -> light clip space
+  mat4 inverse_view_projection;  // light clip space -> world
   vec4 position_type;        // xyz: position (spot); w: LIGHT_SPOT or LIGHT_DIRECTIONAL
   vec4 direction_cos_outer;  // xyz: unit direction the light shines along; w: cos(outer cone)
   vec4 radiance_cos_inner;   // rgb: colour * intensity; w: cos(inner cone)
@@ -49,8 +50,8 @@ struct GpuShadow {
   float vsm_min_variance;
   int blur_radius;  // texels
   float sat_scale;  // fixed-point scale of the summed-area table (values * scale)
-  float unused0;
-  float unused1;
+  float filter_slope_bias;  // extra slope-scaled bias per texel of filter radius
+  float unused;
 };
 
 #ifdef __cplusplus

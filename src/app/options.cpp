@@ -65,7 +65,10 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
   named.view = std::string(enum_name<View>(kViewNames, settings.view));
   app.add_option("--view", named.view,
                  "what to write: " + choices(kViewNames) +
-                     " (shadow: the shadow factor, 1 = lit; shadow-map: the light's relative "
+                     " (shadow: the shadow factor, 1 = lit, 0 on surfaces facing away from the light; "
+                     "shadow-reference: what a filtered technique "
+                     "approximates, the unfiltered map's depth tests averaged with the same "
+                     "filter kernel; shadow-map: the light's relative "
                      "depth z-bar; moments, moments-filtered: the technique's map before and "
                      "after the filter, as colour; for esm, log(map)/c + 1, in depth units)")
       ->capture_default_str();

@@ -35,11 +35,21 @@ inline constexpr std::array<std::pair<Filter, std::string_view>, 2> kFilterNames
     {Filter::Sat, "sat"},
 }};
 
-enum class View { Final, Shadow, ShadowMap, Moments, MomentsFiltered, Normals, Albedo };
+enum class View {
+  Final,
+  Shadow,
+  ShadowReference,
+  ShadowMap,
+  Moments,
+  MomentsFiltered,
+  Normals,
+  Albedo
+};
 
-inline constexpr std::array<std::pair<View, std::string_view>, 7> kViewNames{{
+inline constexpr std::array<std::pair<View, std::string_view>, 8> kViewNames{{
     {View::Final, "final"},
     {View::Shadow, "shadow"},
+    {View::ShadowReference, "shadow-reference"},
     {View::ShadowMap, "shadow-map"},
     {View::Moments, "moments"},
     {View::MomentsFiltered, "moments-filtered"},
@@ -62,6 +72,11 @@ struct ShadowSettings {
   float slope_bias = 1.5f;
   // Largest tan(angle to the light) the slope-scaled bias follows.
   float max_slope = 10.0f;
+  // Filtered techniques (vsm, esm, msm, msm16): extra slope-scaled bias per
+  // texel of filter radius W, since a filter spreads a planar receiver's
+  // own depth over +-W texels of its slope. Without it, MSM darkens sloped
+  // lit surfaces under wide filters (measured on the default scene).
+  float filter_slope_bias = 0.25f;
   // Normal offset: the lookup moves this many texels along the surface normal.
   float normal_offset = 0.5f;
   // Width of the light source in world units (0: a point light, hard shadows).
@@ -113,13 +128,16 @@ inline constexpr int kMaxImageSize = 16384;
 inline constexpr float kEsmMaxC = 87.0f;
 inline constexpr int kMaxBlur = 64;
 
-inline constexpr std::array<NumericParam<ShadowSettings, float>, 10> kShadowFloatParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, float>, 11> kShadowFloatParams{{
     {"constant-bias", "constant depth bias, in relative light depth z-bar", 0.0f, 0.1f,
      &ShadowSettings::constant_bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
      &ShadowSettings::slope_bias},
     {"max-slope", "largest slope tan(theta) the slope-scaled bias follows", 0.0f, 1000.0f,
      &ShadowSettings::max_slope},
+    {"filter-slope-bias",
+     "filtered techniques: extra slope-scaled bias per texel of filter radius", 0.0f, 4.0f,
+     &ShadowSettings::filter_slope_bias},
     {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
      &ShadowSettings::normal_offset},
     {"light-size", "width of the light source in world units (0: point light)", 0.0f, 100.0f,

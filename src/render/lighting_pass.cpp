@@ -19,7 +19,8 @@ const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(key.first)},
-                           {"SHADOW_FILTER", std::to_string(key.second)}};
+                           {"SHADOW_FILTER", std::to_string(key.second)},
+                           {"MSM_QUANTIZED", uses_quantized_moments(settings) ? "1" : "0"}};
     it = programs_
              .emplace(key, gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
                                                  defines))

@@ -8,13 +8,14 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "filter/gaussian.hpp"
 #include "shadow/representation.hpp"
 #include "shared/bindings.h"
 #include "shared/gpu_types.h"
 
 namespace penumbra {
 
-static_assert(sizeof(gpu::GpuLight) == 2 * 64 + 4 * 16, "GpuLight must match std140");
+static_assert(sizeof(gpu::GpuLight) == 3 * 64 + 4 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
 static_assert(sizeof(gpu::GpuShadow) == 48, "GpuShadow must match std140");
 
@@ -24,6 +25,7 @@ gpu::GpuLight to_gpu(const Light& light, const LightView& view, int map_size) {
   gpu::GpuLight g{};
   g.view = view.view;
   g.view_projection = view.view_projection;
+  g.inverse_view_projection = glm::inverse(view.view_projection);
   const bool spot = light.type == LightType::Spot;
   g.position_type = glm::vec4(light.position, spot ? LIGHT_SPOT : LIGHT_DIRECTIONAL);
   g.direction_cos_outer =
@@ -61,6 +63,7 @@ Image read_texture(GLuint texture, int width, int height, GLenum format) {
 int view_define(View view) {
   switch (view) {
     case View::Shadow: return VIEW_SHADOW;
+    case View::ShadowReference: return VIEW_SHADOW_REFERENCE;
     case View::Normals: return VIEW_NORMALS;
     case View::Albedo: return VIEW_ALBEDO;
     default: return VIEW_FINAL;
@@ -76,7 +79,9 @@ Renderer::Renderer(const Scene& scene)
       gpu_scene_(scene_, mesh_),
       frame_ubo_(sizeof(gpu::GpuFrame), nullptr, true, "frame block"),
       lights_ubo_(sizeof(gpu::GpuLight) * MAX_LIGHTS, nullptr, true, "lights block"),
-      shadow_ubo_(sizeof(gpu::GpuShadow), nullptr, true, "shadow block") {
+      shadow_ubo_(sizeof(gpu::GpuShadow), nullptr, true, "shadow block"),
+      reference_weights_(sizeof(float) * (2 * kMaxBlur + 1), nullptr, true,
+                         "reference filter weights") {
   if (scene_.lights.size() > MAX_LIGHTS) {
     throw UsageError("scene '" + scene_.name + "' has " + std::to_string(scene_.lights.size()) +
                      " lights; at most " + std::to_string(MAX_LIGHTS) + " are supported");
@@ -121,7 +126,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   }
   const int light_count = static_cast<int>(scene_.lights.size());
   if (render.light_index >= light_count &&
-      (render.view == View::Shadow || is_map_view(render.view))) {
+      (render.view == View::Shadow || render.view == View::ShadowReference ||
+       is_map_view(render.view))) {
     throw UsageError("--light-index " + std::to_string(render.light_index) + ": scene '" +
                      scene_.name + "' has " + std::to_string(light_count) + " light(s)");
   }
@@ -161,14 +167,13 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.max_slope = shadow.max_slope;
   shadow_block.esm_c = shadow.esm_c;
   // The fixed-point summed-area table keeps 17 bits per value, about what
-  // the 16-bit moments keep: both need the larger moment bias.
-  const bool coarse_moments =
-      shadow.technique == Technique::Msm16 || filter_define(shadow) == FILTER_SAT;
-  shadow_block.msm_alpha = coarse_moments ? shadow.msm16_alpha : shadow.msm_alpha;
+  // 16-bit moments keep: both need the larger moment bias.
+  shadow_block.msm_alpha = uses_quantized_moments(shadow) ? shadow.msm16_alpha : shadow.msm_alpha;
   shadow_block.bleed_reduction = shadow.bleed_reduction;
   shadow_block.vsm_min_variance = shadow.vsm_min_variance;
   shadow_block.blur_radius = shadow.blur;
   shadow_block.sat_scale = static_cast<float>(sat_fixed_point_scale());
+  shadow_block.filter_slope_bias = shadow.filter_slope_bias;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
@@ -182,7 +187,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if (is_filterable(shadow.technique)) {
     const int filter = filter_define(shadow);
     for (int i = 0; i < light_count; ++i) {
-      resolve_pass_.execute(i, shadow_pass_.depth_map(i), shadow.technique, shadow.esm_c);
+      resolve_pass_.execute(i, shadow_pass_.depth_map(i), shadow);
       const gl::Texture& representation = resolve_pass_.representation(i);
       GLuint map = representation.id();
       if (filter == FILTER_GAUSSIAN) {
@@ -194,6 +199,16 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       }
       filtered[static_cast<std::size_t>(i)] = map;
     }
+  }
+  if (render.view == View::ShadowReference) {
+    // The kernel the filter applies, as 1D weights for the reference's
+    // brute-force average of depth tests.
+    std::vector<float> weights = shadow.filter == Filter::Sat
+                                     ? std::vector<float>(2 * static_cast<std::size_t>(shadow.blur) + 1, 1.0f)
+                                     : gaussian_weights(is_filterable(shadow.technique) ? shadow.blur : 0);
+    reference_weights_.update(weights.data(), weights.size() * sizeof(float));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO,
+                     reference_weights_.id());
   }
   if (!is_map_view(render.view)) {
     gbuffer_pass_.execute(gpu_scene_, render.width, render.height);

@@ -56,6 +56,7 @@ class Renderer {
   GBufferPass gbuffer_pass_;
   LightingPass lighting_pass_;
   gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_;
+  gl::Buffer reference_weights_;
   std::vector<LightView> light_views_;
   RenderSettings last_render_;
   ShadowSettings last_shadow_;

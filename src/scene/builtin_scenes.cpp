@@ -56,7 +56,7 @@ Scene default_scene() {
   pole.height = 3.0f;
   scene.shapes.push_back(pole);
 
-  Shape slab = make(ShapeKind::Box, {1.2f, 3.6f, -1.8f}, 5);  // flat, high: wide penumbra
+  Shape slab = make(ShapeKind::Box, {1.0f, 3.8f, 2.0f}, 5);  // flat, high: wide penumbra
   slab.size = {1.8f, 0.12f, 1.2f};
   slab.rotation_degrees = {0.0f, -15.0f, 0.0f};
   scene.shapes.push_back(slab);

@@ -14,13 +14,13 @@ class MomentResolvePass {
  public:
   // Writes light `light`'s representation. Textures are reallocated only
   // when the size or format changes.
-  void execute(int light, const gl::Texture& depth_map, Technique technique, float esm_c);
+  void execute(int light, const gl::Texture& depth_map, const ShadowSettings& settings);
 
   // Valid after execute() for that light.
   [[nodiscard]] const gl::Texture& representation(int light) const { return maps_.at(light); }
 
  private:
-  std::map<Technique, gl::Program> programs_;
+  std::map<std::pair<Technique, bool>, gl::Program> programs_;  // (technique, quantized)
   std::vector<gl::Texture> maps_;
 };
 

@@ -22,6 +22,11 @@ int filter_define(const ShadowSettings& settings) {
   return settings.filter == Filter::Sat ? FILTER_SAT : FILTER_GAUSSIAN;
 }
 
+bool uses_quantized_moments(const ShadowSettings& settings) {
+  return settings.technique == Technique::Msm16 ||
+         (settings.technique == Technique::Msm && filter_define(settings) == FILTER_SAT);
+}
+
 GLenum representation_format(Technique technique) {
   switch (technique) {
     case Technique::Vsm: return GL_RG32F;

@@ -15,6 +15,12 @@ int technique_define(Technique technique);
 // The value of the SHADOW_FILTER define (FILTER_*) for the shadow settings.
 int filter_define(const ShadowSettings& settings);
 
+// Whether the map holds the moments in the optimized quantization basis of
+// Peters & Klein 2015 (msm_quantize): always for msm16, and for msm summed
+// in the fixed-point summed-area table, where the basis spreads the
+// moments over [0, 1] and so keeps more of their bits.
+bool uses_quantized_moments(const ShadowSettings& settings);
+
 // Sized internal format of the technique's map: vsm RG32F (z, z^2),
 // esm R32F exp(c (z - 1)), msm RGBA32F (z, z^2, z^3, z^4), msm16 RGBA16
 // (the quantized moments). Only for filterable techniques.

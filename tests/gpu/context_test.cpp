@@ -1,4 +1,6 @@
+#include <map>
 #include <string>
+#include <vector>
 
 #include "gl/embedded_shaders.hpp"
 #include "gl/program.hpp"
@@ -32,31 +34,52 @@ TEST_F(GpuTest, DebugOutputCountsErrors) {
   SetUp();
 }
 
-// Every shader entry point compiles and links (compute shaders alone, the
-// others as the vertex/fragment pairs the passes use).
+// Every shader entry point compiles and links, with the defines its pass
+// compiles it with: compute shaders alone, the others as the pairs the
+// passes use, and the lighting pass for every technique and filter.
 TEST_F(GpuTest, EveryShaderCompiles) {
   shared_context();
-  int compiled = 0;
+  const std::map<std::string, std::vector<gl::Defines>> compute = {
+      {"filter/resolve.comp",
+       {{{"REPRESENTATION", "2"}, {"MSM_QUANTIZED", "0"}, {"IMAGE_FORMAT", "rg32f"}},
+        {{"REPRESENTATION", "3"}, {"MSM_QUANTIZED", "0"}, {"IMAGE_FORMAT", "r32f"}},
+        {{"REPRESENTATION", "4"}, {"MSM_QUANTIZED", "0"}, {"IMAGE_FORMAT", "rgba32f"}},
+        {{"REPRESENTATION", "4"}, {"MSM_QUANTIZED", "1"}, {"IMAGE_FORMAT", "rgba32f"}},
+        {{"REPRESENTATION", "5"}, {"MSM_QUANTIZED", "1"}, {"IMAGE_FORMAT", "rgba16"}}}},
+      {"filter/gaussian_blur.comp",
+       {{{"AXIS", "0"}, {"RADIUS", "1"}, {"IMAGE_FORMAT", "rgba16"}},
+        {{"AXIS", "1"}, {"RADIUS", "64"}, {"IMAGE_FORMAT", "rgba32f"}}}},
+      {"filter/sat_rows.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "rg32ui"}}}},
+      {"filter/sat_columns.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "r32ui"}}}},
+      {"filter/sat_box.comp", {{}}},
+      {"test/shadow_math.comp", {{}}},
+  };
   for (const gl::EmbeddedFile& file : gl::embedded_shader_files()) {
     const std::string path(file.path);
-    if (path.ends_with(".comp")) {
-      EXPECT_NO_THROW(gl::Program::compute(path)) << path;
-      ++compiled;
+    if (!path.ends_with(".comp")) continue;
+    auto it = compute.find(path);
+    ASSERT_NE(it, compute.end()) << path << ": add it to this test with its defines";
+    for (const gl::Defines& defines : it->second) {
+      EXPECT_NO_THROW(gl::Program::compute(path, defines)) << path;
     }
   }
   const char* pairs[][2] = {{"shadow/shadow_depth.vert", "shadow/shadow_depth.frag"},
                             {"scene/gbuffer.vert", "scene/gbuffer.frag"}};
   for (auto& pair : pairs) {
     EXPECT_NO_THROW(gl::Program::graphics(pair[0], pair[1])) << pair[0] << " + " << pair[1];
-    ++compiled;
   }
-  for (int technique : {0, 1}) {
-    EXPECT_NO_THROW(gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
-                                          {{"SHADOW_TECHNIQUE", std::to_string(technique)}}))
-        << "lighting, technique " << technique;
-    ++compiled;
+  for (int technique = 0; technique <= 5; ++technique) {
+    for (int filter = 0; filter <= 2; ++filter) {
+      for (const char* quantized : {"0", "1"}) {
+        EXPECT_NO_THROW(gl::Program::graphics(
+            "common/fullscreen.vert", "render/lighting.frag",
+            {{"SHADOW_TECHNIQUE", std::to_string(technique)},
+             {"SHADOW_FILTER", std::to_string(filter)},
+             {"MSM_QUANTIZED", quantized}}))
+            << "lighting, technique " << technique << ", filter " << filter;
+      }
+    }
   }
-  EXPECT_GE(compiled, 4);
 }
 
 }  // namespace

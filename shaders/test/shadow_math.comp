@@ -1,0 +1,61 @@
+// Test kernel: evaluates the shadow-factor includes on a buffer of inputs,
+// so that tests/gpu/moment_shader_test.cpp can compare them with the
+// double-precision references in src/shadow/moment_math.cpp.
+#include "../shadow/msm.glsl"
+#include "../shadow/vsm.glsl"
+#include "../shadow/esm.glsl"
+
+layout(local_size_x = 64) in;
+
+// What each mode reads from a case (a, b, c) and writes to its result r.
+#define MODE_MSM 0         // a: moments; b.xy: (z_f, alpha); c: bias vector
+                           // r = (msm_hamburger, msm_hamburger16, msm_hamburger(.., c), 0)
+#define MODE_VSM 1         // a.xy: moments; b: (z_f, min variance, bleed reduction)
+                           // r.x = shadow_vsm
+#define MODE_ESM 2         // b: (filtered, z_f, c); r = (shadow_esm, esm_encode(z_f, c), 0, 0)
+#define MODE_QUANTIZE 3    // a: moments; r = msm_quantize(a)
+#define MODE_DEQUANTIZE 4  // a: quantized; r = msm_dequantize(a)
+#define MODE_BLEEDING 5    // b.xy: (lit, amount); r.x = reduce_light_bleeding
+
+struct Case {
+  vec4 a;
+  vec4 b;
+  vec4 c;
+};
+
+layout(std430, binding = 0) readonly buffer Cases { Case cases[]; };
+layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
+
+layout(location = 0) uniform int mode;
+layout(location = 1) uniform uint count;
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= count) return;
+  Case k = cases[i];
+  vec4 r = vec4(0.0);
+  switch (mode) {
+    case MODE_MSM:
+      r.x = msm_hamburger(k.a, k.b.x, k.b.y);
+      r.y = msm_hamburger16(k.a, k.b.x, k.b.y);
+      r.z = msm_hamburger(k.a, k.b.x, k.b.y, k.c);
+      break;
+    case MODE_VSM:
+      r.x = shadow_vsm(k.a.xy, k.b.x, k.b.y, k.b.z);
+      break;
+    case MODE_ESM:
+      r.x = shadow_esm(k.b.x, k.b.y, k.b.z);
+      r.y = esm_encode(k.b.y, k.b.z);
+      break;
+    case MODE_QUANTIZE:
+      r = msm_quantize(k.a);
+      break;
+    case MODE_DEQUANTIZE:
+      r = msm_dequantize(k.a);
+      break;
+    case MODE_BLEEDING:
+      r.x = reduce_light_bleeding(k.b.x, k.b.y);
+      break;
+  }
+  results[i] = r;
+}

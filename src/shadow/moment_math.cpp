@@ -1,0 +1,94 @@
+#include "shadow/moment_math.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra {
+
+namespace {
+
+// det[a b c] for column vectors a, b, c.
+double det3(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  return a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) +
+         a.z * (b.x * c.y - b.y * c.x);
+}
+
+}  // namespace
+
+double msm_hamburger_reference(glm::dvec4 b, double z_f, double alpha, glm::dvec4 bias_vector) {
+  // 1. Pull the moments toward the bias vector.
+  const glm::dvec4 m = (1.0 - alpha) * b + alpha * bias_vector;
+  // 2. Cramer's rule on the symmetric Hankel matrix with columns A, B, C.
+  const glm::dvec3 col_a{1.0, m.x, m.y};
+  const glm::dvec3 col_b{m.x, m.y, m.z};
+  const glm::dvec3 col_c{m.y, m.z, m.w};
+  const glm::dvec3 rhs{1.0, z_f, z_f * z_f};
+  const double d = det3(col_a, col_b, col_c);
+  const double c1 = det3(rhs, col_b, col_c) / d;
+  const double c2 = det3(col_a, rhs, col_c) / d;
+  const double c3 = det3(col_a, col_b, rhs) / d;
+  // 3. Roots z2 <= z3 of c3 z^2 + c2 z + c1.
+  const double root = std::sqrt(std::max(c2 * c2 - 4.0 * c3 * c1, 0.0));
+  double z2 = (-c2 - root) / (2.0 * c3);
+  double z3 = (-c2 + root) / (2.0 * c3);
+  if (z2 > z3) std::swap(z2, z3);
+  // 4.-6.
+  double g;
+  if (z_f <= z2) {
+    g = 0.0;
+  } else if (z_f <= z3) {
+    g = (z_f * z3 - m.x * (z_f + z3) + m.y) / ((z3 - z2) * (z_f - z2));
+  } else {
+    g = 1.0 - (z2 * z3 - m.x * (z2 + z3) + m.y) / ((z_f - z2) * (z_f - z3));
+  }
+  return std::clamp(g, 0.0, 1.0);
+}
+
+double reduce_light_bleeding_reference(double lit, double amount) {
+  if (amount <= 0.0) return std::clamp(lit, 0.0, 1.0);
+  if (amount >= 1.0) return lit >= 1.0 ? 1.0 : 0.0;
+  return std::clamp((lit - amount) / (1.0 - amount), 0.0, 1.0);
+}
+
+double vsm_reference(glm::dvec2 moments, double receiver_depth, double min_variance,
+                     double bleed_reduction) {
+  const double mu = moments.x;
+  if (receiver_depth <= mu) return 1.0;
+  const double sigma2 = std::max(moments.y - mu * mu, min_variance);
+  const double t = receiver_depth - mu;
+  return reduce_light_bleeding_reference(sigma2 / (sigma2 + t * t), bleed_reduction);
+}
+
+double esm_reference(double filtered, double receiver_depth, double c) {
+  // In double, exp(c) for c <= 87 is far from overflow: evaluate directly.
+  const double occluder = std::max(filtered, std::exp(-c));
+  return std::min(1.0, occluder * std::exp(-c * (receiver_depth - 1.0)));
+}
+
+// Seed 002, matrix form, for moments u of z' in [-1, 1]:
+//   R = 3/2 u1 - 2 u3 + 1/2, G = 4 u2 - 4 u4,
+//   B = sqrt(3)/2 u1 - sqrt(12)/9 u3 + 1/2, A = (u2 + u4) / 2.
+glm::vec4 msm_quantize(glm::vec4 b) {
+  const glm::vec4 u{2.0f * b.x - 1.0f, 4.0f * b.y - 4.0f * b.x + 1.0f,
+                    8.0f * b.z - 12.0f * b.y + 6.0f * b.x - 1.0f,
+                    16.0f * b.w - 32.0f * b.z + 24.0f * b.y - 8.0f * b.x + 1.0f};
+  const float sqrt3_2 = 0.8660254037844386f;
+  const float sqrt12_9 = 0.3849001794597505f;
+  const glm::vec4 q{1.5f * u.x - 2.0f * u.z + 0.5f, 4.0f * u.y - 4.0f * u.w,
+                    sqrt3_2 * u.x - sqrt12_9 * u.z + 0.5f, 0.5f * u.y + 0.5f * u.w};
+  return glm::clamp(q, 0.0f, 1.0f);
+}
+
+// The inverse (seed 002): u1 = -(R - 1/2) / 3 + sqrt(3) (B - 1/2),
+// u2 = G / 8 + A, u3 = -3/4 (R - 1/2) + 3 sqrt(3) / 4 (B - 1/2), u4 = -G / 8 + A.
+glm::vec4 msm_dequantize(glm::vec4 q) {
+  const float r = q.x - 0.5f, g = q.y, bl = q.z - 0.5f, a = q.w;
+  const float sqrt3 = 1.7320508075688772f;
+  const glm::vec4 u{-r / 3.0f + sqrt3 * bl, 0.125f * g + a, -0.75f * r + 0.75f * sqrt3 * bl,
+                    -0.125f * g + a};
+  return {(u.x + 1.0f) * 0.5f, (u.y + 2.0f * u.x + 1.0f) * 0.25f,
+          (u.z + 3.0f * u.y + 3.0f * u.x + 1.0f) * 0.125f,
+          (u.w + 4.0f * u.z + 6.0f * u.y + 4.0f * u.x + 1.0f) * 0.0625f};
+}
+
+}  // namespace penumbra

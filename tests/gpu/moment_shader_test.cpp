@@ -1,0 +1,350 @@
+// The shadow-factor includes (shaders/shadow/{msm,vsm,esm,bleeding}.glsl),
+// run on the GPU through shaders/test/shadow_math.comp, against the
+// double-precision references of src/shadow/moment_math.cpp.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <span>
+#include <vector>
+
+#include "gl/program.hpp"
+#include "gl/resources.hpp"
+#include "gpu_fixture.hpp"
+#include "shadow/moment_math.hpp"
+
+namespace penumbra {
+namespace {
+
+using testing::GpuTest;
+using testing::shared_context;
+
+// Mirrors shaders/test/shadow_math.comp.
+enum Mode : int { kMsm = 0, kVsm = 1, kEsm = 2, kQuantize = 3, kDequantize = 4, kBleeding = 5 };
+
+struct Case {
+  glm::vec4 a{0.0f};
+  glm::vec4 b{0.0f};
+  glm::vec4 c{0.0f};
+};
+static_assert(sizeof(Case) == 48);
+
+std::vector<glm::vec4> run_kernel(Mode mode, const std::vector<Case>& cases) {
+  shared_context();
+  static gl::Program program = gl::Program::compute("test/shadow_math.comp");
+  gl::Buffer input = gl::Buffer::from(std::span<const Case>(cases), "shadow math cases");
+  gl::Buffer output(cases.size() * sizeof(glm::vec4), nullptr, false, "shadow math results");
+  program.use();
+  glProgramUniform1i(program.id(), 0, mode);
+  glProgramUniform1ui(program.id(), 1, static_cast<GLuint>(cases.size()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
+  glDispatchCompute(static_cast<GLuint>((cases.size() + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<glm::vec4> results(cases.size());
+  glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(output.size()), results.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  return results;
+}
+
+bool finite(const glm::vec4& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+glm::dvec4 moments_of(double z) {
+  return {z, z * z, z * z * z, z * z * z * z};
+}
+
+// Moments of a random mixture of 1-4 depths in [0, 1] with random weights.
+glm::dvec4 random_moments(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const int n = std::uniform_int_distribution<int>(1, 4)(rng);
+  glm::dvec4 b(0.0);
+  double total = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double w = u01(rng) + 1e-3;
+    b += w * moments_of(u01(rng));
+    total += w;
+  }
+  return b / total;
+}
+
+constexpr int kCount = 10000;
+
+// 10,000 random moment vectors and receivers: the shader (float, Cholesky)
+// against the reference (double, Cramer's rule) on the same float inputs.
+TEST_F(GpuTest, MsmHamburgerMatchesDoubleReference) {
+  std::mt19937 rng(2015);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const double alpha32 = 3e-5, alpha16 = 6e-5;
+  const glm::vec4 custom_bias(0.5f, 0.3f, 0.2f, 0.15f);
+  std::vector<Case> cases(kCount);
+  for (Case& k : cases) {
+    k.a = glm::vec4(random_moments(rng));
+    k.b = glm::vec4(float(u01(rng)), float(alpha32), 0.0f, 0.0f);
+    k.c = custom_bias;
+  }
+  // Second half: the 16-bit path's alpha on the same kind of input.
+  for (std::size_t i = kCount / 2; i < cases.size(); ++i) cases[i].b.y = float(alpha16);
+  const std::vector<glm::vec4> gpu = run_kernel(kMsm, cases);
+
+  // The reference's own spread when each input moment moves by 2 float
+  // ulps: the error that storing these moments as float32 already makes.
+  auto input_sensitivity = [](const glm::dvec4& b, double z_f, double alpha, const glm::dvec4& bias,
+                              double g) {
+    double spread = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      for (double e : {-2.4e-7, 2.4e-7}) {
+        glm::dvec4 perturbed = b;
+        perturbed[k] *= 1.0 + e;
+        spread =
+            std::max(spread, std::abs(msm_hamburger_reference(perturbed, z_f, alpha, bias) - g));
+      }
+    }
+    return spread;
+  };
+  const char* names[] = {"32-bit bias", "16-bit bias", "custom bias"};
+  const glm::dvec4 biases[] = {kMsmBias32, kMsmBias16, glm::dvec4(custom_bias)};
+  for (int column = 0; column < 3; ++column) {
+    std::vector<double> errors;
+    double max_error = 0.0, max_excess = 0.0, max_sensitivity = 0.0;
+    int ill_conditioned = 0;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      ASSERT_TRUE(finite(gpu[i])) << i;
+      const glm::dvec4 b(cases[i].a);
+      const double z_f = cases[i].b.x, alpha = cases[i].b.y;
+      const double g = msm_hamburger_reference(b, z_f, alpha, biases[column]);
+      const double error = std::abs(gpu[i][column] - g);
+      errors.push_back(error);
+      max_error = std::max(max_error, error);
+      if (error > 1e-4) {
+        const double sensitivity = input_sensitivity(b, z_f, alpha, biases[column], g);
+        max_sensitivity = std::max(max_sensitivity, sensitivity);
+        ill_conditioned += sensitivity > 1e-3;
+        max_excess = std::max(max_excess, error - sensitivity);
+      }
+    }
+    std::sort(errors.begin(), errors.end());
+    const double p99 = errors[errors.size() * 99 / 100], p999 = errors[errors.size() * 999 / 1000];
+    std::printf(
+        "msm_hamburger, %s, %d cases: |dG| 99%% <= %.2g, 99.9%% <= %.2g, max %.3g; "
+        "beyond the float32 input spread by at most %.2g (%d cases with a spread > 1e-3, "
+        "up to %.2g)\n",
+        names[column], kCount, p99, p999, max_error, max_excess, ill_conditioned, max_sensitivity);
+    EXPECT_LE(p99, 1e-3) << names[column];
+    EXPECT_LE(max_excess, 1e-3) << names[column];
+    EXPECT_LE(max_error, 5e-2) << names[column];
+  }
+}
+
+// Degenerate input: finite G in [0, 1], and the sensible answer where
+// there is one.
+TEST_F(GpuTest, MsmHamburgerIsFiniteOnDegenerateInput) {
+  const std::vector<glm::vec4> moments = {
+      glm::vec4(0.0f),                     // constant depth 0
+      glm::vec4(1.0f),                     // constant depth 1
+      glm::vec4(moments_of(0.5)),          // constant depth 0.5
+      glm::vec4(moments_of(0.3)),          //
+      glm::vec4(0.5f, 0.2f, 0.1f, 0.05f),  // negative variance: no distribution
+      glm::vec4(0.5f, 0.5f, 0.5f, 0.5f),   // the 32-bit bias itself (two atoms)
+      glm::vec4(0.5f, 0.25f, 0.0f, 1.0f),  // not a moment vector
+  };
+  const float receivers[] = {-0.5f, 0.0f, 0.3f, 0.5f, 1.0f, 1.5f};
+  const float alphas[] = {0.0f, 1e-7f, 3e-5f, 1e-3f};
+  std::vector<Case> cases;
+  for (const glm::vec4& b : moments) {
+    for (float z_f : receivers) {
+      for (float alpha : alphas) {
+        cases.push_back({b, glm::vec4(z_f, alpha, 0.0f, 0.0f), glm::vec4(0.5f)});
+      }
+    }
+  }
+  const std::vector<glm::vec4> gpu = run_kernel(kMsm, cases);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const glm::vec4& b = cases[i].a;
+    const float z_f = cases[i].b.x, alpha = cases[i].b.y;
+    ASSERT_TRUE(finite(gpu[i])) << "b = " << b.x << "," << b.y << "," << b.z << "," << b.w
+                                << " z_f = " << z_f << " alpha = " << alpha;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_GE(gpu[i][k], 0.0f);
+      EXPECT_LE(gpu[i][k], 1.0f);
+    }
+    // A single occluder depth d (the first four rows): the receiver 0.2 or
+    // more in front is lit, 0.2 or more behind is shadowed.
+    const std::size_t row = i / (std::size(receivers) * std::size(alphas));
+    if (row < 4 && alpha > 0.0f) {
+      const float d = b.x;
+      for (int k = 0; k < 2; ++k) {
+        if (z_f <= d - 0.2f) {
+          EXPECT_LE(gpu[i][k], 1e-3f) << "d " << d << " z_f " << z_f;
+        }
+        if (z_f >= d + 0.2f) {
+          EXPECT_GE(gpu[i][k], 1.0f - 1e-2f) << "d " << d << " z_f " << z_f;
+        }
+      }
+    }
+  }
+}
+
+TEST_F(GpuTest, MsmQuantizationMatchesCpuAndRoundTrips) {
+  std::mt19937 rng(16);
+  std::vector<Case> cases(kCount);
+  for (Case& k : cases) k.a = glm::vec4(random_moments(rng));
+  const std::vector<glm::vec4> quantized = run_kernel(kQuantize, cases);
+  std::vector<Case> stored(kCount);
+  double max_vs_cpu = 0.0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    ASSERT_TRUE(finite(quantized[i]));
+    const glm::vec4 cpu = msm_quantize(cases[i].a);
+    for (int k = 0; k < 4; ++k) {
+      ASSERT_GE(quantized[i][k], 0.0f);
+      ASSERT_LE(quantized[i][k], 1.0f);
+      max_vs_cpu = std::max(max_vs_cpu, double(std::abs(quantized[i][k] - cpu[k])));
+    }
+    stored[i].a = glm::round(quantized[i] * 65535.0f) / 65535.0f;  // RGBA16 UNORM
+  }
+  const std::vector<glm::vec4> restored = run_kernel(kDequantize, stored);
+  double max_round_trip = 0.0, max_dequantize_vs_cpu = 0.0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const glm::vec4 cpu = msm_dequantize(stored[i].a);
+    for (int k = 0; k < 4; ++k) {
+      max_round_trip = std::max(max_round_trip, double(std::abs(restored[i][k] - cases[i].a[k])));
+      max_dequantize_vs_cpu =
+          std::max(max_dequantize_vs_cpu, double(std::abs(restored[i][k] - cpu[k])));
+    }
+  }
+  std::printf(
+      "msm16 on GPU: quantize vs CPU %.3g, dequantize vs CPU %.3g, 16-bit round trip %.3g\n",
+      max_vs_cpu, max_dequantize_vs_cpu, max_round_trip);
+  EXPECT_LE(max_vs_cpu, 1e-5);
+  EXPECT_LE(max_dequantize_vs_cpu, 1e-6);
+  EXPECT_LE(max_round_trip, 1e-4);
+}
+
+// The whole 16-bit path on single occluder depths: quantize, round to
+// RGBA16 UNORM, dequantize, msm_hamburger16. A receiver 0.05 in front of
+// the occluder must stay lit and one 0.1 behind it shadowed, for alpha in
+// Peters' 16-bit range (a 32-bit-sized alpha is printed for comparison).
+TEST_F(GpuTest, Msm16PathSeparatesLitFromShadowed) {
+  std::vector<Case> cases;
+  const float alphas[] = {3e-6f, 3e-5f, 6e-5f};
+  for (float alpha : alphas) {
+    for (int i = 0; i <= 200; ++i) {
+      const double d = i / 200.0;
+      const glm::vec4 q = glm::round(msm_quantize(glm::vec4(moments_of(d))) * 65535.0f) / 65535.0f;
+      const glm::vec4 b = msm_dequantize(q);
+      if (d >= 0.05) cases.push_back({b, glm::vec4(float(d - 0.05), alpha, 1.0f, 0.0f), {}});
+      if (d <= 0.9) cases.push_back({b, glm::vec4(float(d + 0.1), alpha, 2.0f, 0.0f), {}});
+    }
+  }
+  const std::vector<glm::vec4> gpu = run_kernel(kMsm, cases);
+  for (float alpha : alphas) {
+    double max_front = 0.0, max_behind = 0.0;  // G in front, 1 - G behind
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      if (cases[i].b.y != alpha) continue;
+      ASSERT_TRUE(finite(gpu[i]));
+      if (cases[i].b.z == 1.0f) max_front = std::max(max_front, double(gpu[i].y));
+      if (cases[i].b.z == 2.0f) max_behind = std::max(max_behind, 1.0 - gpu[i].y);
+    }
+    std::printf("msm16 path, alpha = %g: max G 0.05 in front %.3g, max 1 - G 0.1 behind %.3g\n",
+                alpha, max_front, max_behind);
+    if (alpha >= 3e-5f) {
+      EXPECT_LE(max_front, 1e-3) << "alpha " << alpha;
+      EXPECT_LE(max_behind, 1e-2) << "alpha " << alpha;
+    }
+  }
+}
+
+TEST_F(GpuTest, VsmMatchesDoubleReference) {
+  std::mt19937 rng(2006);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  std::vector<Case> cases(kCount);
+  const float bleeds[] = {0.0f, 0.2f, 0.5f};
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const glm::dvec4 b = random_moments(rng);
+    cases[i].a = glm::vec4(float(b.x), float(b.y), 0.0f, 0.0f);
+    cases[i].b = glm::vec4(float(u01(rng)), i % 2 ? 1e-4f : 0.0f, bleeds[i % 3], 0.0f);
+  }
+  // Degenerate: zero variance with no floor, receiver on the mean.
+  cases.push_back({glm::vec4(0.5f, 0.25f, 0.0f, 0.0f), glm::vec4(0.5f, 0.0f, 0.0f, 0.0f), {}});
+  cases.push_back({glm::vec4(0.5f, 0.25f, 0.0f, 0.0f), glm::vec4(0.7f, 0.0f, 1.0f, 0.0f), {}});
+  const std::vector<glm::vec4> gpu = run_kernel(kVsm, cases);
+  // With no variance floor the bound is as ill-conditioned as M2 - M1^2;
+  // the floor (1e-4 by default) is what makes VSM stable in float.
+  double max_floored = 0.0, max_unfloored = 0.0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    ASSERT_TRUE(finite(gpu[i])) << i;
+    const Case& k = cases[i];
+    const double ref = vsm_reference(glm::dvec2(k.a.x, k.a.y), k.b.x, k.b.y, k.b.z);
+    double& max_error = k.b.y > 0.0f ? max_floored : max_unfloored;
+    max_error = std::max(max_error, std::abs(gpu[i].x - ref));
+  }
+  std::printf(
+      "shadow_vsm vs double reference: max error %.3g with min variance 1e-4, "
+      "%.3g with none\n",
+      max_floored, max_unfloored);
+  EXPECT_LE(max_floored, 5e-5);
+  EXPECT_LE(max_unfloored, 1e-3);
+}
+
+TEST_F(GpuTest, LightBleedingReductionIsALinstep) {
+  std::vector<Case> cases;
+  for (float amount : {0.0f, 0.2f, 0.5f, 1.0f}) {
+    for (float lit : {0.0f, 0.1f, 0.2f, 0.6f, 1.0f}) {
+      cases.push_back({glm::vec4(0.0f), glm::vec4(lit, amount, 0.0f, 0.0f), {}});
+    }
+  }
+  const std::vector<glm::vec4> gpu = run_kernel(kBleeding, cases);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const float lit = cases[i].b.x, amount = cases[i].b.y;
+    EXPECT_NEAR(gpu[i].x, reduce_light_bleeding_reference(lit, amount), 1e-6)
+        << "lit " << lit << " amount " << amount;
+  }
+}
+
+TEST_F(GpuTest, EsmMatchesDoubleReferenceWithoutOverflow) {
+  std::mt19937 rng(2008);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  std::vector<Case> cases;
+  for (float c : {1.0f, 60.0f, 87.0f}) {
+    for (float filtered : {0.0f, 1e-45f, 1e-38f, 1e-30f, 1.0f}) {
+      for (float z_f : {-0.5f, 0.0f, 0.5f, 1.0f, 1.5f}) {
+        cases.push_back({glm::vec4(0.0f), glm::vec4(filtered, z_f, c, 0.0f), {}});
+      }
+    }
+    // Filtered maps: a random mixture of occluder depths.
+    for (int i = 0; i < 1000; ++i) {
+      double filtered = 0.0, total = 0.0;
+      const int n = 1 + i % 4;
+      for (int j = 0; j < n; ++j) {
+        const double w = u01(rng) + 1e-3;
+        filtered += w * std::exp(double(c) * (u01(rng) - 1.0));
+        total += w;
+      }
+      cases.push_back(
+          {glm::vec4(0.0f), glm::vec4(float(filtered / total), float(u01(rng)), c, 0.0f), {}});
+    }
+  }
+  const std::vector<glm::vec4> gpu = run_kernel(kEsm, cases);
+  double max_error = 0.0, max_encode_error = 0.0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const Case& k = cases[i];
+    ASSERT_TRUE(finite(gpu[i])) << "filtered " << k.b.x << " z_f " << k.b.y << " c " << k.b.z;
+    const double ref = esm_reference(k.b.x, k.b.y, k.b.z);
+    max_error = std::max(max_error, std::abs(gpu[i].x - ref));
+    // esm_encode of a receiver depth in [0, 1]: relative error.
+    if (k.b.y >= 0.0f && k.b.y <= 1.0f) {
+      const double encoded = std::exp(double(k.b.z) * (k.b.y - 1.0));
+      max_encode_error = std::max(max_encode_error, std::abs(gpu[i].y / encoded - 1.0));
+    }
+  }
+  std::printf(
+      "shadow_esm vs double reference: max error %.3g; esm_encode max relative error %.3g\n",
+      max_error, max_encode_error);
+  EXPECT_LE(max_error, 1e-4);
+  EXPECT_LE(max_encode_error, 1e-4);
+}
+
+}  // namespace
+}  // namespace penumbra
