@@ -80,6 +80,35 @@ TEST(Cli, UsageErrorsExitWithStatus2) {
   expect_error("render --view shadow --light-index 3", 2, "--light-index", out);
 }
 
+TEST(Cli, FilteredTechniqueUsageErrors) {
+  const std::string out = out_path("filtered.png");
+  expect_error("render --technique msm --blur -1", 2, "--blur", out);
+  expect_error("render --technique msm --blur 1000", 2, "--blur", out);
+  expect_error("render --technique esm --esm-c 0", 2, "--esm-c", out);
+  expect_error("render --technique esm --esm-c 200", 2, "--esm-c", out);
+  expect_error("render --technique msm --msm-alpha 0", 2, "--msm-alpha", out);
+  expect_error("render --technique msm --msm-alpha 1", 2, "--msm-alpha", out);
+  expect_error("render --technique msm16 --msm16-alpha -0.1", 2, "--msm16-alpha", out);
+  expect_error("render --technique vsm --bleed-reduction 1", 2, "--bleed-reduction", out);
+  expect_error("render --technique vsm --vsm-min-variance nan", 2, "--vsm-min-variance", out);
+  expect_error("render --technique msm --filter box", 2, "box", out);
+  expect_error("render --technique esm --filter sat", 2, "--filter sat", out);
+  expect_error("render --technique hard --view moments", 2, "--view moments", out);
+}
+
+TEST(Cli, RendersEveryFilteredTechnique) {
+  for (const char* technique : {"vsm", "esm", "msm", "msm16"}) {
+    for (const char* filter : {"gaussian", "sat"}) {
+      if (std::string(technique) == "esm" && std::string(filter) == "sat") continue;
+      const std::string png = out_path(std::string(technique) + "-" + filter + ".png");
+      Result r = run(std::string("render --width 48 --height 32 --shadow-map-size 128 --blur 3 ") +
+                     "--technique " + technique + " --filter " + filter + " -o " + png);
+      EXPECT_EQ(r.status, 0) << technique << " " << filter << ": " << r.err;
+      EXPECT_TRUE(fs::exists(png)) << technique << " " << filter;
+    }
+  }
+}
+
 TEST(Cli, ShadowMapAboveTheGpuLimitIsRefused) {
   // Within the option's range but above what llvmpipe (16384) and most
   // GPUs allow.

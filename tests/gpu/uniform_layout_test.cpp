@@ -1,0 +1,58 @@
+// The C++ mirrors of the uniform blocks (shaders/shared/gpu_types.h) match
+// the std140 offsets the driver reports.
+#include <cstddef>
+#include <string>
+
+#include "gl/program.hpp"
+#include "gpu_fixture.hpp"
+#include "shared/gpu_types.h"
+
+namespace penumbra {
+namespace {
+
+using testing::GpuTest;
+
+GLint driver_offset(GLuint program, const std::string& name) {
+  GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, name.c_str());
+  if (index == GL_INVALID_INDEX) return -1;
+  const GLenum property = GL_OFFSET;
+  GLint offset = -1;
+  glGetProgramResourceiv(program, GL_UNIFORM, index, 1, &property, 1, nullptr, &offset);
+  return offset;
+}
+
+#define EXPECT_OFFSET(program, instance, type, member) \
+  EXPECT_EQ(driver_offset(program, instance "." #member), GLint(offsetof(gpu::type, member))) \
+      << #type "::" #member
+
+TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
+  // The lighting pass reads every member of every block.
+  gl::Program lighting = gl::Program::graphics(
+      "common/fullscreen.vert", "render/lighting.frag",
+      {{"SHADOW_TECHNIQUE", "4"}, {"SHADOW_FILTER", "2"}, {"MSM_QUANTIZED", "0"}});
+  const GLuint p = lighting.id();
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, constant_bias);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, normal_offset);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, max_slope);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, msm_alpha);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, blur_radius);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, sat_scale);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, filter_slope_bias);
+  EXPECT_OFFSET(p, "frame", GpuFrame, inverse_view_projection);
+  EXPECT_OFFSET(p, "frame", GpuFrame, camera_position);
+  EXPECT_OFFSET(p, "frame", GpuFrame, viewport);
+  EXPECT_OFFSET(p, "frame", GpuFrame, options);
+  EXPECT_OFFSET(p, "frame", GpuFrame, ambient);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, view);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, view_projection);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, inverse_view_projection);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, position_type);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, direction_cos_outer);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, radiance_cos_inner);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, depth_range);
+  // The array stride is the struct's size.
+  EXPECT_EQ(driver_offset(p, "lights[1].view"), GLint(sizeof(gpu::GpuLight)));
+}
+
+}  // namespace
+}  // namespace penumbra
