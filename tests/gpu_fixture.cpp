@@ -9,7 +9,9 @@ gl::Context& shared_context() {
   return *context;
 }
 
-void GpuTest::SetUp() { errors_before_ = shared_context().error_count(); }
+void GpuTest::SetUp() {
+  errors_before_ = shared_context().error_count();
+}
 
 void GpuTest::TearDown() {
   EXPECT_EQ(shared_context().error_count(), errors_before_)

@@ -4,7 +4,8 @@
 // Deferred lighting: ambient + sum over lights of
 // shadow * (Lambert diffuse + normalized Blinn-Phong specular).
 // Compile-time defines: SHADOW_TECHNIQUE (TECHNIQUE_*), SHADOW_FILTER
-// (FILTER_*), MSM_QUANTIZED (0/1: moments in the quantization basis).
+// (FILTER_*), MSM_QUANTIZED (0/1: moments in the quantization basis),
+// SOFT_SHADOWS (0/1: penumbra-sized filters from the summed-area table).
 #include "../common/uniforms.glsl"
 #include "../shadow/lookup.glsl"
 #include "../shadow/hard.glsl"
@@ -12,6 +13,9 @@
 #include "../shadow/esm.glsl"
 #include "../shadow/msm.glsl"
 #include "../filter/sat.glsl"
+#include "../shadow/noise.glsl"
+#include "../shadow/pcf.glsl"
+#include "../shadow/penumbra.glsl"
 
 layout(std140, binding = BINDING_SHADOW_UBO) uniform ShadowBlock { GpuShadow shadow_params; };
 
@@ -20,6 +24,9 @@ layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gbuffer_normal;
 layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gbuffer_albedo;
 layout(binding = UNIT_GBUFFER_SPECULAR) uniform sampler2D gbuffer_specular;
 layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2D shadow_depth[MAX_LIGHTS];
+// The same depth maps through a comparison sampler: the hardware's 2x2
+// bilinear percentage-closer test.
+layout(binding = UNIT_SHADOW_COMPARE) uniform sampler2DShadow shadow_compare[MAX_LIGHTS];
 #if SHADOW_FILTER == FILTER_SAT
 layout(binding = UNIT_SHADOW_FILTERED) uniform usampler2D shadow_sat[MAX_LIGHTS];
 #else
@@ -47,23 +54,89 @@ vec4 filtered_map(int i, vec2 uv) {
   return texture(shadow_filtered[i], uv);
 #endif
 }
+
+// The filterable techniques' test of a receiver at relative depth z
+// against filtered map values m: the lit fraction, before light-bleeding
+// reduction.
+float filtered_lit_fraction(vec4 m, float z) {
+#if SHADOW_TECHNIQUE == TECHNIQUE_VSM
+  return shadow_vsm(m.xy, z, shadow_params.vsm_min_variance, 0.0);
+#elif SHADOW_TECHNIQUE == TECHNIQUE_ESM
+  return shadow_esm(m.x, z, shadow_params.esm_c);
+#elif MSM_QUANTIZED
+  return 1.0 - msm_hamburger16(msm_dequantize(m), z, shadow_params.msm_alpha);
+#else
+  return 1.0 - msm_hamburger(m, z, shadow_params.msm_alpha);
 #endif
+}
+
+// The mean occluder depth E[z] of filtered map values.
+float filtered_mean_depth(vec4 m) {
+#if SHADOW_TECHNIQUE == TECHNIQUE_ESM
+  return log(max(m.x, 1e-37)) / shadow_params.esm_c + 1.0;
+#elif MSM_QUANTIZED
+  return msm_dequantize(m).x;
+#else
+  return m.x;
+#endif
+}
+#endif
+
+#if SHADOW_TECHNIQUE >= TECHNIQUE_VSM && SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
+// Box average of radius r (fractional: the two neighbouring integer boxes,
+// blended, so the width varies smoothly) from the summed-area table.
+vec4 sat_box_fractional(int i, ivec2 center, float r) {
+  float lo = floor(r);
+  vec4 a = sat_box_average(shadow_sat[i], center, int(lo), shadow_params.sat_scale);
+  if (r == lo) return a;
+  vec4 b = sat_box_average(shadow_sat[i], center, int(lo) + 1, shadow_params.sat_scale);
+  return mix(a, b, r - lo);
+}
+
+// Soft shadows from the summed-area table (the moment counterpart of PCSS:
+// Yang et al., "Variance Soft Shadow Mapping", PG 2010; Peters et al.,
+// "Moment Soft Shadow Mapping", I3D 2016). The moments over the blocker
+// search region give the occluded fraction G at the receiver (the
+// technique's own test) and the mean depth; with the unoccluded part
+// assumed at the receiver's depth z, mean = G z_blocker + (1 - G) z, so
+// z_blocker = (mean - (1 - G) z) / G. Its penumbra sets the filter radius
+// (at least the fixed --blur), read with a constant 8 fetches however
+// wide it is.
+float soft_moment_shadow(int i, ShadowLookup s, float z) {
+  GpuLight light = lights[i];
+  ivec2 size = textureSize(shadow_sat[i], 0);
+  ivec2 center = clamp(ivec2(s.uv * vec2(size)), ivec2(0), size - 1);
+  float d_receiver = linear_depth_of(light, s.depth);
+  float fixed_radius = float(shadow_params.blur_radius);
+  float search_radius = min(max(0.5 * blocker_search_width(light, d_receiver), fixed_radius),
+                            float(MAX_SOFT_RADIUS));
+  vec4 region = sat_box_fractional(i, center, search_radius);
+  float occluded = 1.0 - filtered_lit_fraction(region, z);
+  if (occluded <= 0.0) return 1.0;  // no blockers: lit
+  float z_blocker = clamp((filtered_mean_depth(region) - (1.0 - occluded) * z) / occluded, 0.0, z);
+  float penumbra = penumbra_world_width(light, d_receiver, linear_depth_of(light, z_blocker)) /
+                   shadow_texel_world(light, d_receiver);
+  float radius = min(max(0.5 * penumbra, fixed_radius), float(MAX_SOFT_RADIUS));
+  return filtered_lit_fraction(sat_box_fractional(i, center, radius), z);
+}
+#endif
+
+// The filtered hard-shadow reference (--view shadow-reference): the binary
+// depth tests of the unfiltered map, averaged with the kernel the
+// technique's filter applies, by brute force; each texel is tested against
+// the receiver's plane where that texel's ray meets it. It is what a
+// filtered technique approximates. Test quality: (2W+1)^2 fetches per
+// pixel (four times that for the Gaussian, which is read bilinearly like
+// the blurred map).
+layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer ReferenceWeights {
+  float reference_weights[];  // 2 W + 1: the filter's 1D kernel
+};
 
 struct ReceiverPlane {
   vec3 world;   // the lookup point
   vec3 normal;
   float depth;  // its z-bar
   float bias;
-};
-
-// The filtered hard-shadow reference (--view shadow-reference): the binary
-// depth tests of the unfiltered map, averaged with the kernel the
-// technique's filter applies, by brute force; each texel is tested against
-// the receiver's plane where that texel's ray meets it. It is what a filtered
-// technique approximates. Test quality: (2W+1)^2 fetches per pixel (four
-// times that for the Gaussian, which is read bilinearly like the blurred map).
-layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer ReferenceWeights {
-  float reference_weights[];  // 2 W + 1: the filter's 1D kernel
 };
 
 // The biased test of one texel against the receiver's plane there.
@@ -103,8 +176,47 @@ float filtered_hard_reference(int i, vec2 uv, ReceiverPlane z) {
 #endif
 }
 
-// Fraction of light i's light that reaches the point (1 = lit).
-float shadow_factor(int i, vec3 world, vec3 normal, bool reference) {
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
+// PCF, or for one sample the hardware's 2x2 bilinear compare; width 0 is
+// the plain test.
+float pcf_lit_fraction(int i, ShadowLookup s, float z, vec2 gradient, float width, int samples,
+                       vec2 rotation) {
+  if (width <= 0.0) return shadow_hard(shadow_depth[i], s.uv, z, 0.0);
+  if (samples == 1) return texture(shadow_compare[i], vec3(s.uv, z));
+  return shadow_pcf(shadow_depth[i], s.uv, z, gradient, width, samples, rotation);
+}
+#endif
+
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS
+// PCSS (Fernando 2005): blocker search, penumbra estimate, PCF over it.
+float pcss_lit_fraction(int i, ShadowLookup s, float z, vec2 gradient, vec2 rotation) {
+  GpuLight light = lights[i];
+  ivec2 size = textureSize(shadow_depth[i], 0);
+  vec2 center = s.uv * vec2(size);
+  float d_receiver = linear_depth_of(light, s.depth);
+  float search = min(blocker_search_width(light, d_receiver), float(MAX_PCF_WIDTH));
+  float blockers = 0.0, blocker_depth = 0.0;
+  for (int k = 0; k < shadow_params.pcss_blocker_samples; ++k) {
+    vec2 offset = rotated_poisson(k, rotation) * (0.5 * search);
+    ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);
+    float occluder = texelFetch(shadow_depth[i], texel, 0).r;
+    if (occluder < z + dot(gradient, offset)) {
+      blockers += 1.0;
+      blocker_depth += occluder;
+    }
+  }
+  if (blockers == 0.0) return 1.0;  // nothing between the receiver and the light
+  float d_blocker = linear_depth_of(light, blocker_depth / blockers);
+  float width = penumbra_world_width(light, d_receiver, d_blocker) /
+                shadow_texel_world(light, d_receiver);
+  return pcf_lit_fraction(i, s, z, gradient, min(width, float(MAX_PCF_WIDTH)),
+                          shadow_params.pcss_filter_samples, rotation);
+}
+#endif
+
+// Fraction of light i's light that reaches the point (1 = lit). `rotation`
+// is the pixel's (cos, sin) rotation of the sample set.
+float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotation) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_NONE
   return 1.0;
 #else
@@ -117,22 +229,27 @@ float shadow_factor(int i, vec3 world, vec3 normal, bool reference) {
   if (reference) {
     return filtered_hard_reference(i, s.uv, ReceiverPlane(s.position, normal, s.depth, bias));
   }
-#if SHADOW_TECHNIQUE == TECHNIQUE_HARD
-  return shadow_hard(shadow_depth[i], s.uv, s.depth, bias);
-#else
-  vec4 m = filtered_map(i, s.uv);
   float z = s.depth - bias;
-#if SHADOW_TECHNIQUE == TECHNIQUE_VSM
-  return shadow_vsm(m.xy, z, shadow_params.vsm_min_variance, shadow_params.bleed_reduction);
-#elif SHADOW_TECHNIQUE == TECHNIQUE_ESM
-  return shadow_esm(m.x, z, shadow_params.esm_c);
-#else  // msm, msm16
-#if MSM_QUANTIZED
-  float g = msm_hamburger16(msm_dequantize(m), z, shadow_params.msm_alpha);
+#if SHADOW_TECHNIQUE == TECHNIQUE_HARD
+  return shadow_hard(shadow_depth[i], s.uv, z, 0.0);
+#elif SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
+  vec2 gradient = receiver_depth_gradient(light, s, normal, shadow_params.max_slope);
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCF
+  return pcf_lit_fraction(i, s, z, gradient, shadow_params.pcf_width, shadow_params.pcf_samples,
+                          rotation);
 #else
-  float g = msm_hamburger(m, z, shadow_params.msm_alpha);
+  return pcss_lit_fraction(i, s, z, gradient, rotation);
 #endif
-  return reduce_light_bleeding(1.0 - g, shadow_params.bleed_reduction);
+#else
+#if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
+  float lit = soft_moment_shadow(i, s, z);
+#else
+  float lit = filtered_lit_fraction(filtered_map(i, s.uv), z);
+#endif
+#if SHADOW_TECHNIQUE == TECHNIQUE_ESM
+  return lit;
+#else
+  return reduce_light_bleeding(lit, shadow_params.bleed_reduction);
 #endif
 #endif
 #endif
@@ -168,6 +285,8 @@ void main() {
   vec3 n = normalize(normal_shininess.xyz);
   vec3 world = world_position(pixel, texelFetch(gbuffer_depth, pixel, 0).r);
   vec3 albedo = texelFetch(gbuffer_albedo, pixel, 0).rgb;
+  float angle = 6.28318530718 * interleaved_gradient_noise(vec2(pixel));
+  vec2 rotation = vec2(cos(angle), sin(angle));
 
   if (view == VIEW_NORMALS) {
     out_color = vec4(n * 0.5 + 0.5, 1.0);
@@ -183,7 +302,8 @@ void main() {
     // decides.
     int i = frame.options.z;
     bool faces_light = dot(n, direction_to_light(lights[i], world)) > 0.0;
-    float lit = faces_light ? shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE) : 0.0;
+    float lit =
+        faces_light ? shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE, rotation) : 0.0;
     out_color = vec4(vec3(lit), 1.0);
     return;
   }
@@ -201,7 +321,7 @@ void main() {
     // Normalized Blinn-Phong: (s + 8) / 8 keeps the highlight's energy
     // constant as the exponent changes (Akenine-Moller et al., RTR 4th ed.).
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
-    color += shadow_factor(i, world, n, false) * irradiance * n_dot_l * brdf;
+    color += shadow_factor(i, world, n, false, rotation) * irradiance * n_dot_l * brdf;
   }
   out_color = vec4(color, 1.0);
 }

@@ -12,6 +12,7 @@
 // Storage buffers
 #define BINDING_MATERIALS_SSBO 0
 #define BINDING_FILTER_WEIGHTS_SSBO 1
+#define BINDING_POISSON_SSBO 2
 
 // Texture units
 #define UNIT_GBUFFER_DEPTH 0
@@ -21,6 +22,7 @@
 #define UNIT_AMBIENT_OCCLUSION 4
 #define UNIT_SHADOW_DEPTH 8    // MAX_LIGHTS units: each light's z-bar depth map
 #define UNIT_SHADOW_FILTERED 12  // MAX_LIGHTS units: each light's filtered representation
+#define UNIT_SHADOW_COMPARE 16   // MAX_LIGHTS units: the depth maps with a comparison sampler
 #define UNIT_COMPUTE_INPUT 0
 
 // Image units (compute)
@@ -28,6 +30,12 @@
 #define IMAGE_OUTPUT_2 1
 
 #define MAX_LIGHTS 4
+
+// Widest PCF / PCSS window, in texels.
+#define MAX_PCF_WIDTH 128
+// Largest box radius read from a summed-area table (its fixed-point scale
+// is chosen so that a box this size cannot overflow 32 bits).
+#define MAX_SOFT_RADIUS 64
 
 // Light types (GpuLight::position_type.w)
 #define LIGHT_SPOT 0
@@ -41,12 +49,15 @@
 #define VIEW_SHADOW_REFERENCE 4
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
+// (the filterable ones, from TECHNIQUE_VSM on, last)
 #define TECHNIQUE_NONE 0
 #define TECHNIQUE_HARD 1
-#define TECHNIQUE_VSM 2
-#define TECHNIQUE_ESM 3
-#define TECHNIQUE_MSM 4
-#define TECHNIQUE_MSM16 5
+#define TECHNIQUE_PCF 2
+#define TECHNIQUE_PCSS 3
+#define TECHNIQUE_VSM 4
+#define TECHNIQUE_ESM 5
+#define TECHNIQUE_MSM 6
+#define TECHNIQUE_MSM16 7
 
 // Filters of the filterable maps (compile-time define SHADOW_FILTER)
 #define FILTER_NONE 0

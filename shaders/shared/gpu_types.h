@@ -24,6 +24,9 @@ struct GpuLight {
   // z: world size of one shadow-map texel at unit depth (spot) or anywhere
   //    (directional); w: shadow-map size in texels
   vec4 depth_range;
+  // x: width of the light's source: world units at the light (spot), or per
+  //    unit of distance, 2 tan(angular radius) (directional); yzw: unused
+  vec4 source;
 };
 
 // Per-frame camera data.
@@ -51,7 +54,11 @@ struct GpuShadow {
   int blur_radius;  // texels
   float sat_scale;  // fixed-point scale of the summed-area table (values * scale)
   float filter_slope_bias;  // extra slope-scaled bias per texel of filter radius
-  float unused;
+  float pcf_width;          // texels
+  int pcf_samples;
+  int pcss_blocker_samples;
+  int pcss_filter_samples;
+  int unused;
 };
 
 #ifdef __cplusplus

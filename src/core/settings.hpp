@@ -7,14 +7,17 @@
 #include <utility>
 
 #include "core/enum_names.hpp"
+#include "shared/bindings.h"
 
 namespace penumbra {
 
-enum class Technique { None, Hard, Vsm, Esm, Msm, Msm16 };
+enum class Technique { None, Hard, Pcf, Pcss, Vsm, Esm, Msm, Msm16 };
 
-inline constexpr std::array<std::pair<Technique, std::string_view>, 6> kTechniqueNames{{
+inline constexpr std::array<std::pair<Technique, std::string_view>, 8> kTechniqueNames{{
     {Technique::None, "none"},
     {Technique::Hard, "hard"},
+    {Technique::Pcf, "pcf"},
+    {Technique::Pcss, "pcss"},
     {Technique::Vsm, "vsm"},
     {Technique::Esm, "esm"},
     {Technique::Msm, "msm"},
@@ -24,8 +27,7 @@ inline constexpr std::array<std::pair<Technique, std::string_view>, 6> kTechniqu
 // Techniques whose map is a filterable representation of depth (moments or
 // an exponential) rather than depth itself.
 constexpr bool is_filterable(Technique t) {
-  return t == Technique::Vsm || t == Technique::Esm || t == Technique::Msm ||
-         t == Technique::Msm16;
+  return t == Technique::Vsm || t == Technique::Esm || t == Technique::Msm || t == Technique::Msm16;
 }
 
 enum class Filter { Gaussian, Sat };
@@ -79,8 +81,25 @@ struct ShadowSettings {
   float filter_slope_bias = 0.25f;
   // Normal offset: the lookup moves this many texels along the surface normal.
   float normal_offset = 0.5f;
-  // Width of the light source in world units (0: a point light, hard shadows).
-  float light_size = 0.0f;
+  // Width of a spot light's source in world units (0: a point light, hard
+  // shadows), for pcss, --soft and the area-light reference.
+  float light_size = 0.5f;
+  // Angular diameter of a directional light's source in degrees (the sun
+  // is about 0.53), for the same.
+  float sun_angle = 1.0f;
+
+  // PCF: width of the square window in texels (0: the plain hard test),
+  // sampled with the first pcf_samples points of the Poisson set (1: the
+  // hardware's 2x2 bilinear compare).
+  float pcf_width = 4.0f;
+  int pcf_samples = 16;
+  // PCSS (Fernando 2005): samples of the blocker search, and of the PCF
+  // over the estimated penumbra.
+  int pcss_blocker_samples = 16;
+  int pcss_filter_samples = 32;
+  // Moment soft shadows (vsm, msm, msm16 with --filter sat): the filter
+  // width follows the estimated penumbra, at least the fixed --blur.
+  bool soft = false;
 
   // Filtering of the vsm, esm, msm and msm16 maps.
   Filter filter = Filter::Gaussian;
@@ -120,31 +139,37 @@ struct NumericParam {
   T Settings::*field;
 };
 
-inline constexpr int kMaxMapSize = 32768;  // the largest any GPU offers; each GPU's own limit is checked too
+inline constexpr int kMaxMapSize =
+    32768;  // the largest any GPU offers; each GPU's own limit is checked too
 inline constexpr int kMaxImageSize = 16384;
 
 // The ESM map stores exp(c (z - 1)) in 32-bit float: in (0, 1], so it
 // cannot overflow; c <= 87 keeps exp(-c) above the smallest normal float.
 inline constexpr float kEsmMaxC = 87.0f;
-inline constexpr int kMaxBlur = 64;
+inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
+inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
 
-inline constexpr std::array<NumericParam<ShadowSettings, float>, 11> kShadowFloatParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, float>, 13> kShadowFloatParams{{
     {"constant-bias", "constant depth bias, in relative light depth z-bar", 0.0f, 0.1f,
      &ShadowSettings::constant_bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
      &ShadowSettings::slope_bias},
     {"max-slope", "largest slope tan(theta) the slope-scaled bias follows", 0.0f, 1000.0f,
      &ShadowSettings::max_slope},
-    {"filter-slope-bias",
-     "filtered techniques: extra slope-scaled bias per texel of filter radius", 0.0f, 4.0f,
-     &ShadowSettings::filter_slope_bias},
+    {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
+     0.0f, 4.0f, &ShadowSettings::filter_slope_bias},
     {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
      &ShadowSettings::normal_offset},
-    {"light-size", "width of the light source in world units (0: point light)", 0.0f, 100.0f,
-     &ShadowSettings::light_size},
+    {"light-size",
+     "width of a spot light's source in world units (0: point light), for pcss, --soft and "
+     "the area-light reference",
+     0.0f, 100.0f, &ShadowSettings::light_size},
+    {"sun-angle", "angular diameter of a directional light's source in degrees (0: a point)", 0.0f,
+     45.0f, &ShadowSettings::sun_angle},
+    {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
+     &ShadowSettings::pcf_width},
     {"esm-c", "ESM exponent c", 1.0f, kEsmMaxC, &ShadowSettings::esm_c},
-    {"msm-alpha", "MSM moment bias alpha, 32-bit moments", 1e-8f, 0.5f,
-     &ShadowSettings::msm_alpha},
+    {"msm-alpha", "MSM moment bias alpha, 32-bit moments", 1e-8f, 0.5f, &ShadowSettings::msm_alpha},
     {"msm16-alpha", "MSM moment bias alpha, 16-bit and summed-area-table moments", 1e-8f, 0.5f,
      &ShadowSettings::msm16_alpha},
     {"vsm-min-variance", "VSM minimum variance (z-bar squared)", 0.0f, 0.25f,
@@ -153,11 +178,17 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 11> kShadowFloa
      &ShadowSettings::bleed_reduction},
 }};
 
-inline constexpr std::array<NumericParam<ShadowSettings, int>, 2> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 5> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowSettings::map_size},
-    {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none",
-     0, kMaxBlur, &ShadowSettings::blur},
+    {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
+     kMaxBlur, &ShadowSettings::blur},
+    {"pcf-samples", "PCF samples from the Poisson set (1: hardware 2x2 compare)", 1,
+     kMaxShadowSamples, &ShadowSettings::pcf_samples},
+    {"pcss-blocker-samples", "PCSS blocker-search samples", 1, kMaxShadowSamples,
+     &ShadowSettings::pcss_blocker_samples},
+    {"pcss-filter-samples", "PCSS filter samples over the penumbra", 1, kMaxShadowSamples,
+     &ShadowSettings::pcss_filter_samples},
 }};
 
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{

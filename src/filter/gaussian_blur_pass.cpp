@@ -14,7 +14,9 @@ namespace {
 constexpr int kTileAlong = 64;  // TILE_ALONG and TILE_ACROSS of gaussian_blur.comp
 constexpr int kTileAcross = 8;
 
-GLuint groups(int size, int tile) { return static_cast<GLuint>((size + tile - 1) / tile); }
+GLuint groups(int size, int tile) {
+  return static_cast<GLuint>((size + tile - 1) / tile);
+}
 
 void ensure(gl::Texture& texture, const gl::Texture& like, const char* label) {
   if (!texture || texture.width() != like.width() || texture.height() != like.height() ||

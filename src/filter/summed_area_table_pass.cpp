@@ -9,7 +9,9 @@
 namespace penumbra {
 
 namespace {
-GLuint groups(int size, int local) { return static_cast<GLuint>((size + local - 1) / local); }
+GLuint groups(int size, int local) {
+  return static_cast<GLuint>((size + local - 1) / local);
+}
 }  // namespace
 
 double sat_fixed_point_scale() {

@@ -42,8 +42,7 @@ class Context {
   Context() = default;
   void install_debug_output(const ContextOptions& options);
   static void GLAPIENTRY on_debug_message(GLenum source, GLenum type, GLuint id, GLenum severity,
-                                          GLsizei length, const GLchar* message,
-                                          const void* user);
+                                          GLsizei length, const GLchar* message, const void* user);
 
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;

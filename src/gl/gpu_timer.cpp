@@ -8,7 +8,9 @@ GpuTimer::GpuTimer() {
   query_ = Handle<detail::delete_query>(id);
 }
 
-void GpuTimer::begin() { glBeginQuery(GL_TIME_ELAPSED, query_.id()); }
+void GpuTimer::begin() {
+  glBeginQuery(GL_TIME_ELAPSED, query_.id());
+}
 
 void GpuTimer::end() {
   glEndQuery(GL_TIME_ELAPSED);

@@ -11,7 +11,9 @@
 namespace penumbra::gl {
 
 namespace detail {
-inline void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+inline void delete_query(GLuint id) {
+  glDeleteQueries(1, &id);
+}
 }  // namespace detail
 
 class GpuTimer {

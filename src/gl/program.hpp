@@ -8,7 +8,9 @@
 namespace penumbra::gl {
 
 namespace detail {
-inline void delete_program(GLuint id) { glDeleteProgram(id); }
+inline void delete_program(GLuint id) {
+  glDeleteProgram(id);
+}
 }  // namespace detail
 
 class Program {

@@ -19,8 +19,8 @@ Buffer::Buffer(std::size_t size, const void* data, bool dynamic, std::string_vie
   glCreateBuffers(1, &id);
   handle_ = Handle<detail::delete_buffer>(id);
   // A zero-sized store is invalid; keep one byte so empty scenes still bind.
-  glNamedBufferStorage(id, static_cast<GLsizeiptr>(size == 0 ? 1 : size), size == 0 ? nullptr : data,
-                       dynamic ? GL_DYNAMIC_STORAGE_BIT : 0);
+  glNamedBufferStorage(id, static_cast<GLsizeiptr>(size == 0 ? 1 : size),
+                       size == 0 ? nullptr : data, dynamic ? GL_DYNAMIC_STORAGE_BIT : 0);
   set_label(GL_BUFFER, id, label);
 }
 
@@ -78,7 +78,8 @@ void Framebuffer::attach_depth(const Texture& texture, int level) {
 
 void Framebuffer::set_draw_buffers(int count) {
   GLenum buffers[8];
-  for (int i = 0; i < count && i < 8; ++i) buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+  for (int i = 0; i < count && i < 8; ++i)
+    buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
   if (count == 0) {
     glNamedFramebufferDrawBuffer(handle_.id(), GL_NONE);
   } else {
@@ -89,13 +90,11 @@ void Framebuffer::set_draw_buffers(int count) {
 void Framebuffer::check_complete() const {
   GLenum status = glCheckNamedFramebufferStatus(handle_.id(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw RuntimeError("framebuffer '" + label_ + "' is incomplete (status 0x" +
-                       [&] {
-                         char hex[16];
-                         std::snprintf(hex, sizeof hex, "%x", status);
-                         return std::string(hex);
-                       }() +
-                       ")");
+    throw RuntimeError("framebuffer '" + label_ + "' is incomplete (status 0x" + [&] {
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "%x", status);
+      return std::string(hex);
+    }() + ")");
   }
 }
 

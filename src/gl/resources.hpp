@@ -12,11 +12,21 @@
 namespace penumbra::gl {
 
 namespace detail {
-inline void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
-inline void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
-inline void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
-inline void delete_sampler(GLuint id) { glDeleteSamplers(1, &id); }
-inline void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+inline void delete_buffer(GLuint id) {
+  glDeleteBuffers(1, &id);
+}
+inline void delete_texture(GLuint id) {
+  glDeleteTextures(1, &id);
+}
+inline void delete_framebuffer(GLuint id) {
+  glDeleteFramebuffers(1, &id);
+}
+inline void delete_sampler(GLuint id) {
+  glDeleteSamplers(1, &id);
+}
+inline void delete_vertex_array(GLuint id) {
+  glDeleteVertexArrays(1, &id);
+}
 }  // namespace detail
 
 // Names the object in debug output and GPU captures.

@@ -33,7 +33,8 @@ bool is_embedded(const std::string& path) {
 
 // Resolves an include relative to the including file first, then to shaders/.
 std::string resolve_include(const std::string& from, const std::string& name) {
-  std::string relative = std::filesystem::path(directory_of(from) + name).lexically_normal().string();
+  std::string relative =
+      std::filesystem::path(directory_of(from) + name).lexically_normal().string();
   if (is_embedded(relative)) return relative;
   if (is_embedded(name)) return name;
   throw RuntimeError(from + ": cannot find include \"" + name + "\"");

@@ -11,8 +11,8 @@
 
 #include "core/error.hpp"
 
-#include <stb_image_write.h>
 #include <stb_image.h>
+#include <stb_image_write.h>
 
 namespace penumbra {
 
@@ -78,7 +78,8 @@ void write_png(const Image& image, const std::string& path, PngEncoding encoding
       float v = image.rgba[i * 4 + static_cast<std::size_t>(c)];
       if (!std::isfinite(v)) v = 0.0f;
       v = encoding == PngEncoding::Srgb ? srgb_encode(v) : std::clamp(v, 0.0f, 1.0f);
-      bytes[i * 3 + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
+      bytes[i * 3 + static_cast<std::size_t>(c)] =
+          static_cast<std::uint8_t>(std::lround(v * 255.0f));
     }
   }
   const std::string temporary = temporary_name(path);

@@ -6,7 +6,7 @@
 namespace penumbra {
 
 struct ShadowMetrics {
-  long pixels = 0;                // geometry pixels compared
+  long pixels = 0;  // geometry pixels compared
   double mean_absolute_error = 0.0;
   double rmse = 0.0;
   double max_error = 0.0;

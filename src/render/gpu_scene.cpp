@@ -16,7 +16,8 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
   for (const Material& m : scene.materials) {
     materials.push_back({glm::vec4(m.albedo, 1.0f), glm::vec4(m.specular, m.shininess)});
   }
-  if (materials.empty()) materials.push_back({glm::vec4(0.8f), glm::vec4(0.04f, 0.04f, 0.04f, 32.0f)});
+  if (materials.empty())
+    materials.push_back({glm::vec4(0.8f), glm::vec4(0.04f, 0.04f, 0.04f, 32.0f)});
   materials_ = gl::Buffer::from(std::span<const GpuMaterial>(materials), "materials");
 
   const GLuint vao = vao_.id();

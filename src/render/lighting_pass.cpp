@@ -10,17 +10,21 @@ namespace penumbra {
 
 LightingPass::LightingPass()
     : empty_vao_("fullscreen"),
-      nearest_(gl::SamplerInfo{.min_filter = GL_NEAREST, .mag_filter = GL_NEAREST,
-                               .label = "nearest clamp"}),
-      bilinear_(gl::SamplerInfo{.label = "bilinear clamp"}) {}
+      nearest_(gl::SamplerInfo{
+          .min_filter = GL_NEAREST, .mag_filter = GL_NEAREST, .label = "nearest clamp"}),
+      bilinear_(gl::SamplerInfo{.label = "bilinear clamp"}),
+      compare_(gl::SamplerInfo{.compare_mode = GL_COMPARE_REF_TO_TEXTURE,
+                               .label = "bilinear depth compare"}) {}
 
 const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
-  const auto key = std::make_pair(technique_define(settings.technique), filter_define(settings));
+  const auto key =
+      std::make_tuple(technique_define(settings.technique), filter_define(settings), settings.soft);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
-    gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(key.first)},
-                           {"SHADOW_FILTER", std::to_string(key.second)},
-                           {"MSM_QUANTIZED", uses_quantized_moments(settings) ? "1" : "0"}};
+    gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(std::get<0>(key))},
+                           {"SHADOW_FILTER", std::to_string(std::get<1>(key))},
+                           {"MSM_QUANTIZED", uses_quantized_moments(settings) ? "1" : "0"},
+                           {"SOFT_SHADOWS", settings.soft ? "1" : "0"}};
     it = programs_
              .emplace(key, gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
                                                  defines))
@@ -63,10 +67,14 @@ void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shad
     const GLuint unit = static_cast<GLuint>(UNIT_SHADOW_DEPTH + i);
     glBindTextureUnit(unit, maps > 0 ? shadows.depth_map(i < maps ? i : 0).id() : 0);
     glBindSampler(unit, nearest_.id());
+    const GLuint compare_unit = static_cast<GLuint>(UNIT_SHADOW_COMPARE + i);
+    glBindTextureUnit(compare_unit, maps > 0 ? shadows.depth_map(i < maps ? i : 0).id() : 0);
+    glBindSampler(compare_unit, compare_.id());
     // Filtered maps are sampled bilinearly (linear filters commute with
     // the moments' linearity); integer tables are read with texelFetch.
     const GLuint filtered_unit = static_cast<GLuint>(UNIT_SHADOW_FILTERED + i);
-    glBindTextureUnit(filtered_unit, filtered_maps[static_cast<std::size_t>(i < light_count ? i : 0)]);
+    glBindTextureUnit(filtered_unit,
+                      filtered_maps[static_cast<std::size_t>(i < light_count ? i : 0)]);
     glBindSampler(filtered_unit, filter_define(settings) == FILTER_SAT ? 0 : bilinear_.id());
   }
   glBindVertexArray(empty_vao_.id());

@@ -3,6 +3,7 @@
 // linear colour, or one of the debug views.
 #include <array>
 #include <map>
+#include <tuple>
 
 #include "core/settings.hpp"
 #include "gl/program.hpp"
@@ -29,11 +30,12 @@ class LightingPass {
  private:
   const gl::Program& program_for(const ShadowSettings& settings);
 
-  // One per (technique, filter) define pair, compiled on first use.
-  std::map<std::pair<int, int>, gl::Program> programs_;
+  // One per (technique, filter, soft) combination, compiled on first use.
+  std::map<std::tuple<int, int, bool>, gl::Program> programs_;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Sampler bilinear_;
+  gl::Sampler compare_;
   gl::Texture output_;
   gl::Framebuffer framebuffer_;
   int width_ = 0, height_ = 0;

@@ -9,19 +9,20 @@
 
 #include "core/error.hpp"
 #include "filter/gaussian.hpp"
+#include "shadow/poisson_disc.hpp"
 #include "shadow/representation.hpp"
 #include "shared/bindings.h"
 #include "shared/gpu_types.h"
 
 namespace penumbra {
 
-static_assert(sizeof(gpu::GpuLight) == 3 * 64 + 4 * 16, "GpuLight must match std140");
+static_assert(sizeof(gpu::GpuLight) == 3 * 64 + 5 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
-static_assert(sizeof(gpu::GpuShadow) == 48, "GpuShadow must match std140");
+static_assert(sizeof(gpu::GpuShadow) == 64, "GpuShadow must match std140");
 
 namespace {
 
-gpu::GpuLight to_gpu(const Light& light, const LightView& view, int map_size) {
+gpu::GpuLight to_gpu(const Light& light, const LightView& view, const ShadowSettings& shadow) {
   gpu::GpuLight g{};
   g.view = view.view;
   g.view_projection = view.view_projection;
@@ -32,7 +33,11 @@ gpu::GpuLight to_gpu(const Light& light, const LightView& view, int map_size) {
       glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.cone_degrees)));
   const float inner = std::min(light.inner_cone_degrees, light.cone_degrees - 0.01f);
   g.radiance_cos_inner = glm::vec4(light.color * light.intensity, std::cos(glm::radians(inner)));
-  g.depth_range = glm::vec4(view.z0, view.z1, view.texel_world, static_cast<float>(map_size));
+  g.depth_range =
+      glm::vec4(view.z0, view.z1, view.texel_world, static_cast<float>(shadow.map_size));
+  const float source =
+      spot ? shadow.light_size : 2.0f * std::tan(glm::radians(0.5f * shadow.sun_angle));
+  g.source = glm::vec4(source, 0.0f, 0.0f, 0.0f);
   return g;
 }
 
@@ -62,11 +67,16 @@ Image read_texture(GLuint texture, int width, int height, GLenum format) {
 
 int view_define(View view) {
   switch (view) {
-    case View::Shadow: return VIEW_SHADOW;
-    case View::ShadowReference: return VIEW_SHADOW_REFERENCE;
-    case View::Normals: return VIEW_NORMALS;
-    case View::Albedo: return VIEW_ALBEDO;
-    default: return VIEW_FINAL;
+    case View::Shadow:
+      return VIEW_SHADOW;
+    case View::ShadowReference:
+      return VIEW_SHADOW_REFERENCE;
+    case View::Normals:
+      return VIEW_NORMALS;
+    case View::Albedo:
+      return VIEW_ALBEDO;
+    default:
+      return VIEW_FINAL;
   }
 }
 
@@ -81,7 +91,9 @@ Renderer::Renderer(const Scene& scene)
       lights_ubo_(sizeof(gpu::GpuLight) * MAX_LIGHTS, nullptr, true, "lights block"),
       shadow_ubo_(sizeof(gpu::GpuShadow), nullptr, true, "shadow block"),
       reference_weights_(sizeof(float) * (2 * kMaxBlur + 1), nullptr, true,
-                         "reference filter weights") {
+                         "reference filter weights"),
+      poisson_(gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
+                                "poisson samples")) {
   if (scene_.lights.size() > MAX_LIGHTS) {
     throw UsageError("scene '" + scene_.name + "' has " + std::to_string(scene_.lights.size()) +
                      " lights; at most " + std::to_string(MAX_LIGHTS) + " are supported");
@@ -97,7 +109,8 @@ glm::mat4 Renderer::camera_projection(int width, int height) const {
   const glm::mat4 view = camera_view();
   float zmin = 1e30f, zmax = 0.0f;
   for (int i = 0; i < 8; ++i) {
-    glm::vec3 corner{(i & 1) ? bounds_.max.x : bounds_.min.x, (i & 2) ? bounds_.max.y : bounds_.min.y,
+    glm::vec3 corner{(i & 1) ? bounds_.max.x : bounds_.min.x,
+                     (i & 2) ? bounds_.max.y : bounds_.min.y,
                      (i & 4) ? bounds_.max.z : bounds_.min.z};
     float z = -(view * glm::vec4(corner, 1.0f)).z;
     zmin = std::min(zmin, z);
@@ -145,7 +158,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   for (int i = 0; i < light_count; ++i) {
     const Light& light = scene_.lights[static_cast<std::size_t>(i)];
     light_views_.push_back(fit_light_view(light, mesh_, shadow.map_size));
-    lights[i] = to_gpu(light, light_views_.back(), shadow.map_size);
+    lights[i] = to_gpu(light, light_views_.back(), shadow);
   }
   lights_ubo_.update(lights, sizeof lights);
 
@@ -174,11 +187,16 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.blur_radius = shadow.blur;
   shadow_block.sat_scale = static_cast<float>(sat_fixed_point_scale());
   shadow_block.filter_slope_bias = shadow.filter_slope_bias;
+  shadow_block.pcf_width = shadow.pcf_width;
+  shadow_block.pcf_samples = shadow.pcf_samples;
+  shadow_block.pcss_blocker_samples = shadow.pcss_blocker_samples;
+  shadow_block.pcss_filter_samples = shadow.pcss_filter_samples;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_LIGHTS_UBO, lights_ubo_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_UBO, shadow_ubo_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, poisson_.id());
 
   if (shadow.technique != Technique::None || is_map_view(render.view)) {
     shadow_pass_.execute(gpu_scene_, light_count, shadow.map_size);
@@ -203,17 +221,18 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if (render.view == View::ShadowReference) {
     // The kernel the filter applies, as 1D weights for the reference's
     // brute-force average of depth tests.
-    std::vector<float> weights = shadow.filter == Filter::Sat
-                                     ? std::vector<float>(2 * static_cast<std::size_t>(shadow.blur) + 1, 1.0f)
-                                     : gaussian_weights(is_filterable(shadow.technique) ? shadow.blur : 0);
+    std::vector<float> weights =
+        shadow.filter == Filter::Sat
+            ? std::vector<float>(2 * static_cast<std::size_t>(shadow.blur) + 1, 1.0f)
+            : gaussian_weights(is_filterable(shadow.technique) ? shadow.blur : 0);
     reference_weights_.update(weights.data(), weights.size() * sizeof(float));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO,
                      reference_weights_.id());
   }
   if (!is_map_view(render.view)) {
     gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
-    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow,
-                           render.width, render.height);
+    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow, render.width,
+                           render.height);
   }
 }
 

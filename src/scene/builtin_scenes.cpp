@@ -127,7 +127,9 @@ Scene spot_scene() {
 
 }  // namespace
 
-std::vector<std::string> builtin_scene_names() { return {"default", "spot"}; }
+std::vector<std::string> builtin_scene_names() {
+  return {"default", "spot"};
+}
 
 std::optional<Scene> builtin_scene(const std::string& name) {
   if (name == "default") return default_scene();

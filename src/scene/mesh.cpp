@@ -75,7 +75,8 @@ void build_sphere(Builder& b, const Shape& s) {
     float theta = kPi * static_cast<float>(j) / stacks;
     for (int i = 0; i <= slices; ++i) {
       float phi = 2.0f * kPi * static_cast<float>(i) / slices;
-      glm::vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
+      glm::vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta),
+                  -std::sin(theta) * std::sin(phi)};
       b.add(s.radius * n, n);
     }
   }
@@ -155,11 +156,21 @@ glm::mat4 shape_transform(const Shape& shape) {
 void append_shape(TriangleMesh& mesh, const Shape& shape) {
   Builder b;
   switch (shape.kind) {
-    case ShapeKind::Plane: build_plane(b, shape); break;
-    case ShapeKind::Box: build_box(b, shape); break;
-    case ShapeKind::Sphere: build_sphere(b, shape); break;
-    case ShapeKind::Cylinder: build_cylinder(b, shape); break;
-    case ShapeKind::Torus: build_torus(b, shape); break;
+    case ShapeKind::Plane:
+      build_plane(b, shape);
+      break;
+    case ShapeKind::Box:
+      build_box(b, shape);
+      break;
+    case ShapeKind::Sphere:
+      build_sphere(b, shape);
+      break;
+    case ShapeKind::Cylinder:
+      build_cylinder(b, shape);
+      break;
+    case ShapeKind::Torus:
+      build_torus(b, shape);
+      break;
   }
   const glm::mat4 m = shape_transform(shape);
   const glm::mat3 normal_matrix = glm::mat3(m);  // rotation only: no scale to undo

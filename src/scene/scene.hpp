@@ -41,9 +41,9 @@ enum class LightType { Spot, Directional };
 
 struct Light {
   LightType type = LightType::Spot;
-  glm::vec3 position{0.0f, 10.0f, 0.0f};    // spot only
-  glm::vec3 direction{0.0f, -1.0f, 0.0f};   // the way the light shines
-  glm::vec3 color{1.0f};                    // linear RGB
+  glm::vec3 position{0.0f, 10.0f, 0.0f};   // spot only
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way the light shines
+  glm::vec3 color{1.0f};                   // linear RGB
   float intensity = 1.0f;  // spot: radiant intensity (irradiance at 1 m); directional: irradiance
   float cone_degrees = 35.0f;        // spot: half-angle where the light ends
   float inner_cone_degrees = 28.0f;  // spot: half-angle where the fall-off starts

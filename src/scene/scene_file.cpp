@@ -52,8 +52,7 @@ class Reader {
     return static_cast<float>(d);
   }
 
-  glm::vec3 vec3(const std::string& key, glm::vec3 fallback, float min = -1e6f,
-                 float max = 1e6f) {
+  glm::vec3 vec3(const std::string& key, glm::vec3 fallback, float min = -1e6f, float max = 1e6f) {
     if (!has(key)) return fallback;
     const json& v = value_.at(key);
     if (!v.is_array() || v.size() != 3) fail(child(key), "expected an array of 3 numbers");
@@ -222,10 +221,12 @@ Scene parse_scene_json(const std::string& text, const std::string& origin) {
     if (!materials.is_object()) r.fail("/materials", "expected an object of named materials");
     for (auto it = materials.begin(); it != materials.end(); ++it) {
       material_index[it.key()] = static_cast<int>(scene.materials.size());
-      scene.materials.push_back(read_material(Reader(it.value(), "/materials/" + it.key(), origin), it.key()));
+      scene.materials.push_back(
+          read_material(Reader(it.value(), "/materials/" + it.key(), origin), it.key()));
     }
   }
-  if (r.has("camera")) scene.camera = read_camera(Reader(r.at("camera"), "/camera", origin), scene.camera);
+  if (r.has("camera"))
+    scene.camera = read_camera(Reader(r.at("camera"), "/camera", origin), scene.camera);
 
   auto read_array = [&](const std::string& key) -> const json& {
     if (!r.has(key)) r.fail("/" + key, "missing (at least one entry is needed)");
@@ -258,8 +259,8 @@ Scene load_scene_file(const std::string& path) {
 
 Scene resolve_scene(const std::string& name_or_path) {
   if (auto scene = builtin_scene(name_or_path)) return *scene;
-  const bool looks_like_file = name_or_path.find('/') != std::string::npos ||
-                               name_or_path.find('.') != std::string::npos;
+  const bool looks_like_file =
+      name_or_path.find('/') != std::string::npos || name_or_path.find('.') != std::string::npos;
   if (!looks_like_file) {
     std::string names;
     for (const std::string& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;

@@ -33,10 +33,14 @@ bool clipped_depth_range(const glm::mat4& view, float k, std::span<const Vertex>
     for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
       auto distance = [&](const glm::vec3& p) {
         switch (plane) {
-          case 0: return k * p.z - p.x;
-          case 1: return k * p.z + p.x;
-          case 2: return k * p.z - p.y;
-          default: return k * p.z + p.y;
+          case 0:
+            return k * p.z - p.x;
+          case 1:
+            return k * p.z + p.x;
+          case 2:
+            return k * p.z - p.y;
+          default:
+            return k * p.z + p.y;
         }
       };
       next.clear();

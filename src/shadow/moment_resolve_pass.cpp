@@ -8,7 +8,9 @@
 namespace penumbra {
 
 namespace {
-GLuint groups(int size, int local) { return static_cast<GLuint>((size + local - 1) / local); }
+GLuint groups(int size, int local) {
+  return static_cast<GLuint>((size + local - 1) / local);
+}
 }  // namespace
 
 void MomentResolvePass::execute(int light, const gl::Texture& depth_map,

@@ -7,12 +7,22 @@ namespace penumbra {
 
 int technique_define(Technique technique) {
   switch (technique) {
-    case Technique::None: return TECHNIQUE_NONE;
-    case Technique::Hard: return TECHNIQUE_HARD;
-    case Technique::Vsm: return TECHNIQUE_VSM;
-    case Technique::Esm: return TECHNIQUE_ESM;
-    case Technique::Msm: return TECHNIQUE_MSM;
-    case Technique::Msm16: return TECHNIQUE_MSM16;
+    case Technique::None:
+      return TECHNIQUE_NONE;
+    case Technique::Hard:
+      return TECHNIQUE_HARD;
+    case Technique::Pcf:
+      return TECHNIQUE_PCF;
+    case Technique::Pcss:
+      return TECHNIQUE_PCSS;
+    case Technique::Vsm:
+      return TECHNIQUE_VSM;
+    case Technique::Esm:
+      return TECHNIQUE_ESM;
+    case Technique::Msm:
+      return TECHNIQUE_MSM;
+    case Technique::Msm16:
+      return TECHNIQUE_MSM16;
   }
   return TECHNIQUE_NONE;
 }
@@ -29,32 +39,48 @@ bool uses_quantized_moments(const ShadowSettings& settings) {
 
 GLenum representation_format(Technique technique) {
   switch (technique) {
-    case Technique::Vsm: return GL_RG32F;
-    case Technique::Esm: return GL_R32F;
-    case Technique::Msm: return GL_RGBA32F;
-    case Technique::Msm16: return GL_RGBA16;
-    default: throw RuntimeError("technique has no filterable representation");
+    case Technique::Vsm:
+      return GL_RG32F;
+    case Technique::Esm:
+      return GL_R32F;
+    case Technique::Msm:
+      return GL_RGBA32F;
+    case Technique::Msm16:
+      return GL_RGBA16;
+    default:
+      throw RuntimeError("technique has no filterable representation");
   }
 }
 
 std::string image_format_qualifier(GLenum format) {
   switch (format) {
-    case GL_R32F: return "r32f";
-    case GL_RG32F: return "rg32f";
-    case GL_RGBA32F: return "rgba32f";
-    case GL_RGBA16: return "rgba16";
-    case GL_R32UI: return "r32ui";
-    case GL_RG32UI: return "rg32ui";
-    case GL_RGBA32UI: return "rgba32ui";
-    default: throw RuntimeError("no image format qualifier for this texture format");
+    case GL_R32F:
+      return "r32f";
+    case GL_RG32F:
+      return "rg32f";
+    case GL_RGBA32F:
+      return "rgba32f";
+    case GL_RGBA16:
+      return "rgba16";
+    case GL_R32UI:
+      return "r32ui";
+    case GL_RG32UI:
+      return "rg32ui";
+    case GL_RGBA32UI:
+      return "rgba32ui";
+    default:
+      throw RuntimeError("no image format qualifier for this texture format");
   }
 }
 
 GLenum integer_format_with_channels_of(GLenum format) {
   switch (format) {
-    case GL_R32F: return GL_R32UI;
-    case GL_RG32F: return GL_RG32UI;
-    default: return GL_RGBA32UI;
+    case GL_R32F:
+      return GL_R32UI;
+    case GL_RG32F:
+      return GL_RG32UI;
+    default:
+      return GL_RGBA32UI;
   }
 }
 
@@ -62,11 +88,14 @@ int bytes_per_texel(GLenum format) {
   switch (format) {
     case GL_R32F:
     case GL_R32UI:
-    case GL_DEPTH_COMPONENT32F: return 4;
+    case GL_DEPTH_COMPONENT32F:
+      return 4;
     case GL_RG32F:
     case GL_RG32UI:
-    case GL_RGBA16: return 8;
-    default: return 16;
+    case GL_RGBA16:
+      return 8;
+    default:
+      return 16;
   }
 }
 

@@ -13,10 +13,8 @@ void ShadowMapPass::execute(const GpuScene& scene, int light_count, int map_size
     framebuffers_.clear();
     for (int i = 0; i < light_count; ++i) {
       std::string label = "shadow map " + std::to_string(i);
-      maps_.emplace_back(gl::TextureInfo{.format = GL_DEPTH_COMPONENT32F,
-                                         .width = map_size,
-                                         .height = map_size,
-                                         .label = label});
+      maps_.emplace_back(gl::TextureInfo{
+          .format = GL_DEPTH_COMPONENT32F, .width = map_size, .height = map_size, .label = label});
       gl::Framebuffer fb(label);
       fb.attach_depth(maps_.back());
       fb.set_draw_buffers(0);

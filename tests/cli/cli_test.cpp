@@ -94,6 +94,32 @@ TEST(Cli, FilteredTechniqueUsageErrors) {
   expect_error("render --technique msm --filter box", 2, "box", out);
   expect_error("render --technique esm --filter sat", 2, "--filter sat", out);
   expect_error("render --technique hard --view moments", 2, "--view moments", out);
+  expect_error("render --technique pcf --pcf-samples 0", 2, "--pcf-samples", out);
+  expect_error("render --technique pcf --pcf-samples 65", 2, "--pcf-samples", out);
+  expect_error("render --technique pcf --pcf-width -1", 2, "--pcf-width", out);
+  expect_error("render --technique pcss --light-size -0.5", 2, "--light-size", out);
+  expect_error("render --technique pcss --pcss-blocker-samples 0", 2, "--pcss-blocker-samples",
+               out);
+  expect_error("render --technique pcss --sun-angle 90", 2, "--sun-angle", out);
+  expect_error("render --technique msm --soft", 2, "--soft", out);
+  expect_error("render --technique pcss --filter sat --soft", 2, "--soft", out);
+  expect_error("render --technique esm --filter sat --soft", 2, "--soft", out);
+}
+
+TEST(Cli, RendersEveryTechnique) {
+  for (const char* technique : {"none", "hard", "pcf", "pcss"}) {
+    const std::string png = out_path(std::string(technique) + ".png");
+    Result r = run(std::string("render --width 48 --height 32 --shadow-map-size 128 --technique ") +
+                   technique + " -o " + png);
+    EXPECT_EQ(r.status, 0) << technique << ": " << r.err;
+    EXPECT_TRUE(fs::exists(png)) << technique;
+  }
+  const std::string soft = out_path("soft.png");
+  Result r =
+      run("render --width 48 --height 32 --shadow-map-size 128 --technique msm --filter sat "
+          "--soft -o " +
+          soft);
+  EXPECT_EQ(r.status, 0) << r.err;
 }
 
 TEST(Cli, RendersEveryFilteredTechnique) {
@@ -142,9 +168,7 @@ TEST(Cli, BadSceneFiles) {
   fs::create_directories(dir);
   const std::string out = out_path("scene.png");
   expect_error("render --scene " + (dir / "missing.json").string(), 1, "missing.json", out);
-  {
-    std::ofstream(dir / "truncated.json") << R"({"lights": [{"type": "spot"}], "obj)";
-  }
+  { std::ofstream(dir / "truncated.json") << R"({"lights": [{"type": "spot"}], "obj)"; }
   expect_error("render --scene " + (dir / "truncated.json").string(), 1, "truncated.json", out);
   {
     std::ofstream(dir / "badkey.json")

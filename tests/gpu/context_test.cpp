@@ -5,6 +5,7 @@
 #include "gl/embedded_shaders.hpp"
 #include "gl/program.hpp"
 #include "gpu_fixture.hpp"
+#include "shared/bindings.h"
 
 namespace penumbra {
 namespace {
@@ -41,11 +42,21 @@ TEST_F(GpuTest, EveryShaderCompiles) {
   shared_context();
   const std::map<std::string, std::vector<gl::Defines>> compute = {
       {"filter/resolve.comp",
-       {{{"REPRESENTATION", "2"}, {"MSM_QUANTIZED", "0"}, {"IMAGE_FORMAT", "rg32f"}},
-        {{"REPRESENTATION", "3"}, {"MSM_QUANTIZED", "0"}, {"IMAGE_FORMAT", "r32f"}},
-        {{"REPRESENTATION", "4"}, {"MSM_QUANTIZED", "0"}, {"IMAGE_FORMAT", "rgba32f"}},
-        {{"REPRESENTATION", "4"}, {"MSM_QUANTIZED", "1"}, {"IMAGE_FORMAT", "rgba32f"}},
-        {{"REPRESENTATION", "5"}, {"MSM_QUANTIZED", "1"}, {"IMAGE_FORMAT", "rgba16"}}}},
+       {{{"REPRESENTATION", std::to_string(TECHNIQUE_VSM)},
+         {"MSM_QUANTIZED", "0"},
+         {"IMAGE_FORMAT", "rg32f"}},
+        {{"REPRESENTATION", std::to_string(TECHNIQUE_ESM)},
+         {"MSM_QUANTIZED", "0"},
+         {"IMAGE_FORMAT", "r32f"}},
+        {{"REPRESENTATION", std::to_string(TECHNIQUE_MSM)},
+         {"MSM_QUANTIZED", "0"},
+         {"IMAGE_FORMAT", "rgba32f"}},
+        {{"REPRESENTATION", std::to_string(TECHNIQUE_MSM)},
+         {"MSM_QUANTIZED", "1"},
+         {"IMAGE_FORMAT", "rgba32f"}},
+        {{"REPRESENTATION", std::to_string(TECHNIQUE_MSM16)},
+         {"MSM_QUANTIZED", "1"},
+         {"IMAGE_FORMAT", "rgba16"}}}},
       {"filter/gaussian_blur.comp",
        {{{"AXIS", "0"}, {"RADIUS", "1"}, {"IMAGE_FORMAT", "rgba16"}},
         {{"AXIS", "1"}, {"RADIUS", "64"}, {"IMAGE_FORMAT", "rgba32f"}}}},
@@ -68,15 +79,17 @@ TEST_F(GpuTest, EveryShaderCompiles) {
   for (auto& pair : pairs) {
     EXPECT_NO_THROW(gl::Program::graphics(pair[0], pair[1])) << pair[0] << " + " << pair[1];
   }
-  for (int technique = 0; technique <= 5; ++technique) {
-    for (int filter = 0; filter <= 2; ++filter) {
+  for (int technique = TECHNIQUE_NONE; technique <= TECHNIQUE_MSM16; ++technique) {
+    for (int filter = FILTER_NONE; filter <= FILTER_SAT; ++filter) {
       for (const char* quantized : {"0", "1"}) {
-        EXPECT_NO_THROW(gl::Program::graphics(
-            "common/fullscreen.vert", "render/lighting.frag",
-            {{"SHADOW_TECHNIQUE", std::to_string(technique)},
-             {"SHADOW_FILTER", std::to_string(filter)},
-             {"MSM_QUANTIZED", quantized}}))
-            << "lighting, technique " << technique << ", filter " << filter;
+        for (const char* soft : {"0", "1"}) {
+          EXPECT_NO_THROW(gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
+                                                {{"SHADOW_TECHNIQUE", std::to_string(technique)},
+                                                 {"SHADOW_FILTER", std::to_string(filter)},
+                                                 {"MSM_QUANTIZED", quantized},
+                                                 {"SOFT_SHADOWS", soft}}))
+              << "lighting, technique " << technique << ", filter " << filter << ", soft " << soft;
+        }
       }
     }
   }

@@ -48,8 +48,10 @@ GLenum float_format(int channels) {
 }
 
 gl::Texture upload(const HostMap& m) {
-  gl::Texture t(gl::TextureInfo{.format = float_format(m.channels), .width = m.width,
-                                .height = m.height, .label = "test map"});
+  gl::Texture t(gl::TextureInfo{.format = float_format(m.channels),
+                                .width = m.width,
+                                .height = m.height,
+                                .label = "test map"});
   const GLenum layout = m.channels == 1 ? GL_RED : m.channels == 2 ? GL_RG : GL_RGBA;
   glTextureSubImage2D(t.id(), 0, 0, 0, m.width, m.height, layout, GL_FLOAT, m.values.data());
   return t;
@@ -84,8 +86,8 @@ TEST_F(GpuTest, GaussianBlurMatchesDirectConvolution) {
   struct Case {
     int width, height, channels, radius;
   };
-  for (const Case& k : {Case{37, 29, 4, 1}, Case{130, 67, 2, 5}, Case{64, 64, 1, 16},
-                        Case{71, 200, 4, 40}}) {
+  for (const Case& k :
+       {Case{37, 29, 4, 1}, Case{130, 67, 2, 5}, Case{64, 64, 1, 16}, Case{71, 200, 4, 40}}) {
     HostMap map = random_map(k.width, k.height, k.channels, 7);
     gl::Texture source = upload(map);
     GaussianBlurPass blur;
@@ -107,7 +109,9 @@ struct ReferenceSat {
   int width, height, channels;
   std::vector<double> sums;  // (width + 1) x (height + 1), zero first row and column
   explicit ReferenceSat(const HostMap& m)
-      : width(m.width), height(m.height), channels(m.channels),
+      : width(m.width),
+        height(m.height),
+        channels(m.channels),
         sums(static_cast<std::size_t>(m.width + 1) * (m.height + 1) * m.channels, 0.0) {
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x)

@@ -47,8 +47,10 @@ TEST_F(GpuTest, FilteredTechniquesProduceNoNanOrInf) {
       for (int blur : {0, 48}) {
         // The final image evaluates every light's shadow; the map views
         // show each light's map before and after the filter.
-        for (auto [v, light] : {std::pair{View::Final, 0}, {View::Moments, 1},
-                                {View::MomentsFiltered, 0}, {View::MomentsFiltered, 1}}) {
+        for (auto [v, light] : {std::pair{View::Final, 0},
+                                {View::Moments, 1},
+                                {View::MomentsFiltered, 0},
+                                {View::MomentsFiltered, 1}}) {
           {
             renderer.render(small_view(v, light), filtered(t, f, blur));
             Image image = renderer.read_view();
@@ -85,11 +87,11 @@ TEST_F(GpuTest, MomentShadowMapsBeatVarianceShadowMaps) {
       ShadowMetrics msm = measure(renderer, filtered(Technique::Msm, filter, blur), light);
       ShadowMetrics msm16 = measure(renderer, filtered(Technique::Msm16, filter, blur), light);
       const char* name = enum_name<Filter>(kFilterNames, filter).data();
-      std::printf("light %d, %s W=%d:  MAE vsm %.5f msm %.5f msm16 %.5f | leak vsm %.5f msm %.5f "
-                  "msm16 %.5f\n",
-                  light, name, blur, vsm.mean_absolute_error, msm.mean_absolute_error,
-                  msm16.mean_absolute_error, vsm.leak_fraction, msm.leak_fraction,
-                  msm16.leak_fraction);
+      std::printf(
+          "light %d, %s W=%d:  MAE vsm %.5f msm %.5f msm16 %.5f | leak vsm %.5f msm %.5f "
+          "msm16 %.5f\n",
+          light, name, blur, vsm.mean_absolute_error, msm.mean_absolute_error,
+          msm16.mean_absolute_error, vsm.leak_fraction, msm.leak_fraction, msm16.leak_fraction);
       EXPECT_LT(msm.mean_absolute_error, 0.75 * vsm.mean_absolute_error) << name << " " << light;
       EXPECT_LT(msm16.mean_absolute_error, 0.75 * vsm.mean_absolute_error) << name << " " << light;
       if (vsm.leak_fraction > 0.0) {

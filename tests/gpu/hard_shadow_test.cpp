@@ -120,8 +120,8 @@ TEST_F(GpuTest, HardShadowUnderTheBoxAndNoAcneWithDefaultBiases) {
     PlaneStats s = measure(light, shadow);
     const double acne = double(s.lit_darkened) / s.lit;
     std::printf("%s light: umbra %d/%d shadowed, lit plane %d px, acne %.4f%%\n",
-                light.type == LightType::Spot ? "spot" : "directional", s.umbra_shadowed,
-                s.umbra, s.lit, 100.0 * acne);
+                light.type == LightType::Spot ? "spot" : "directional", s.umbra_shadowed, s.umbra,
+                s.lit, 100.0 * acne);
     ASSERT_GT(s.umbra, 100);
     ASSERT_GT(s.lit, 10000);
     EXPECT_EQ(s.umbra_shadowed, s.umbra) << "pixels under the box must be in shadow";
@@ -165,7 +165,7 @@ TEST_F(GpuTest, ContactShadowHasNoGapAtTheFoot) {
   light.cone_degrees = 30.0f;
   light.intensity = 60.0f;
   Scene scene = box_above_plane(light);
-  scene.shapes[1].position.y = kBoxHalf;  // resting on the ground
+  scene.shapes[1].position.y = kBoxHalf;       // resting on the ground
   scene.camera.position = {5.0f, 4.0f, 3.0f};  // looking at the shadowed side
   Renderer renderer(scene);
   RenderSettings rs;

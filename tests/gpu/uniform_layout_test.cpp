@@ -5,6 +5,7 @@
 
 #include "gl/program.hpp"
 #include "gpu_fixture.hpp"
+#include "shared/bindings.h"
 #include "shared/gpu_types.h"
 
 namespace penumbra {
@@ -21,15 +22,17 @@ GLint driver_offset(GLuint program, const std::string& name) {
   return offset;
 }
 
-#define EXPECT_OFFSET(program, instance, type, member) \
+#define EXPECT_OFFSET(program, instance, type, member)                                        \
   EXPECT_EQ(driver_offset(program, instance "." #member), GLint(offsetof(gpu::type, member))) \
       << #type "::" #member
 
 TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   // The lighting pass reads every member of every block.
-  gl::Program lighting = gl::Program::graphics(
-      "common/fullscreen.vert", "render/lighting.frag",
-      {{"SHADOW_TECHNIQUE", "4"}, {"SHADOW_FILTER", "2"}, {"MSM_QUANTIZED", "0"}});
+  gl::Program lighting = gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
+                                               {{"SHADOW_TECHNIQUE", std::to_string(TECHNIQUE_MSM)},
+                                                {"SHADOW_FILTER", std::to_string(FILTER_SAT)},
+                                                {"MSM_QUANTIZED", "0"},
+                                                {"SOFT_SHADOWS", "1"}});
   const GLuint p = lighting.id();
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, constant_bias);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, normal_offset);
@@ -38,6 +41,9 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, blur_radius);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, sat_scale);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, filter_slope_bias);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, source);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, pcf_width);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, pcss_filter_samples);
   EXPECT_OFFSET(p, "frame", GpuFrame, inverse_view_projection);
   EXPECT_OFFSET(p, "frame", GpuFrame, camera_position);
   EXPECT_OFFSET(p, "frame", GpuFrame, viewport);
