@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/bench_command.hpp"
 #include "app/options.hpp"
 #include "app/render_command.hpp"
 #include "core/error.hpp"
@@ -37,6 +38,10 @@ int run_cli(int argc, char** argv) {
   RenderArgs render_args;
   CLI::App* render = app.add_subcommand("render", "render one image of a scene (PNG or EXR)");
   add_render_command_options(*render, render_args);
+  BenchArgs bench_args;
+  CLI::App* bench = app.add_subcommand(
+      "bench", "GPU time of every pass per technique, against a bandwidth yardstick");
+  add_bench_command_options(*bench, bench_args);
 
   try {
     app.parse(argc, argv);
@@ -49,7 +54,7 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
-      what = "a command is required: render (see 'penumbra --help')";
+      what = "a command is required: render or bench (see 'penumbra --help')";
     }
     print_error(what);
     return 2;
@@ -57,6 +62,7 @@ int run_cli(int argc, char** argv) {
 
   try {
     if (render->parsed()) return run_render_command(render_args);
+    if (bench->parsed()) return run_bench_command(bench_args);
   } catch (const UsageError& e) {
     print_error(e.what());
     return 2;

@@ -57,7 +57,8 @@ void GaussianBlurPass::dispatch(const gl::Program& program, const gl::Texture& f
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-void GaussianBlurPass::execute(int light, const gl::Texture& source, int radius) {
+void GaussianBlurPass::execute(int light, const gl::Texture& source, int radius,
+                               gl::GpuProfiler* profiler) {
   if (radius != weights_radius_) {
     std::vector<float> weights = gaussian_weights(radius);
     weights_.update(weights.data(), weights.size() * sizeof(float));
@@ -70,8 +71,14 @@ void GaussianBlurPass::execute(int light, const gl::Texture& source, int radius)
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "gaussian blur");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, weights_.id());
-  dispatch(program(source.format(), 0, radius), source, intermediate_, 0);
-  dispatch(program(source.format(), 1, radius), intermediate_, outputs_[index], 1);
+  {
+    gl::GpuPassScope timed(profiler, gl::GpuPass::FilterHorizontal);
+    dispatch(program(source.format(), 0, radius), source, intermediate_, 0);
+  }
+  {
+    gl::GpuPassScope timed(profiler, gl::GpuPass::FilterVertical);
+    dispatch(program(source.format(), 1, radius), intermediate_, outputs_[index], 1);
+  }
   glPopDebugGroup();
 }
 

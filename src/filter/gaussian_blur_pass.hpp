@@ -6,6 +6,7 @@
 #include <tuple>
 #include <vector>
 
+#include "gl/gpu_profiler.hpp"
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
 
@@ -17,7 +18,8 @@ class GaussianBlurPass {
 
   // Blurs `source` with 2 radius + 1 taps per direction into light
   // `light`'s output (same size and format as the source). radius >= 1.
-  void execute(int light, const gl::Texture& source, int radius);
+  void execute(int light, const gl::Texture& source, int radius,
+               gl::GpuProfiler* profiler = nullptr);
 
   // Valid after execute() for that light.
   [[nodiscard]] const gl::Texture& output(int light) const { return outputs_.at(light); }

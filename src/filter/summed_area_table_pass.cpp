@@ -28,7 +28,7 @@ const gl::Program& SummedAreaTablePass::program(const char* path, GLenum format)
   return it->second;
 }
 
-void SummedAreaTablePass::execute(int light, const gl::Texture& source) {
+void SummedAreaTablePass::execute(int light, const gl::Texture& source, gl::GpuProfiler* profiler) {
   const GLenum format = integer_format_with_channels_of(source.format());
   const std::size_t index = static_cast<std::size_t>(light);
   if (tables_.size() <= index) tables_.resize(index + 1);
@@ -42,19 +42,24 @@ void SummedAreaTablePass::execute(int light, const gl::Texture& source) {
   }
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "summed-area table");
-  const gl::Program& rows = program("filter/sat_rows.comp", format);
-  rows.use();
-  glProgramUniform1f(rows.id(), 0, static_cast<float>(sat_fixed_point_scale()));
-  glBindTextureUnit(UNIT_COMPUTE_INPUT, source.id());
-  glBindSampler(UNIT_COMPUTE_INPUT, 0);
-  glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-  glDispatchCompute(1, static_cast<GLuint>(source.height()), 1);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-
-  program("filter/sat_columns.comp", format).use();
-  glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_FALSE, 0, GL_READ_WRITE, format);
-  glDispatchCompute(groups(source.width(), 64), 1, 1);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  {
+    gl::GpuPassScope timed(profiler, gl::GpuPass::SatRows);
+    const gl::Program& rows = program("filter/sat_rows.comp", format);
+    rows.use();
+    glProgramUniform1f(rows.id(), 0, static_cast<float>(sat_fixed_point_scale()));
+    glBindTextureUnit(UNIT_COMPUTE_INPUT, source.id());
+    glBindSampler(UNIT_COMPUTE_INPUT, 0);
+    glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+    glDispatchCompute(groups(source.height(), 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+  {
+    gl::GpuPassScope timed(profiler, gl::GpuPass::SatColumns);
+    program("filter/sat_columns.comp", format).use();
+    glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_FALSE, 0, GL_READ_WRITE, format);
+    glDispatchCompute(groups(source.width(), 64), 1, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
   glPopDebugGroup();
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/settings.hpp"
+#include "gl/gpu_profiler.hpp"
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
 
@@ -20,7 +21,7 @@ double sat_fixed_point_scale();
 class SummedAreaTablePass {
  public:
   // Builds light `light`'s table from `source` (values in [0, 1]).
-  void execute(int light, const gl::Texture& source);
+  void execute(int light, const gl::Texture& source, gl::GpuProfiler* profiler = nullptr);
 
   // Valid after execute() for that light: an unsigned-integer texture.
   [[nodiscard]] const gl::Texture& table(int light) const { return tables_.at(light); }

@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -30,23 +31,6 @@ std::string lower_extension(const std::string& path) {
 float srgb_encode(float linear) {
   linear = std::clamp(linear, 0.0f, 1.0f);
   return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
-}
-
-// A temporary name beside the target, unique to this process.
-std::string temporary_name(const std::string& path) {
-  fs::path p(path);
-  std::string name = ".";
-  name.append(p.filename().string()).append(".tmp").append(std::to_string(getpid()));
-  return (p.parent_path() / name).string();
-}
-
-void commit(const std::string& temporary, const std::string& path) {
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw RuntimeError("cannot write '" + path + "': " + ec.message());
-  }
 }
 
 }  // namespace
@@ -82,14 +66,14 @@ void write_png(const Image& image, const std::string& path, PngEncoding encoding
           static_cast<std::uint8_t>(std::lround(v * 255.0f));
     }
   }
-  const std::string temporary = temporary_name(path);
+  const std::string temporary = temporary_path_for(path);
   if (!stbi_write_png(temporary.c_str(), image.width, image.height, 3, bytes.data(),
                       image.width * 3)) {
     std::error_code ec;
     fs::remove(temporary, ec);
     throw RuntimeError("cannot write '" + path + "'");
   }
-  commit(temporary, path);
+  commit_temporary(temporary, path);
 }
 
 void write_exr(const Image& image, const std::string& path) {
@@ -123,7 +107,7 @@ void write_exr(const Image& image, const std::string& path) {
   header.requested_pixel_types = requested;
   header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
 
-  const std::string temporary = temporary_name(path);
+  const std::string temporary = temporary_path_for(path);
   const char* err = nullptr;
   int result = SaveEXRImageToFile(&exr, &header, temporary.c_str(), &err);
   if (result != TINYEXR_SUCCESS) {
@@ -133,7 +117,7 @@ void write_exr(const Image& image, const std::string& path) {
     fs::remove(temporary, ec);
     throw RuntimeError("cannot write '" + path + "': " + why);
   }
-  commit(temporary, path);
+  commit_temporary(temporary, path);
 }
 
 void write_image(const Image& image, const std::string& path, PngEncoding png_encoding) {

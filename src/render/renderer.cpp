@@ -123,7 +123,8 @@ glm::mat4 Renderer::camera_projection(int width, int height) const {
                           far_plane);
 }
 
-void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow) {
+void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow,
+                      gl::GpuProfiler* profiler) {
   validate(render);
   validate(shadow);
   GLint max_texture = 0;
@@ -199,20 +200,24 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, poisson_.id());
 
   if (shadow.technique != Technique::None || is_map_view(render.view)) {
+    gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
     shadow_pass_.execute(gpu_scene_, light_count, shadow.map_size);
   }
   std::array<GLuint, MAX_LIGHTS> filtered{};
   if (is_filterable(shadow.technique)) {
     const int filter = filter_define(shadow);
     for (int i = 0; i < light_count; ++i) {
-      resolve_pass_.execute(i, shadow_pass_.depth_map(i), shadow);
+      {
+        gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
+        resolve_pass_.execute(i, shadow_pass_.depth_map(i), shadow);
+      }
       const gl::Texture& representation = resolve_pass_.representation(i);
       GLuint map = representation.id();
       if (filter == FILTER_GAUSSIAN) {
-        blur_pass_.execute(i, representation, shadow.blur);
+        blur_pass_.execute(i, representation, shadow.blur, profiler);
         map = blur_pass_.output(i).id();
       } else if (filter == FILTER_SAT) {
-        sat_pass_.execute(i, representation);
+        sat_pass_.execute(i, representation, profiler);
         map = sat_pass_.table(i).id();
       }
       filtered[static_cast<std::size_t>(i)] = map;
@@ -230,7 +235,11 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
                      reference_weights_.id());
   }
   if (!is_map_view(render.view)) {
-    gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
+    {
+      gl::GpuPassScope timed(profiler, gl::GpuPass::GBuffer);
+      gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
+    }
+    gl::GpuPassScope timed(profiler, gl::GpuPass::Lighting);
     lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow, render.width,
                            render.height);
   }
@@ -263,6 +272,11 @@ Image Renderer::read_view() {
   }
   const gl::Texture& out = lighting_pass_.output();
   return read_texture(out.id(), out.width(), out.height(), GL_RGBA);
+}
+
+const gl::Texture& Renderer::shadow_map_texture(int light) const {
+  return is_filterable(last_shadow_.technique) ? resolve_pass_.representation(light)
+                                               : shadow_pass_.depth_map(light);
 }
 
 Image Renderer::read_shadow_map(int light) const {

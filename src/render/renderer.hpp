@@ -8,6 +8,7 @@
 #include "core/settings.hpp"
 #include "filter/gaussian_blur_pass.hpp"
 #include "filter/summed_area_table_pass.hpp"
+#include "gl/gpu_profiler.hpp"
 #include "gl/resources.hpp"
 #include "io/image.hpp"
 #include "render/gbuffer_pass.hpp"
@@ -28,7 +29,9 @@ class Renderer {
 
   // Renders one frame. Throws UsageError for settings the GPU cannot honour
   // (a shadow map larger than its texture limit, a light index out of range).
-  void render(const RenderSettings& render, const ShadowSettings& shadow);
+  // With a profiler, each pass is timed (the caller begins and ends the frame).
+  void render(const RenderSettings& render, const ShadowSettings& shadow,
+              gl::GpuProfiler* profiler = nullptr);
 
   // The view chosen in the last render(): the lighting pass's output for
   // camera views; for map views, the light's z-bar map (shadow-map) or its
@@ -37,6 +40,10 @@ class Renderer {
   [[nodiscard]] Image read_view();
   // Light i's shadow map (z-bar in every channel), as last rendered.
   [[nodiscard]] Image read_shadow_map(int light) const;
+
+  // Light i's map as the filters see it: the technique's representation
+  // for vsm/esm/msm/msm16, the z-bar depth map otherwise. As last rendered.
+  [[nodiscard]] const gl::Texture& shadow_map_texture(int light) const;
 
   [[nodiscard]] const Scene& scene() const { return scene_; }
   [[nodiscard]] const TriangleMesh& mesh() const { return mesh_; }

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace {
@@ -46,8 +47,8 @@ std::string out_path(const std::string& name) {
 }
 
 void expect_error(const std::string& args, int status, const std::string& culprit,
-                  const std::string& output) {
-  Result r = run(args + " -o " + output);
+                  const std::string& output, const std::string& output_flag = "-o") {
+  Result r = run(args + " " + output_flag + " " + output);
   EXPECT_EQ(r.status, status) << args << "\n" << r.err;
   EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << args << "\n" << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected:\n" << r.err;
@@ -104,6 +105,49 @@ TEST(Cli, FilteredTechniqueUsageErrors) {
   expect_error("render --technique msm --soft", 2, "--soft", out);
   expect_error("render --technique pcss --filter sat --soft", 2, "--soft", out);
   expect_error("render --technique esm --filter sat --soft", 2, "--soft", out);
+}
+
+// A smoke test, not a speed test: every pass is present with a time.
+TEST(Cli, BenchWritesJsonWithEveryPass) {
+  const std::string json_path = out_path("bench.json");
+  Result r =
+      run("bench --frames 2 --warmup 1 --technique msm,vsm --filter gaussian --blur 2 "
+          "--width 64 --height 48 --shadow-map-size 256 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_FALSE(j.at("renderer").get<std::string>().empty());
+  ASSERT_EQ(j.at("runs").size(), 2u);
+  for (const auto& run : j.at("runs")) {
+    for (const char* pass : {"shadow depth", "resolve", "filter H", "filter V", "G-buffer",
+                             "lighting", "copy (yardstick)"}) {
+      ASSERT_TRUE(run.at("passes").contains(pass)) << pass;
+      const auto& p = run.at("passes").at(pass);
+      EXPECT_GT(p.at("wall_median_ms").get<double>(), 0.0) << pass;
+      EXPECT_GE(p.at("median_ms").get<double>(), 0.0) << pass;
+      EXPECT_LE(p.at("min_ms").get<double>(), p.at("max_ms").get<double>()) << pass;
+    }
+    EXPECT_GT(run.at("total").at("wall_median_ms").get<double>(), 0.0);
+    EXPECT_TRUE(run.at("times_the_copy").contains("filter H"));
+  }
+  r =
+      run("bench --frames 1 --warmup 0 --technique msm --filter sat --width 32 --height 32 "
+          "--shadow-map-size 128 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream again(json_path);
+  const nlohmann::json sat = nlohmann::json::parse(again);
+  EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT rows"));
+  EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT columns"));
+}
+
+TEST(Cli, BenchUsageErrors) {
+  const std::string json_path = out_path("bench-bad.json");
+  expect_error("bench --technique msm,blurry", 2, "blurry", json_path, "--json");
+  expect_error("bench --sweep sideways", 2, "--sweep", json_path, "--json");
+  expect_error("bench --frames 0", 2, "--frames", json_path, "--json");
+  expect_error("bench", 2, "does not exist", "/no/such/folder/b.json", "--json");
 }
 
 TEST(Cli, RendersEveryTechnique) {

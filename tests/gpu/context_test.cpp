@@ -63,6 +63,7 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       {"filter/sat_rows.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "rg32ui"}}}},
       {"filter/sat_columns.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "r32ui"}}}},
       {"filter/sat_box.comp", {{}}},
+      {"filter/copy.comp", {{{"IMAGE_FORMAT", "r32f"}}, {{"IMAGE_FORMAT", "rgba16"}}}},
       {"test/shadow_math.comp", {{}}},
   };
   for (const gl::EmbeddedFile& file : gl::embedded_shader_files()) {

@@ -1,0 +1,57 @@
+// CPU-side hot paths (Google Benchmark): the moment-math references, scene
+// building and upload preparation, light-view fitting, the Poisson set.
+// GPU passes are measured by `penumbra bench`.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "scene/builtin_scenes.hpp"
+#include "scene/mesh.hpp"
+#include "shadow/light_view.hpp"
+#include "shadow/moment_math.hpp"
+#include "shadow/poisson_disc.hpp"
+
+namespace penumbra {
+namespace {
+
+void BM_HamburgerReference(benchmark::State& state) {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<glm::dvec4> moments;
+  for (int i = 0; i < 1024; ++i) {
+    const double a = u(rng), b = u(rng), w = u(rng);
+    auto m = [&](int k) { return w * std::pow(a, k) + (1 - w) * std::pow(b, k); };
+    moments.push_back({m(1), m(2), m(3), m(4)});
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        msm_hamburger_reference(moments[i++ % moments.size()], 0.6, 3e-5, kMsmBias32));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_HamburgerReference);
+
+void BM_BuildDefaultSceneMesh(benchmark::State& state) {
+  const Scene scene = *builtin_scene("default");
+  for (auto _ : state) benchmark::DoNotOptimize(build_scene_mesh(scene));
+}
+BENCHMARK(BM_BuildDefaultSceneMesh);
+
+void BM_FitSpotLight(benchmark::State& state) {
+  const Scene scene = *builtin_scene("default");
+  const TriangleMesh mesh = build_scene_mesh(scene);
+  for (auto _ : state) benchmark::DoNotOptimize(fit_light_view(scene.lights[0], mesh, 2048));
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(mesh.indices.size() / 3));
+}
+BENCHMARK(BM_FitSpotLight);
+
+void BM_PoissonSamples(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(poisson_square_samples());
+}
+BENCHMARK(BM_PoissonSamples);
+
+}  // namespace
+}  // namespace penumbra
+
+BENCHMARK_MAIN();

@@ -1,0 +1,283 @@
+#include "app/bench_command.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
+
+#include "core/error.hpp"
+#include "filter/texture_copy_pass.hpp"
+#include "gl/context.hpp"
+#include "gl/gpu_profiler.hpp"
+#include "io/atomic_file.hpp"
+#include "io/image.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_file.hpp"
+
+namespace penumbra {
+
+namespace {
+
+using gl::GpuPass;
+constexpr auto kPassCount = static_cast<std::size_t>(GpuPass::Count);
+
+struct Spread {
+  double median = 0.0, min = 0.0, max = 0.0;
+};
+
+Spread spread_of(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  Spread s;
+  const std::size_t n = values.size();
+  s.median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  s.min = values.front();
+  s.max = values.back();
+  return s;
+}
+
+struct Samples {
+  std::vector<double> timer_ms, wall_ms;
+};
+
+struct Run {
+  ShadowSettings shadow;
+  std::array<Samples, kPassCount> passes;
+  std::array<bool, kPassCount> ran{};
+  Samples total;
+};
+
+// Software rasterizers run compute dispatches outside their timer queries
+// (llvmpipe's read near 0 across them): there only the serialized wall
+// clock measures the passes. On a GPU the timers do, without the latency
+// of a round trip that the wall clock adds to every pass.
+bool timers_miss_compute(const std::string& renderer) {
+  for (const char* software : {"llvmpipe", "softpipe", "SwiftShader"}) {
+    if (renderer.find(software) != std::string::npos) return true;
+  }
+  return false;
+}
+
+// The filter passes measured against the copy.
+struct Ratios {
+  const char* clock = "timer";
+  std::vector<std::pair<std::string, double>> values;
+};
+
+Ratios ratios_of(const Run& run, bool timer) {
+  Ratios r;
+  const Samples& copy = run.passes[static_cast<std::size_t>(GpuPass::BandwidthCopy)];
+  r.clock = timer ? "timer" : "wall";
+  const double copy_ms = spread_of(timer ? copy.timer_ms : copy.wall_ms).median;
+  if (copy_ms <= 0.0) return r;
+  for (GpuPass p : {GpuPass::FilterHorizontal, GpuPass::FilterVertical, GpuPass::SatRows,
+                    GpuPass::SatColumns}) {
+    const auto i = static_cast<std::size_t>(p);
+    if (!run.ran[i]) continue;
+    const Samples& s = run.passes[i];
+    r.values.emplace_back(std::string(gl::kGpuPassNames[i]),
+                          spread_of(timer ? s.timer_ms : s.wall_ms).median / copy_ms);
+  }
+  return r;
+}
+
+std::vector<Technique> parse_techniques(const std::string& list) {
+  std::vector<Technique> out;
+  if (list == "all") {
+    for (const auto& [t, name] : kTechniqueNames) {
+      if (t != Technique::None) out.push_back(t);
+    }
+    return out;
+  }
+  std::stringstream in(list);
+  std::string name;
+  while (std::getline(in, name, ',')) {
+    auto t = parse_enum<Technique>(kTechniqueNames, name);
+    if (!t) {
+      throw UsageError("unknown technique '" + name + "' in --technique (choose from " +
+                       enum_choices<Technique>(kTechniqueNames) +
+                       ", a comma-separated list, or all)");
+    }
+    out.push_back(*t);
+  }
+  if (out.empty()) throw UsageError("--technique lists no technique");
+  return out;
+}
+
+// The settings of each run: every technique, and the sweep's values.
+std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
+                                      const std::vector<Technique>& techniques) {
+  std::vector<ShadowSettings> runs;
+  std::vector<int> values = {0};
+  if (args.sweep == "map-size") values = {512, 1024, 2048, 4096};
+  if (args.sweep == "blur") values = {0, 1, 2, 4, 8, 16, 32};
+  for (Technique t : techniques) {
+    for (int v : values) {
+      ShadowSettings s = args.shadow;
+      s.technique = t;
+      if (args.sweep == "map-size") s.map_size = v;
+      if (args.sweep == "blur") s.blur = v;
+      if (t == Technique::Esm && s.filter == Filter::Sat) continue;  // refused by validate()
+      if (s.soft && (!is_filterable(t) || t == Technique::Esm)) s.soft = false;
+      runs.push_back(s);
+    }
+  }
+  if (runs.empty()) throw UsageError("nothing to measure: esm cannot use --filter sat");
+  return runs;
+}
+
+std::string describe(const ShadowSettings& s) {
+  std::ostringstream out;
+  out << enum_name<Technique>(kTechniqueNames, s.technique);
+  if (is_filterable(s.technique)) {
+    out << " " << enum_name<Filter>(kFilterNames, s.filter) << " W=" << s.blur
+        << (s.soft ? " soft" : "");
+  }
+  out << ", map " << s.map_size;
+  return out.str();
+}
+
+void print_run(const Run& run, int frames, bool timer) {
+  std::printf("\n%s (%d frames; ms: median [min, max])\n", describe(run.shadow).c_str(), frames);
+  std::printf("  %-18s %27s %27s\n", "pass", "GPU timer queries", "wall clock, serialized");
+  auto row = [](std::string_view name, const Samples& samples) {
+    const Spread t = spread_of(samples.timer_ms), w = spread_of(samples.wall_ms);
+    std::printf("  %-18.*s %9.3f [%7.3f, %7.3f] %9.3f [%7.3f, %7.3f]\n",
+                static_cast<int>(name.size()), name.data(), t.median, t.min, t.max, w.median, w.min,
+                w.max);
+  };
+  for (std::size_t p = 0; p < kPassCount; ++p) {
+    if (run.ran[p]) row(gl::kGpuPassNames[p], run.passes[p]);
+  }
+  row("total (frame)", run.total);
+  const Ratios ratios = ratios_of(run, timer);
+  for (const auto& [name, ratio] : ratios.values) {
+    std::printf("  %-18s %8.2fx the copy (%s)\n", name.c_str(), ratio, ratios.clock);
+  }
+}
+
+nlohmann::json run_json(const Run& run, int frames, bool timer) {
+  nlohmann::json j;
+  const ShadowSettings& s = run.shadow;
+  j["technique"] = std::string(enum_name<Technique>(kTechniqueNames, s.technique));
+  j["filter"] = std::string(enum_name<Filter>(kFilterNames, s.filter));
+  j["blur"] = s.blur;
+  j["soft"] = s.soft;
+  j["shadow_map_size"] = s.map_size;
+  j["frames"] = frames;
+  auto samples_json = [](const Samples& samples) {
+    const Spread t = spread_of(samples.timer_ms), w = spread_of(samples.wall_ms);
+    return nlohmann::json{{"median_ms", t.median}, {"min_ms", t.min},
+                          {"max_ms", t.max},       {"wall_median_ms", w.median},
+                          {"wall_min_ms", w.min},  {"wall_max_ms", w.max}};
+  };
+  nlohmann::json passes = nlohmann::json::object();
+  for (std::size_t p = 0; p < kPassCount; ++p) {
+    if (run.ran[p]) passes[std::string(gl::kGpuPassNames[p])] = samples_json(run.passes[p]);
+  }
+  j["passes"] = passes;
+  j["total"] = samples_json(run.total);
+  const Ratios ratios = ratios_of(run, timer);
+  j["times_the_copy"] = nlohmann::json::object();
+  for (const auto& [name, ratio] : ratios.values) j["times_the_copy"][name] = ratio;
+  j["ratio_clock"] = ratios.clock;
+  return j;
+}
+
+}  // namespace
+
+void add_bench_command_options(CLI::App& command, BenchArgs& args) {
+  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
+      ->capture_default_str();
+  command
+      .add_option("--frames", args.frames, "frames measured per configuration, after the warm-up")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  command.add_option("--warmup", args.warmup, "frames rendered before measuring")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  command
+      .add_option("--sweep", args.sweep,
+                  "none, map-size (512, 1024, 2048, 4096) or blur (W = 0, 1, 2, 4, 8, 16, 32)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "map-size", "blur"}));
+  command.add_option("--json", args.json, "also write the numbers to this JSON file");
+  add_render_options(command, args.render, args.named);
+  add_shadow_options(command, args.shadow, args.named);
+  // Bench takes a list of techniques: replace the single-name option's text.
+  command.get_option("--technique")
+      ->description("techniques to measure: a name, a comma-separated list, or all");
+  args.named.technique = args.techniques;
+}
+
+int run_bench_command(BenchArgs& args) {
+  const std::vector<Technique> techniques = parse_techniques(args.named.technique);
+  args.named.technique = "hard";  // parsed above; the rest of the named options as usual
+  parse_named_options(args.named, args.shadow, args.render);
+  if (!args.json.empty()) check_output_path(args.json);
+  const std::vector<ShadowSettings> plan = plan_runs(args, techniques);
+  for (const ShadowSettings& s : plan) validate(s);
+  validate(args.render);
+  Scene scene = resolve_scene(args.scene);
+
+  auto context = gl::Context::create_headless();
+  std::printf("penumbra bench: %s (%s, %s)\n", context->renderer().c_str(),
+              context->vendor().c_str(), context->version().c_str());
+  std::printf("scene %s, view %dx%d\n", scene.name.c_str(), args.render.width, args.render.height);
+
+  const bool timer_clock = !timers_miss_compute(context->renderer());
+  if (!timer_clock) {
+    std::printf("(timer queries miss compute work on this renderer: ratios use the wall clock)\n");
+  }
+  Renderer renderer(scene);
+  TextureCopyPass copy;
+  gl::GpuProfiler profiler(2, /*serialize=*/true);
+  std::vector<Run> runs;
+  for (const ShadowSettings& settings : plan) {
+    Run run;
+    run.shadow = settings;
+    for (int frame = 0; frame < args.warmup + args.frames; ++frame) {
+      profiler.begin_frame();
+      renderer.render(args.render, settings, &profiler);
+      {
+        gl::GpuPassScope timed(&profiler, GpuPass::BandwidthCopy);
+        copy.execute(renderer.shadow_map_texture(0));
+      }
+      profiler.end_frame();
+      // Waiting here keeps frames from overlapping, so each pass is timed
+      // alone; a benchmark may wait, a frame loop does not.
+      std::optional<gl::GpuFrameTimes> times = profiler.read(true);
+      if (!times || frame < args.warmup) continue;
+      for (std::size_t p = 0; p < kPassCount; ++p) {
+        if (!times->ran[p]) continue;
+        run.ran[p] = true;
+        run.passes[p].timer_ms.push_back(times->pass_ms[p]);
+        run.passes[p].wall_ms.push_back(times->pass_wall_ms[p]);
+      }
+      run.total.timer_ms.push_back(times->total_ms);
+      run.total.wall_ms.push_back(times->total_wall_ms);
+    }
+    if (context->error_count() > 0) {
+      throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
+                         " error(s); last: " + context->last_error());
+    }
+    print_run(run, args.frames, timer_clock);
+    runs.push_back(std::move(run));
+  }
+
+  if (!args.json.empty()) {
+    nlohmann::json j;
+    j["renderer"] = context->renderer();
+    j["vendor"] = context->vendor();
+    j["version"] = context->version();
+    j["scene"] = scene.name;
+    j["width"] = args.render.width;
+    j["height"] = args.render.height;
+    j["runs"] = nlohmann::json::array();
+    for (const Run& run : runs) j["runs"].push_back(run_json(run, args.frames, timer_clock));
+    write_text_file(args.json, j.dump(2) + "\n");
+  }
+  return 0;
+}
+
+}  // namespace penumbra

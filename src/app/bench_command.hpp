@@ -1,0 +1,29 @@
+#pragma once
+// `penumbra bench`: GPU time of every pass, per technique, with a
+// bandwidth yardstick, and sweeps of the map size and the filter width.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "app/options.hpp"
+#include "core/settings.hpp"
+
+namespace penumbra {
+
+struct BenchArgs {
+  std::string scene = "default";
+  std::string techniques = "msm";  // a name, a comma-separated list, or "all"
+  std::string sweep = "none";      // none, map-size or blur
+  int frames = 20;
+  int warmup = 3;
+  std::string json;
+  RenderSettings render;
+  ShadowSettings shadow;
+  NamedOptions named;
+};
+
+void add_bench_command_options(CLI::App& command, BenchArgs& args);
+
+// Throws UsageError or RuntimeError.
+int run_bench_command(BenchArgs& args);
+
+}  // namespace penumbra

@@ -1,0 +1,32 @@
+#include "filter/texture_copy_pass.hpp"
+
+#include "shadow/representation.hpp"
+#include "shared/bindings.h"
+
+namespace penumbra {
+
+void TextureCopyPass::execute(const gl::Texture& source) {
+  const GLenum format = source.format() == GL_DEPTH_COMPONENT32F ? GL_R32F : source.format();
+  auto it = programs_.find(format);
+  if (it == programs_.end()) {
+    it = programs_
+             .emplace(format,
+                      gl::Program::compute("filter/copy.comp",
+                                           {{"IMAGE_FORMAT", image_format_qualifier(format)}}))
+             .first;
+  }
+  if (!output_ || output_.width() != source.width() || output_.height() != source.height() ||
+      output_.format() != format) {
+    output_ = gl::Texture(gl::TextureInfo{
+        .format = format, .width = source.width(), .height = source.height(), .label = "copy"});
+  }
+  it->second.use();
+  glBindTextureUnit(UNIT_COMPUTE_INPUT, source.id());
+  glBindSampler(UNIT_COMPUTE_INPUT, 0);
+  glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+  glDispatchCompute(static_cast<GLuint>((source.width() + 15) / 16),
+                    static_cast<GLuint>((source.height() + 15) / 16), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,22 @@
+#pragma once
+// A compute copy of a texture (shaders/filter/copy.comp): one read and one
+// write per texel, the bandwidth yardstick the filter passes are measured
+// against. Depth maps are copied into R32F (the same bytes per texel).
+#include <map>
+
+#include "gl/program.hpp"
+#include "gl/resources.hpp"
+
+namespace penumbra {
+
+class TextureCopyPass {
+ public:
+  void execute(const gl::Texture& source);
+  [[nodiscard]] const gl::Texture& output() const { return output_; }
+
+ private:
+  std::map<GLenum, gl::Program> programs_;
+  gl::Texture output_;
+};
+
+}  // namespace penumbra
