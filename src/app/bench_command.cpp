@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "filter/texture_copy_pass.hpp"
 #include "gl/context.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
+#include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
 
@@ -20,66 +20,6 @@ namespace penumbra {
 namespace {
 
 using gl::GpuPass;
-constexpr auto kPassCount = static_cast<std::size_t>(GpuPass::Count);
-
-struct Spread {
-  double median = 0.0, min = 0.0, max = 0.0;
-};
-
-Spread spread_of(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  Spread s;
-  const std::size_t n = values.size();
-  s.median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-  s.min = values.front();
-  s.max = values.back();
-  return s;
-}
-
-struct Samples {
-  std::vector<double> timer_ms, wall_ms;
-};
-
-struct Run {
-  ShadowSettings shadow;
-  std::array<Samples, kPassCount> passes;
-  std::array<bool, kPassCount> ran{};
-  Samples total;
-};
-
-// Software rasterizers run compute dispatches outside their timer queries
-// (llvmpipe's read near 0 across them): there only the serialized wall
-// clock measures the passes. On a GPU the timers do, without the latency
-// of a round trip that the wall clock adds to every pass.
-bool timers_miss_compute(const std::string& renderer) {
-  for (const char* software : {"llvmpipe", "softpipe", "SwiftShader"}) {
-    if (renderer.find(software) != std::string::npos) return true;
-  }
-  return false;
-}
-
-// The filter passes measured against the copy.
-struct Ratios {
-  const char* clock = "timer";
-  std::vector<std::pair<std::string, double>> values;
-};
-
-Ratios ratios_of(const Run& run, bool timer) {
-  Ratios r;
-  const Samples& copy = run.passes[static_cast<std::size_t>(GpuPass::BandwidthCopy)];
-  r.clock = timer ? "timer" : "wall";
-  const double copy_ms = spread_of(timer ? copy.timer_ms : copy.wall_ms).median;
-  if (copy_ms <= 0.0) return r;
-  for (GpuPass p : {GpuPass::FilterHorizontal, GpuPass::FilterVertical, GpuPass::SatRows,
-                    GpuPass::SatColumns}) {
-    const auto i = static_cast<std::size_t>(p);
-    if (!run.ran[i]) continue;
-    const Samples& s = run.passes[i];
-    r.values.emplace_back(std::string(gl::kGpuPassNames[i]),
-                          spread_of(timer ? s.timer_ms : s.wall_ms).median / copy_ms);
-  }
-  return r;
-}
 
 std::vector<Technique> parse_techniques(const std::string& list) {
   std::vector<Technique> out;
@@ -137,7 +77,7 @@ std::string describe(const ShadowSettings& s) {
   return out.str();
 }
 
-void print_run(const Run& run, int frames, bool timer) {
+void print_run(const PassTimes& run, int frames, bool timer) {
   std::printf("\n%s (%d frames; ms: median [min, max])\n", describe(run.shadow).c_str(), frames);
   std::printf("  %-18s %27s %27s\n", "pass", "GPU timer queries", "wall clock, serialized");
   auto row = [](std::string_view name, const Samples& samples) {
@@ -150,13 +90,13 @@ void print_run(const Run& run, int frames, bool timer) {
     if (run.ran[p]) row(gl::kGpuPassNames[p], run.passes[p]);
   }
   row("total (frame)", run.total);
-  const Ratios ratios = ratios_of(run, timer);
+  const CopyRatios ratios = copy_ratios(run, timer);
   for (const auto& [name, ratio] : ratios.values) {
     std::printf("  %-18s %8.2fx the copy (%s)\n", name.c_str(), ratio, ratios.clock);
   }
 }
 
-nlohmann::json run_json(const Run& run, int frames, bool timer) {
+nlohmann::json run_json(const PassTimes& run, int frames, bool timer) {
   nlohmann::json j;
   const ShadowSettings& s = run.shadow;
   j["technique"] = std::string(enum_name<Technique>(kTechniqueNames, s.technique));
@@ -177,7 +117,7 @@ nlohmann::json run_json(const Run& run, int frames, bool timer) {
   }
   j["passes"] = passes;
   j["total"] = samples_json(run.total);
-  const Ratios ratios = ratios_of(run, timer);
+  const CopyRatios ratios = copy_ratios(run, timer);
   j["times_the_copy"] = nlohmann::json::object();
   for (const auto& [name, ratio] : ratios.values) j["times_the_copy"][name] = ratio;
   j["ratio_clock"] = ratios.clock;
@@ -230,33 +170,9 @@ int run_bench_command(BenchArgs& args) {
     std::printf("(timer queries miss compute work on this renderer: ratios use the wall clock)\n");
   }
   Renderer renderer(scene);
-  TextureCopyPass copy;
-  gl::GpuProfiler profiler(2, /*serialize=*/true);
-  std::vector<Run> runs;
+  std::vector<PassTimes> runs;
   for (const ShadowSettings& settings : plan) {
-    Run run;
-    run.shadow = settings;
-    for (int frame = 0; frame < args.warmup + args.frames; ++frame) {
-      profiler.begin_frame();
-      renderer.render(args.render, settings, &profiler);
-      {
-        gl::GpuPassScope timed(&profiler, GpuPass::BandwidthCopy);
-        copy.execute(renderer.shadow_map_texture(0));
-      }
-      profiler.end_frame();
-      // Waiting here keeps frames from overlapping, so each pass is timed
-      // alone; a benchmark may wait, a frame loop does not.
-      std::optional<gl::GpuFrameTimes> times = profiler.read(true);
-      if (!times || frame < args.warmup) continue;
-      for (std::size_t p = 0; p < kPassCount; ++p) {
-        if (!times->ran[p]) continue;
-        run.ran[p] = true;
-        run.passes[p].timer_ms.push_back(times->pass_ms[p]);
-        run.passes[p].wall_ms.push_back(times->pass_wall_ms[p]);
-      }
-      run.total.timer_ms.push_back(times->total_ms);
-      run.total.wall_ms.push_back(times->total_wall_ms);
-    }
+    PassTimes run = measure_pass_times(renderer, args.render, settings, args.frames, args.warmup);
     if (context->error_count() > 0) {
       throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
                          " error(s); last: " + context->last_error());
@@ -274,7 +190,7 @@ int run_bench_command(BenchArgs& args) {
     j["width"] = args.render.width;
     j["height"] = args.render.height;
     j["runs"] = nlohmann::json::array();
-    for (const Run& run : runs) j["runs"].push_back(run_json(run, args.frames, timer_clock));
+    for (const PassTimes& run : runs) j["runs"].push_back(run_json(run, args.frames, timer_clock));
     write_text_file(args.json, j.dump(2) + "\n");
   }
   return 0;

@@ -42,8 +42,7 @@ int run_render_command(RenderArgs& args) {
     throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
                        " error(s); last: " + context->last_error());
   }
-  write_image(image, args.output,
-              args.render.view == View::Final ? PngEncoding::Srgb : PngEncoding::Linear);
+  write_image(image, args.output, png_encoding_for(args.render.view));
   return 0;
 }
 

@@ -82,6 +82,10 @@ int view_define(View view) {
 
 }  // namespace
 
+PngEncoding png_encoding_for(View view) {
+  return view == View::Final || view == View::Albedo ? PngEncoding::Srgb : PngEncoding::Linear;
+}
+
 Renderer::Renderer(const Scene& scene)
     : scene_(scene),
       mesh_(build_scene_mesh(scene)),

@@ -22,6 +22,10 @@
 
 namespace penumbra {
 
+// How a view's values become 8-bit PNG: colour through the sRGB curve,
+// data (shadow factors, depths, moments, normals) as they are.
+PngEncoding png_encoding_for(View view);
+
 class Renderer {
  public:
   // Uploads the scene. Needs a current OpenGL 4.5 context.
