@@ -6,6 +6,7 @@
 
 #include "app/bench_command.hpp"
 #include "app/options.hpp"
+#include "app/report_command.hpp"
 #include "app/render_command.hpp"
 #include "core/error.hpp"
 
@@ -42,6 +43,10 @@ int run_cli(int argc, char** argv) {
   CLI::App* bench = app.add_subcommand(
       "bench", "GPU time of every pass per technique, against a bandwidth yardstick");
   add_bench_command_options(*bench, bench_args);
+  ReportArgs report_args;
+  CLI::App* report = app.add_subcommand(
+      "report", "the whole study (every technique, sweeps, errors, timings) as one HTML page");
+  add_report_command_options(*report, report_args);
 
   try {
     app.parse(argc, argv);
@@ -54,7 +59,7 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
-      what = "a command is required: render or bench (see 'penumbra --help')";
+      what = "a command is required: render, bench or report (see 'penumbra --help')";
     }
     print_error(what);
     return 2;
@@ -63,6 +68,7 @@ int run_cli(int argc, char** argv) {
   try {
     if (render->parsed()) return run_render_command(render_args);
     if (bench->parsed()) return run_bench_command(bench_args);
+    if (report->parsed()) return run_report_command(report_args);
   } catch (const UsageError& e) {
     print_error(e.what());
     return 2;

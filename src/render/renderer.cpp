@@ -189,7 +189,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.msm_alpha = uses_quantized_moments(shadow) ? shadow.msm16_alpha : shadow.msm_alpha;
   shadow_block.bleed_reduction = shadow.bleed_reduction;
   shadow_block.vsm_min_variance = shadow.vsm_min_variance;
-  shadow_block.blur_radius = shadow.blur;
+  // Only the filterable techniques filter; the others (and their reference) test single texels.
+  shadow_block.blur_radius = is_filterable(shadow.technique) ? shadow.blur : 0;
   shadow_block.sat_scale = static_cast<float>(sat_fixed_point_scale());
   shadow_block.filter_slope_bias = shadow.filter_slope_bias;
   shadow_block.pcf_width = shadow.pcf_width;
@@ -230,10 +231,11 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if (render.view == View::ShadowReference) {
     // The kernel the filter applies, as 1D weights for the reference's
     // brute-force average of depth tests.
+    const int radius = shadow_block.blur_radius;
     std::vector<float> weights =
         shadow.filter == Filter::Sat
-            ? std::vector<float>(2 * static_cast<std::size_t>(shadow.blur) + 1, 1.0f)
-            : gaussian_weights(is_filterable(shadow.technique) ? shadow.blur : 0);
+            ? std::vector<float>(2 * static_cast<std::size_t>(radius) + 1, 1.0f)
+            : gaussian_weights(radius);
     reference_weights_.update(weights.data(), weights.size() * sizeof(float));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO,
                      reference_weights_.id());

@@ -1,0 +1,48 @@
+#include "app/report_command.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "gl/context.hpp"
+#include "io/image.hpp"
+#include "report/study.hpp"
+#include "scene/scene_file.hpp"
+
+namespace penumbra {
+
+namespace fs = std::filesystem;
+
+void add_report_command_options(CLI::App& command, ReportArgs& args) {
+  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
+      ->capture_default_str();
+  command.add_option("-o,--output", args.output, "folder for index.html and its images")
+      ->required();
+  command.add_flag("--quick", args.quick, "smaller images and fewer sweeps");
+}
+
+int run_report_command(const ReportArgs& args) {
+  std::error_code ec;
+  if (fs::exists(args.output, ec) && !fs::is_directory(args.output, ec)) {
+    throw UsageError("output '" + args.output + "' exists and is not a folder");
+  }
+  // The folder may be new, but its parent must exist and be writable.
+  check_output_path(fs::is_directory(args.output, ec)
+                        ? (fs::path(args.output) / "index.html").string()
+                        : args.output);
+  const Scene scene = resolve_scene(args.scene);
+  auto context = gl::Context::create_headless();
+  const StudyResult result =
+      write_study(scene, {.scene_argument = args.scene, .output_dir = args.output, .quick = args.quick},
+                  *context);
+  std::printf("%s\n", result.index_path.c_str());
+  if (result.failed > 0) {
+    std::fprintf(stderr,
+                 "penumbra: error: %d of %d report items failed; the report says which: %s\n",
+                 result.failed, result.items, result.index_path.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace penumbra

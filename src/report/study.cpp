@@ -1,0 +1,354 @@
+#include "report/study.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <sstream>
+
+#include "app/command_line.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/image.hpp"
+#include "io/progress_bar.hpp"
+#include "reference/shadow_metrics.hpp"
+#include "render/pass_timing.hpp"
+#include "render/renderer.hpp"
+#include "report/html_page.hpp"
+
+namespace penumbra {
+
+namespace {
+
+std::string fixed(double value, int digits) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(digits);
+  out << value;
+  return out.str();
+}
+
+std::string name_of(Technique t) { return std::string(enum_name<Technique>(kTechniqueNames, t)); }
+
+class Study {
+ public:
+  Study(const Scene& scene, const StudyOptions& options, gl::Context& context)
+      : scene_(scene), options_(options), context_(context), renderer_(scene) {
+    base_render_.width = options.quick ? 320 : 640;
+    base_render_.height = options.quick ? 180 : 360;
+    base_shadow_.map_size = options.quick ? 1024 : 2048;
+  }
+
+  StudyResult run() {
+    HtmlPage page("penumbra: shadow techniques on scene '" + scene_.name + "'");
+    page.paragraph(
+        "Every image below was rendered by penumbra on " + context_.renderer() + " (" +
+        context_.version() +
+        "). The command under each image re-makes it; run it in this folder. Shadow factors are "
+        "1 where lit. Errors are measured against the filtered hard-shadow reference: the "
+        "unfiltered shadow map's depth tests averaged with the technique's own filter kernel, "
+        "each texel tested against the receiver's plane, which is what a filtered technique "
+        "approximates.");
+    techniques_section(page);
+    maps_section(page);
+    sweeps_section(page);
+    esm_section(page);
+    errors_section(page);
+    timings_section(page);
+
+    StudyResult result;
+    result.index_path = (std::filesystem::path(options_.output_dir) / "index.html").string();
+    write_text_file(result.index_path, page.finish());
+    result.items = items_;
+    result.failed = failed_;
+    return result;
+  }
+
+ private:
+  // Renders one image into the report folder, or records why it failed.
+  HtmlFigure figure(const std::string& file, const std::string& caption, RenderSettings render,
+                    ShadowSettings shadow) {
+    HtmlFigure f;
+    f.caption = caption;
+    f.command = render_command_line(options_.scene_argument, render, shadow, file);
+    ++items_;
+    progress_.update(items_, file);
+    try {
+      renderer_.render(render, shadow);
+      const Image image = renderer_.read_view();
+      check_gl();
+      write_png(image, (std::filesystem::path(options_.output_dir) / file).string(),
+                png_encoding_for(render.view));
+      f.image = file;
+      f.width = image.width;
+      f.height = image.height;
+    } catch (const std::exception& e) {
+      f.error = e.what();
+      f.command.clear();
+      ++failed_;
+    }
+    return f;
+  }
+
+  void check_gl() {
+    if (context_.error_count() > errors_seen_) {
+      errors_seen_ = context_.error_count();
+      throw RuntimeError("OpenGL error: " + context_.last_error());
+    }
+  }
+
+  ShadowSettings with(Technique t) const {
+    ShadowSettings s = base_shadow_;
+    s.technique = t;
+    if (is_filterable(t)) s.blur = 4;
+    return s;
+  }
+
+  void techniques_section(HtmlPage& page) {
+    page.heading("1. The techniques side by side");
+    page.paragraph(
+        "The same scene, camera and lights for every technique: a spot light (front right) and a "
+        "directional light (from the left). Filtered techniques use a Gaussian of radius W = 4 "
+        "texels; the soft variants size their filter from a blocker search (PCSS, and the "
+        "summed-area-table moment shadows).");
+    std::vector<HtmlFigure> figures;
+    for (Technique t : {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss,
+                        Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16}) {
+      figures.push_back(figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t)));
+    }
+    for (Technique t : {Technique::Vsm, Technique::Msm}) {
+      ShadowSettings s = with(t);
+      s.filter = Filter::Sat;
+      s.soft = true;
+      s.blur = 1;
+      figures.push_back(
+          figure("technique-" + name_of(t) + "-soft.png", name_of(t) + " --soft (SAT)", base_render_, s));
+    }
+    page.figures(figures);
+  }
+
+  void maps_section(HtmlPage& page) {
+    page.heading("2. Shadow maps before and after the blur");
+    page.paragraph(
+        "The spot light's map as each technique stores it, as colour (moments z, z^2, z^3 in "
+        "red, green, blue; msm16 shows its quantized channels), before and after a Gaussian of "
+        "W = 8. ESM is shown as log(map)/c + 1, in depth units: after the blur that is "
+        "log(blur(exp(c z)))/c + 1, which is not blur(z): the exponential weights the farthest "
+        "depths most, so edges move towards the far side.");
+    std::vector<HtmlFigure> figures;
+    for (Technique t : {Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16}) {
+      ShadowSettings s = with(t);
+      s.blur = 8;
+      s.map_size = options_.quick ? 256 : 512;
+      RenderSettings r = base_render_;
+      r.view = View::Moments;
+      figures.push_back(figure("map-" + name_of(t) + ".png", name_of(t) + ": map", r, s));
+      r.view = View::MomentsFiltered;
+      figures.push_back(
+          figure("map-" + name_of(t) + "-blurred.png", name_of(t) + ": blurred, W = 8", r, s));
+    }
+    page.figures(figures);
+  }
+
+  void sweeps_section(HtmlPage& page) {
+    page.heading("3. From anti-aliased to soft: filter widths and light sizes");
+    page.paragraph(
+        "W = 1 or 2 only anti-aliases the edge; W = 16 and 32 simulate a wide light. A fixed "
+        "filter widens every penumbra alike, contact shadows included; PCSS widens them with "
+        "the blocker-receiver distance (sharp at the box's foot, wide under the high slab).");
+    const std::vector<int> widths = options_.quick ? std::vector<int>{1, 4, 16}
+                                                   : std::vector<int>{1, 2, 4, 8, 16, 32};
+    const std::vector<Technique> swept =
+        options_.quick ? std::vector<Technique>{Technique::Msm}
+                       : std::vector<Technique>{Technique::Msm, Technique::Vsm, Technique::Esm,
+                                                Technique::Msm16};
+    for (Technique t : swept) {
+      page.heading(name_of(t) + ", Gaussian of radius W", 3);
+      std::vector<HtmlFigure> figures;
+      for (int w : widths) {
+        ShadowSettings s = with(t);
+        s.blur = w;
+        figures.push_back(figure("sweep-" + name_of(t) + "-w" + std::to_string(w) + ".png",
+                                 name_of(t) + ", W = " + std::to_string(w), base_render_, s));
+      }
+      page.figures(figures);
+    }
+    page.heading("pcss, light sizes", 3);
+    std::vector<HtmlFigure> figures;
+    for (float size : {0.0f, 0.25f, 0.5f, 1.0f, 2.0f}) {
+      ShadowSettings s = with(Technique::Pcss);
+      s.light_size = size;
+      figures.push_back(figure("sweep-pcss-light" + fixed(size, 2) + ".png",
+                               "pcss, light size " + fixed(size, 2), base_render_, s));
+    }
+    page.figures(figures);
+  }
+
+  // The spot light's shadow factor against the filtered reference.
+  std::optional<ShadowMetrics> measure(const ShadowSettings& shadow) {
+    try {
+      RenderSettings r = base_render_;
+      r.view = View::Shadow;
+      renderer_.render(r, shadow);
+      const Image technique = renderer_.read_view();
+      r.view = View::ShadowReference;
+      renderer_.render(r, shadow);
+      const Image reference = renderer_.read_view();
+      check_gl();
+      return compare_shadow(technique, reference);
+    } catch (const std::exception&) {
+      ++failed_;
+      return std::nullopt;
+    }
+  }
+
+  void esm_section(HtmlPage& page) {
+    page.heading("4. The ESM exponent c");
+    const std::vector<float> cs = {10.0f, 20.0f, 40.0f, 60.0f, 80.0f, kEsmMaxC};
+    std::vector<HtmlFigure> figures;
+    std::vector<std::vector<std::string>> rows = {
+        {"c", "mean abs. error", "light leaking", "over-darkening", "max error"}};
+    struct Point {
+      float c;
+      ShadowMetrics m;
+    };
+    std::vector<Point> points;
+    for (float c : cs) {
+      ShadowSettings s = with(Technique::Esm);
+      s.esm_c = c;
+      figures.push_back(figure("esm-c" + fixed(c, 0) + ".png", "esm, c = " + fixed(c, 0),
+                               base_render_, s));
+      ++items_;
+      progress_.update(items_, "esm metrics");
+      if (auto m = measure(s)) {
+        points.push_back({c, *m});
+        rows.push_back({fixed(c, 0), fixed(m->mean_absolute_error, 4),
+                        fixed(100.0 * m->leak_fraction, 3) + " %",
+                        fixed(100.0 * m->over_dark_fraction, 3) + " %", fixed(m->max_error, 3)});
+      }
+    }
+    page.paragraph(
+        "The map stores exp(c (z - 1)), in (0, 1] for every c, so it cannot overflow; c is "
+        "capped at " + fixed(kEsmMaxC, 0) +
+        " where exp(-c) would leave the normal float range. Measured on the spot light's shadow "
+        "factor (W = 4) against the filtered hard reference; light leaking counts pixels the "
+        "reference has in shadow (< 0.1) that the technique lights (> 0.3), over-darkening "
+        "the reverse (reference > 0.9, technique < 0.7).");
+    page.table(rows);
+    if (!points.empty()) page.paragraph(esm_discussion(points.front().c, points.back().c, points));
+    page.figures(figures);
+  }
+
+  template <class Points>
+  static std::string esm_discussion(float lowest, float highest, const Points& points) {
+    const auto best = std::min_element(points.begin(), points.end(), [](const auto& a, const auto& b) {
+      return a.m.mean_absolute_error < b.m.mean_absolute_error;
+    });
+    const auto& first = points.front().m;
+    const auto& last = points.back().m;
+    std::ostringstream out;
+    out << "What c trades: the test exp(-c (z_f - z)) darkens a receiver only once it is "
+           "several 1/c behind its occluder, so a small c leaves a lit band where shadows "
+           "begin (light leaking near contact) and fades them; a large c makes the test sharp "
+           "but also sharpens the filtered edge away from the reference. Here the mean error "
+           "goes from "
+        << fixed(first.mean_absolute_error, 4) << " at c = " << fixed(lowest, 0) << " to "
+        << fixed(last.mean_absolute_error, 4) << " at c = " << fixed(highest, 0)
+        << ", and light leaking from " << fixed(100.0 * first.leak_fraction, 3) << " % to "
+        << fixed(100.0 * last.leak_fraction, 3) << " % of the pixels. On this scene c = "
+        << fixed(best->c, 0) << " wins, with a mean error of "
+        << fixed(best->m.mean_absolute_error, 4) << ".";
+    return out.str();
+  }
+
+  void errors_section(HtmlPage& page) {
+    page.heading("5. Errors against the filtered hard-shadow reference");
+    page.paragraph(
+        "The spot light's shadow factor over every pixel that sees geometry. For hard, PCF and "
+        "PCSS the reference is the plain hard shadow (their own filters are not a fixed "
+        "kernel); for the filtered techniques it is their kernel (Gaussian, W = 4).");
+    std::vector<std::vector<std::string>> rows = {
+        {"technique", "mean abs. error", "RMSE", "light leaking", "over-darkening", "max error"}};
+    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
+                        Technique::Esm, Technique::Msm, Technique::Msm16}) {
+      ++items_;
+      progress_.update(items_, "metrics " + name_of(t));
+      if (auto m = measure(with(t))) {
+        rows.push_back({name_of(t), fixed(m->mean_absolute_error, 4), fixed(m->rmse, 4),
+                        fixed(100.0 * m->leak_fraction, 3) + " %",
+                        fixed(100.0 * m->over_dark_fraction, 3) + " %", fixed(m->max_error, 3)});
+      } else {
+        rows.push_back({name_of(t), "failed", "", "", "", ""});
+      }
+    }
+    page.table(rows);
+  }
+
+  void timings_section(HtmlPage& page) {
+    page.heading("6. GPU time per pass");
+    const bool timer = !timers_miss_compute(context_.renderer());
+    page.paragraph(
+        "Device: " + context_.renderer() + " (" + context_.vendor() + ", " + context_.version() +
+        "). Median of " + std::to_string(kTimedFrames) + " frames at " +
+        std::to_string(base_render_.width) + "x" + std::to_string(base_render_.height) +
+        " with a " + std::to_string(base_shadow_.map_size) + "^2 map, passes serialized, in ms (" +
+        (timer ? "GPU timer queries" : "wall clock: this renderer's timer queries miss compute work") +
+        "). The last columns put each filter pass against a compute copy of the same map (one "
+        "read, one write per texel): the filters are memory-bound, so that ratio says how close "
+        "they come to the bandwidth limit. `penumbra bench` measures more.");
+    std::vector<std::vector<std::string>> rows;
+    std::vector<std::string> header = {"technique"};
+    for (std::size_t p = 0; p < kPassCount; ++p) header.emplace_back(gl::kGpuPassNames[p]);
+    header.emplace_back("total");
+    header.emplace_back("filters / copy");
+    rows.push_back(header);
+    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
+                        Technique::Esm, Technique::Msm, Technique::Msm16}) {
+      ++items_;
+      progress_.update(items_, "timing " + name_of(t));
+      try {
+        const PassTimes times = measure_pass_times(renderer_, base_render_, with(t), kTimedFrames, 1);
+        check_gl();
+        std::vector<std::string> row = {name_of(t)};
+        for (std::size_t p = 0; p < kPassCount; ++p) {
+          const Samples& s = times.passes[p];
+          row.push_back(times.ran[p] ? fixed(spread_of(timer ? s.timer_ms : s.wall_ms).median, 2)
+                                     : "");
+        }
+        row.push_back(fixed(spread_of(timer ? times.total.timer_ms : times.total.wall_ms).median, 2));
+        std::string ratios;
+        for (const auto& [name, ratio] : copy_ratios(times, timer).values) {
+          ratios += (ratios.empty() ? "" : ", ") + name + " " + fixed(ratio, 1) + "x";
+        }
+        row.push_back(ratios);
+        rows.push_back(row);
+      } catch (const std::exception& e) {
+        ++failed_;
+        rows.push_back({name_of(t), std::string("failed: ") + e.what()});
+      }
+    }
+    page.table(rows);
+  }
+
+  static constexpr int kTimedFrames = 3;
+
+  const Scene& scene_;
+  StudyOptions options_;
+  gl::Context& context_;
+  Renderer renderer_;
+  RenderSettings base_render_;
+  ShadowSettings base_shadow_;
+  ProgressBar progress_{"report", options_.quick ? 52 : 73};
+  int items_ = 0;
+  int failed_ = 0;
+  int errors_seen_ = 0;
+};
+
+}  // namespace
+
+StudyResult write_study(const Scene& scene, const StudyOptions& options, gl::Context& context) {
+  std::filesystem::create_directories(options.output_dir);
+  return Study(scene, options, context).run();
+}
+
+}  // namespace penumbra
