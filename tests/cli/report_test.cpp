@@ -1,0 +1,127 @@
+// `penumbra report --quick`: the page parses, every image it shows exists
+// as a PNG of the stated size, a command under an image re-makes it, and
+// headless Chromium renders the page without console errors.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "io/image.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int run_shell(const std::string& command) {
+  const int raw = std::system(command.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+struct Figure {
+  std::string src;
+  int width, height;
+  std::string command;
+};
+
+class Report : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::path(PENUMBRA_TEST_OUTPUT) / "report";
+    fs::remove_all(dir_);
+    status_ = run_shell(std::string(PENUMBRA_BINARY) + " report --quick -o " + dir_.string() +
+                        " > " + (dir_.parent_path() / "report-stdout.txt").string());
+    html_ = read_file(dir_ / "index.html");
+    // <img src="F" width="W" height="H" ...> followed in its figure by <code>COMMAND</code>
+    const std::regex figure_re(
+        R"re(<img src="([^"]+)" width="(\d+)" height="(\d+)"[^>]*><figcaption>[^<]*<code>([^<]+)</code>)re");
+    for (std::sregex_iterator it(html_.begin(), html_.end(), figure_re), end; it != end; ++it) {
+      std::string command = (*it)[4].str();
+      command = std::regex_replace(command, std::regex("&quot;"), "\"");
+      figures_.push_back({(*it)[1].str(), std::stoi((*it)[2].str()), std::stoi((*it)[3].str()),
+                          command});
+    }
+  }
+  static inline fs::path dir_;
+  static inline int status_ = -1;
+  static inline std::string html_;
+  static inline std::vector<Figure> figures_;
+};
+
+TEST_F(Report, WritesAPageWhoseImagesExist) {
+  ASSERT_EQ(status_, 0);
+  EXPECT_EQ(html_.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html_.find("</html>"), std::string::npos);
+  EXPECT_EQ(html_.find("<script"), std::string::npos) << "the page must be self-contained";
+  EXPECT_EQ(html_.find("http"), std::string::npos) << "the page must need no network";
+  for (const char* section : {"1. The techniques", "2. Shadow maps before and after",
+                              "3. From anti-aliased to soft", "4. The ESM exponent c",
+                              "5. Errors against", "6. GPU time per pass"}) {
+    EXPECT_NE(html_.find(section), std::string::npos) << section;
+  }
+  EXPECT_EQ(html_.find("<div class=\"failed\">"), std::string::npos) << "an item failed";
+  ASSERT_GE(figures_.size(), 30u);
+  for (const Figure& f : figures_) {
+    const fs::path path = dir_ / f.src;
+    ASSERT_TRUE(fs::exists(path)) << f.src;
+    const std::string bytes = read_file(path);
+    ASSERT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << f.src;
+    const penumbra::Image image = penumbra::read_png(path.string());
+    EXPECT_EQ(image.width, f.width) << f.src;
+    EXPECT_EQ(image.height, f.height) << f.src;
+  }
+}
+
+TEST_F(Report, TheCommandUnderAnImageRemakesIt) {
+  ASSERT_EQ(status_, 0);
+  ASSERT_FALSE(figures_.empty());
+  // Spot-check a filtered technique's image: its command, run in the
+  // report's folder, writing to another name.
+  const Figure* chosen = &figures_.front();
+  for (const Figure& f : figures_) {
+    if (f.src == "technique-msm.png") chosen = &f;
+  }
+  std::string command = chosen->command;
+  ASSERT_EQ(command.rfind("penumbra render ", 0), 0u) << command;
+  command.replace(0, std::string("penumbra").size(), PENUMBRA_BINARY);
+  command = std::regex_replace(command, std::regex(" -o \\S+$"), " -o remade.png");
+  ASSERT_EQ(run_shell("cd " + dir_.string() + " && " + command), 0) << command;
+  const penumbra::Image original = penumbra::read_png((dir_ / chosen->src).string());
+  const penumbra::Image remade = penumbra::read_png((dir_ / "remade.png").string());
+  ASSERT_EQ(original.width, remade.width);
+  ASSERT_EQ(original.height, remade.height);
+  EXPECT_EQ(original.rgba, remade.rgba) << command;
+}
+
+TEST_F(Report, ChromiumShowsThePageWithoutConsoleErrors) {
+  ASSERT_EQ(status_, 0);
+  ASSERT_EQ(run_shell("command -v chromium > /dev/null"), 0)
+      << "chromium is missing: scripts/install-deps installs it";
+  const fs::path shot = dir_.parent_path() / "report-screenshot.png";
+  const fs::path log = dir_.parent_path() / "report-chromium.log";
+  fs::remove(shot);
+  const std::string command =
+      "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "--disable-background-networking --disable-component-update --disable-sync "
+      "--user-data-dir=" + (dir_.parent_path() / "chromium-profile").string() +
+      " --enable-logging=stderr --v=0 --window-size=1400,2000 --screenshot=" + shot.string() +
+      " file://" + fs::absolute(dir_ / "index.html").string() + " 2> " + log.string();
+  EXPECT_EQ(run_shell(command), 0);
+  ASSERT_TRUE(fs::exists(shot));
+  const penumbra::Image image = penumbra::read_png(shot.string());
+  EXPECT_EQ(image.width, 1400);
+  // Chromium logs page console messages and failed loads as CONSOLE lines.
+  const std::string messages = read_file(log);
+  EXPECT_EQ(messages.find("CONSOLE"), std::string::npos) << messages;
+  EXPECT_EQ(messages.find("Failed to load resource"), std::string::npos) << messages;
+}
+
+}  // namespace
