@@ -19,7 +19,7 @@
 #define UNIT_GBUFFER_ALBEDO 2
 #define UNIT_GBUFFER_SPECULAR 3
 #define UNIT_AMBIENT_OCCLUSION 4
-#define UNIT_SHADOW_DEPTH 8    // MAX_LIGHTS units: each light's z-bar depth map
+#define UNIT_SHADOW_DEPTH 8      // MAX_LIGHTS units: each light's z-bar depth map
 #define UNIT_SHADOW_FILTERED 12  // MAX_LIGHTS units: each light's filtered representation
 #define UNIT_COMPUTE_INPUT 0
 

@@ -14,12 +14,12 @@ using mat4 = glm::mat4;
 
 // One light as the shaders see it (one entry of the lights block).
 struct GpuLight {
-  mat4 view;                 // world -> light view (light looks down -z)
-  mat4 view_projection;      // world -> light clip space
+  mat4 view;                     // world -> light view (light looks down -z)
+  mat4 view_projection;          // world -> light clip space
   mat4 inverse_view_projection;  // light clip space -> world
-  vec4 position_type;        // xyz: position (spot); w: LIGHT_SPOT or LIGHT_DIRECTIONAL
-  vec4 direction_cos_outer;  // xyz: unit direction the light shines along; w: cos(outer cone)
-  vec4 radiance_cos_inner;   // rgb: colour * intensity; w: cos(inner cone)
+  vec4 position_type;            // xyz: position (spot); w: LIGHT_SPOT or LIGHT_DIRECTIONAL
+  vec4 direction_cos_outer;      // xyz: unit direction the light shines along; w: cos(outer cone)
+  vec4 radiance_cos_inner;       // rgb: colour * intensity; w: cos(inner cone)
   // x: z0, y: z1 (light-space depth range mapped to z-bar = (z - z0)/(z1 - z0));
   // z: world size of one shadow-map texel at unit depth (spot) or anywhere
   //    (directional); w: shadow-map size in texels
@@ -48,8 +48,8 @@ struct GpuShadow {
   float msm_alpha;  // the alpha for the technique in use (32-bit, or 16-bit/SAT)
   float bleed_reduction;
   float vsm_min_variance;
-  int blur_radius;  // texels
-  float sat_scale;  // fixed-point scale of the summed-area table (values * scale)
+  int blur_radius;          // texels
+  float sat_scale;          // fixed-point scale of the summed-area table (values * scale)
   float filter_slope_bias;  // extra slope-scaled bias per texel of filter radius
   float unused;
 };

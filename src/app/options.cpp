@@ -63,19 +63,21 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
 
 void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named) {
   named.view = std::string(enum_name<View>(kViewNames, settings.view));
-  app.add_option("--view", named.view,
-                 "what to write: " + choices(kViewNames) +
-                     " (shadow: the shadow factor, 1 = lit, 0 on surfaces facing away from the light; "
-                     "shadow-reference: what a filtered technique "
-                     "approximates, the unfiltered map's depth tests averaged with the same "
-                     "filter kernel; shadow-map: the light's relative "
-                     "depth z-bar; moments, moments-filtered: the technique's map before and "
-                     "after the filter, as colour; for esm, log(map)/c + 1, in depth units)")
+  app.add_option(
+         "--view", named.view,
+         "what to write: " + choices(kViewNames) +
+             " (shadow: the shadow factor, 1 = lit, 0 on surfaces facing away from the light; "
+             "shadow-reference: what a filtered technique "
+             "approximates, the unfiltered map's depth tests averaged with the same "
+             "filter kernel; shadow-map: the light's relative "
+             "depth z-bar; moments, moments-filtered: the technique's map before and "
+             "after the filter, as colour; for esm, log(map)/c + 1, in depth units)")
       ->capture_default_str();
   add_params(app, settings, kRenderIntParams);
 }
 
-void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render) {
+void parse_named_options(const NamedOptions& named, ShadowSettings& shadow,
+                         RenderSettings& render) {
   if (auto t = parse_enum<Technique>(kTechniqueNames, named.technique)) {
     shadow.technique = *t;
   } else {
@@ -85,8 +87,8 @@ void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, Rend
   if (auto f = parse_enum<Filter>(kFilterNames, named.filter)) {
     shadow.filter = *f;
   } else {
-    throw UsageError("unknown filter '" + named.filter + "' (choose from " +
-                     choices(kFilterNames) + ")");
+    throw UsageError("unknown filter '" + named.filter + "' (choose from " + choices(kFilterNames) +
+                     ")");
   }
   if (auto v = parse_enum<View>(kViewNames, named.view)) {
     render.view = *v;

@@ -12,10 +12,10 @@
 namespace penumbra {
 
 void add_render_command_options(CLI::App& command, RenderArgs& args) {
-  command.add_option("--scene", args.scene,
-                     "built-in scene (default, spot) or a .json scene file")
+  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
       ->capture_default_str();
-  command.add_option("-o,--output", args.output, "output image: .png, or .exr for raw 32-bit floats")
+  command
+      .add_option("-o,--output", args.output, "output image: .png, or .exr for raw 32-bit floats")
       ->required();
   command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
   add_render_options(command, args.render, args.named);

@@ -10,15 +10,16 @@ namespace penumbra {
 namespace {
 
 template <class Settings, class T, std::size_t N>
-void check_ranges(const Settings& settings, const std::array<NumericParam<Settings, T>, N>& params) {
+void check_ranges(const Settings& settings,
+                  const std::array<NumericParam<Settings, T>, N>& params) {
   for (const auto& p : params) {
     const T value = settings.*(p.field);
     bool ok = value >= p.min && value <= p.max;
     if constexpr (std::is_floating_point_v<T>) ok = ok && std::isfinite(value);
     if (!ok) {
       std::ostringstream msg;
-      msg << "--" << p.name << " must be between " << p.min << " and " << p.max << " (got "
-          << value << ")";
+      msg << "--" << p.name << " must be between " << p.min << " and " << p.max << " (got " << value
+          << ")";
       throw UsageError(msg.str());
     }
   }
@@ -29,8 +30,7 @@ void check_ranges(const Settings& settings, const std::array<NumericParam<Settin
 void validate(const ShadowSettings& settings) {
   check_ranges(settings, kShadowFloatParams);
   check_ranges(settings, kShadowIntParams);
-  if (settings.technique == Technique::Esm && settings.filter == Filter::Sat &&
-      settings.blur > 0) {
+  if (settings.technique == Technique::Esm && settings.filter == Filter::Sat && settings.blur > 0) {
     throw UsageError(
         "--technique esm cannot use --filter sat: exp(c*z) spans exp(-c) to 1 (1e-26 at c = 60), "
         "far beyond the 17 bits per texel a 32-bit summed-area table keeps; use --filter "
@@ -38,6 +38,8 @@ void validate(const ShadowSettings& settings) {
   }
 }
 
-void validate(const RenderSettings& settings) { check_ranges(settings, kRenderIntParams); }
+void validate(const RenderSettings& settings) {
+  check_ranges(settings, kRenderIntParams);
+}
 
 }  // namespace penumbra

@@ -24,8 +24,7 @@ inline constexpr std::array<std::pair<Technique, std::string_view>, 6> kTechniqu
 // Techniques whose map is a filterable representation of depth (moments or
 // an exponential) rather than depth itself.
 constexpr bool is_filterable(Technique t) {
-  return t == Technique::Vsm || t == Technique::Esm || t == Technique::Msm ||
-         t == Technique::Msm16;
+  return t == Technique::Vsm || t == Technique::Esm || t == Technique::Msm || t == Technique::Msm16;
 }
 
 enum class Filter { Gaussian, Sat };
@@ -120,7 +119,8 @@ struct NumericParam {
   T Settings::*field;
 };
 
-inline constexpr int kMaxMapSize = 32768;  // the largest any GPU offers; each GPU's own limit is checked too
+inline constexpr int kMaxMapSize =
+    32768;  // the largest any GPU offers; each GPU's own limit is checked too
 inline constexpr int kMaxImageSize = 16384;
 
 // The ESM map stores exp(c (z - 1)) in 32-bit float: in (0, 1], so it
@@ -135,16 +135,14 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 11> kShadowFloa
      &ShadowSettings::slope_bias},
     {"max-slope", "largest slope tan(theta) the slope-scaled bias follows", 0.0f, 1000.0f,
      &ShadowSettings::max_slope},
-    {"filter-slope-bias",
-     "filtered techniques: extra slope-scaled bias per texel of filter radius", 0.0f, 4.0f,
-     &ShadowSettings::filter_slope_bias},
+    {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
+     0.0f, 4.0f, &ShadowSettings::filter_slope_bias},
     {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
      &ShadowSettings::normal_offset},
     {"light-size", "width of the light source in world units (0: point light)", 0.0f, 100.0f,
      &ShadowSettings::light_size},
     {"esm-c", "ESM exponent c", 1.0f, kEsmMaxC, &ShadowSettings::esm_c},
-    {"msm-alpha", "MSM moment bias alpha, 32-bit moments", 1e-8f, 0.5f,
-     &ShadowSettings::msm_alpha},
+    {"msm-alpha", "MSM moment bias alpha, 32-bit moments", 1e-8f, 0.5f, &ShadowSettings::msm_alpha},
     {"msm16-alpha", "MSM moment bias alpha, 16-bit and summed-area-table moments", 1e-8f, 0.5f,
      &ShadowSettings::msm16_alpha},
     {"vsm-min-variance", "VSM minimum variance (z-bar squared)", 0.0f, 0.25f,
@@ -156,8 +154,8 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 11> kShadowFloa
 inline constexpr std::array<NumericParam<ShadowSettings, int>, 2> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowSettings::map_size},
-    {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none",
-     0, kMaxBlur, &ShadowSettings::blur},
+    {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
+     kMaxBlur, &ShadowSettings::blur},
 }};
 
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{

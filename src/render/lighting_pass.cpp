@@ -10,8 +10,8 @@ namespace penumbra {
 
 LightingPass::LightingPass()
     : empty_vao_("fullscreen"),
-      nearest_(gl::SamplerInfo{.min_filter = GL_NEAREST, .mag_filter = GL_NEAREST,
-                               .label = "nearest clamp"}),
+      nearest_(gl::SamplerInfo{
+          .min_filter = GL_NEAREST, .mag_filter = GL_NEAREST, .label = "nearest clamp"}),
       bilinear_(gl::SamplerInfo{.label = "bilinear clamp"}) {}
 
 const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
@@ -66,7 +66,8 @@ void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shad
     // Filtered maps are sampled bilinearly (linear filters commute with
     // the moments' linearity); integer tables are read with texelFetch.
     const GLuint filtered_unit = static_cast<GLuint>(UNIT_SHADOW_FILTERED + i);
-    glBindTextureUnit(filtered_unit, filtered_maps[static_cast<std::size_t>(i < light_count ? i : 0)]);
+    glBindTextureUnit(filtered_unit,
+                      filtered_maps[static_cast<std::size_t>(i < light_count ? i : 0)]);
     glBindSampler(filtered_unit, filter_define(settings) == FILTER_SAT ? 0 : bilinear_.id());
   }
   glBindVertexArray(empty_vao_.id());

@@ -62,11 +62,16 @@ Image read_texture(GLuint texture, int width, int height, GLenum format) {
 
 int view_define(View view) {
   switch (view) {
-    case View::Shadow: return VIEW_SHADOW;
-    case View::ShadowReference: return VIEW_SHADOW_REFERENCE;
-    case View::Normals: return VIEW_NORMALS;
-    case View::Albedo: return VIEW_ALBEDO;
-    default: return VIEW_FINAL;
+    case View::Shadow:
+      return VIEW_SHADOW;
+    case View::ShadowReference:
+      return VIEW_SHADOW_REFERENCE;
+    case View::Normals:
+      return VIEW_NORMALS;
+    case View::Albedo:
+      return VIEW_ALBEDO;
+    default:
+      return VIEW_FINAL;
   }
 }
 
@@ -97,7 +102,8 @@ glm::mat4 Renderer::camera_projection(int width, int height) const {
   const glm::mat4 view = camera_view();
   float zmin = 1e30f, zmax = 0.0f;
   for (int i = 0; i < 8; ++i) {
-    glm::vec3 corner{(i & 1) ? bounds_.max.x : bounds_.min.x, (i & 2) ? bounds_.max.y : bounds_.min.y,
+    glm::vec3 corner{(i & 1) ? bounds_.max.x : bounds_.min.x,
+                     (i & 2) ? bounds_.max.y : bounds_.min.y,
                      (i & 4) ? bounds_.max.z : bounds_.min.z};
     float z = -(view * glm::vec4(corner, 1.0f)).z;
     zmin = std::min(zmin, z);
@@ -203,17 +209,18 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if (render.view == View::ShadowReference) {
     // The kernel the filter applies, as 1D weights for the reference's
     // brute-force average of depth tests.
-    std::vector<float> weights = shadow.filter == Filter::Sat
-                                     ? std::vector<float>(2 * static_cast<std::size_t>(shadow.blur) + 1, 1.0f)
-                                     : gaussian_weights(is_filterable(shadow.technique) ? shadow.blur : 0);
+    std::vector<float> weights =
+        shadow.filter == Filter::Sat
+            ? std::vector<float>(2 * static_cast<std::size_t>(shadow.blur) + 1, 1.0f)
+            : gaussian_weights(is_filterable(shadow.technique) ? shadow.blur : 0);
     reference_weights_.update(weights.data(), weights.size() * sizeof(float));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO,
                      reference_weights_.id());
   }
   if (!is_map_view(render.view)) {
     gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
-    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow,
-                           render.width, render.height);
+    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow, render.width,
+                           render.height);
   }
 }
 

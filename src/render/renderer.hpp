@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "core/settings.hpp"
+#include "filter/gaussian_blur_pass.hpp"
+#include "filter/summed_area_table_pass.hpp"
 #include "gl/resources.hpp"
 #include "io/image.hpp"
 #include "render/gbuffer_pass.hpp"
@@ -13,8 +15,6 @@
 #include "render/lighting_pass.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
-#include "filter/gaussian_blur_pass.hpp"
-#include "filter/summed_area_table_pass.hpp"
 #include "shadow/light_view.hpp"
 #include "shadow/moment_resolve_pass.hpp"
 #include "shadow/shadow_map_pass.hpp"

@@ -142,9 +142,7 @@ TEST(Cli, BadSceneFiles) {
   fs::create_directories(dir);
   const std::string out = out_path("scene.png");
   expect_error("render --scene " + (dir / "missing.json").string(), 1, "missing.json", out);
-  {
-    std::ofstream(dir / "truncated.json") << R"({"lights": [{"type": "spot"}], "obj)";
-  }
+  { std::ofstream(dir / "truncated.json") << R"({"lights": [{"type": "spot"}], "obj)"; }
   expect_error("render --scene " + (dir / "truncated.json").string(), 1, "truncated.json", out);
   {
     std::ofstream(dir / "badkey.json")

@@ -71,11 +71,10 @@ TEST_F(GpuTest, EveryShaderCompiles) {
   for (int technique = 0; technique <= 5; ++technique) {
     for (int filter = 0; filter <= 2; ++filter) {
       for (const char* quantized : {"0", "1"}) {
-        EXPECT_NO_THROW(gl::Program::graphics(
-            "common/fullscreen.vert", "render/lighting.frag",
-            {{"SHADOW_TECHNIQUE", std::to_string(technique)},
-             {"SHADOW_FILTER", std::to_string(filter)},
-             {"MSM_QUANTIZED", quantized}}))
+        EXPECT_NO_THROW(gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
+                                              {{"SHADOW_TECHNIQUE", std::to_string(technique)},
+                                               {"SHADOW_FILTER", std::to_string(filter)},
+                                               {"MSM_QUANTIZED", quantized}}))
             << "lighting, technique " << technique << ", filter " << filter;
       }
     }

@@ -21,7 +21,7 @@ GLint driver_offset(GLuint program, const std::string& name) {
   return offset;
 }
 
-#define EXPECT_OFFSET(program, instance, type, member) \
+#define EXPECT_OFFSET(program, instance, type, member)                                        \
   EXPECT_EQ(driver_offset(program, instance "." #member), GLint(offsetof(gpu::type, member))) \
       << #type "::" #member
 
