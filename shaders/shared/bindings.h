@@ -8,6 +8,7 @@
 #define BINDING_LIGHTS_UBO 1
 #define BINDING_SHADOW_UBO 2
 #define BINDING_PASS_UBO 3
+#define BINDING_SSAO_UBO 4
 
 // Storage buffers
 #define BINDING_MATERIALS_SSBO 0
@@ -18,9 +19,9 @@
 #define UNIT_GBUFFER_NORMAL 1
 #define UNIT_GBUFFER_ALBEDO 2
 #define UNIT_GBUFFER_SPECULAR 3
-#define UNIT_AMBIENT_OCCLUSION 4
-#define UNIT_SHADOW_DEPTH 8      // MAX_LIGHTS units: each light's z-bar depth map
-#define UNIT_SHADOW_FILTERED 12  // MAX_LIGHTS units: each light's filtered representation
+#define UNIT_AMBIENT_OCCLUSION 4  // the AO texture: read by the lighting pass and the SSAO blur
+#define UNIT_SHADOW_DEPTH 8       // MAX_LIGHTS units: each light's z-bar depth map
+#define UNIT_SHADOW_FILTERED 12   // MAX_LIGHTS units: each light's filtered representation
 #define UNIT_COMPUTE_INPUT 0
 
 // Image units (compute)
@@ -28,6 +29,9 @@
 #define IMAGE_OUTPUT_2 1
 
 #define MAX_LIGHTS 4
+
+// Most samples per pixel of the SSAO kernel (GpuSsao::kernel)
+#define SSAO_MAX_SAMPLES 64
 
 // Light types (GpuLight::position_type.w)
 #define LIGHT_SPOT 0
@@ -39,6 +43,7 @@
 #define VIEW_NORMALS 2
 #define VIEW_ALBEDO 3
 #define VIEW_SHADOW_REFERENCE 4
+#define VIEW_AO 5
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 #define TECHNIQUE_NONE 0

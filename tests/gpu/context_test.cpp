@@ -53,6 +53,9 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       {"filter/sat_columns.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "r32ui"}}}},
       {"filter/sat_box.comp", {{}}},
       {"test/shadow_math.comp", {{}}},
+      {"render/ssao.comp", {{}}},
+      {"render/ssao_blur.comp", {{{"AXIS", "0"}}, {{"AXIS", "1"}}}},
+      {"render/ssao_upsample.comp", {{}}},
   };
   for (const gl::EmbeddedFile& file : gl::embedded_shader_files()) {
     const std::string path(file.path);
