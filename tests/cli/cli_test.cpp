@@ -109,6 +109,38 @@ TEST(Cli, RendersEveryFilteredTechnique) {
   }
 }
 
+TEST(Cli, SsaoUsageErrors) {
+  const std::string out = out_path("ssao.png");
+  expect_error("render --ssao maybe", 2, "--ssao", out);
+  expect_error("render --ssao 1", 2, "--ssao", out);
+  expect_error("render --ssao-half-resolution yes", 2, "--ssao-half-resolution", out);
+  expect_error("render --ssao-samples 0", 2, "--ssao-samples", out);
+  expect_error("render --ssao-samples 65", 2, "--ssao-samples", out);
+  expect_error("render --ssao-samples 8.5", 2, "--ssao-samples", out);
+  expect_error("render --ssao-radius 0", 2, "--ssao-radius", out);
+  expect_error("render --ssao-radius nan", 2, "--ssao-radius", out);
+  expect_error("render --ssao-bias -0.1", 2, "--ssao-bias", out);
+  expect_error("render --ssao-range inf", 2, "--ssao-range", out);
+  expect_error("render --ssao-blur 17", 2, "--ssao-blur", out);
+  expect_error("render --ssao off --view ao", 2, "--view ao", out);
+}
+
+TEST(Cli, RendersTheAoView) {
+  for (const char* half : {"off", "on"}) {
+    for (const char* extension : {".png", ".exr"}) {
+      const std::string path = out_path(std::string("ao-half-") + half + extension);
+      Result r = run(std::string("render --width 48 --height 32 --view ao --ssao-samples 8 ") +
+                     "--ssao-half-resolution " + half + " -o " + path);
+      EXPECT_EQ(r.status, 0) << half << " " << extension << ": " << r.err;
+      EXPECT_TRUE(fs::exists(path)) << path;
+    }
+  }
+  const std::string off = out_path("ssao-off.png");
+  Result r = run("render --width 48 --height 32 --ssao off -o " + off);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(off));
+}
+
 TEST(Cli, ShadowMapAboveTheGpuLimitIsRefused) {
   // Within the option's range but above what llvmpipe (16384) and most
   // GPUs allow.
@@ -156,7 +188,9 @@ TEST(Cli, HelpListsEveryOptionWithItsDefault) {
   EXPECT_EQ(r.status, 0);
   for (const char* option :
        {"--scene", "--technique", "--view", "--width", "--height", "--shadow-map-size",
-        "--constant-bias", "--slope-bias", "--normal-offset", "--light-size", "--output"}) {
+        "--constant-bias", "--slope-bias", "--normal-offset", "--light-size", "--output", "--ssao",
+        "--ssao-samples", "--ssao-radius", "--ssao-bias", "--ssao-range", "--ssao-blur",
+        "--ssao-half-resolution"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from --help";
   }
   EXPECT_NE(r.out.find("2048"), std::string::npos) << "shadow-map-size default not shown";
