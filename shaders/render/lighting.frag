@@ -1,7 +1,7 @@
 
 
 
-// Deferred lighting: ambient + sum over lights of
+// Deferred lighting: ambient * AO + sum over lights of
 // shadow * (Lambert diffuse + normalized Blinn-Phong specular).
 // Compile-time defines: SHADOW_TECHNIQUE (TECHNIQUE_*), SHADOW_FILTER
 // (FILTER_*), MSM_QUANTIZED (0/1: moments in the quantization basis),
@@ -23,6 +23,8 @@ layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gbuffer_depth;
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gbuffer_normal;
 layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gbuffer_albedo;
 layout(binding = UNIT_GBUFFER_SPECULAR) uniform sampler2D gbuffer_specular;
+// Read only when frame.options.w is 1 (SSAO on).
+layout(binding = UNIT_AMBIENT_OCCLUSION) uniform sampler2D ambient_occlusion;
 layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2D shadow_depth[MAX_LIGHTS];
 // The same depth maps through a comparison sampler: the hardware's 2x2
 // bilinear percentage-closer test.
@@ -277,9 +279,9 @@ void main() {
   vec4 normal_shininess = texelFetch(gbuffer_normal, pixel, 0);
   int view = frame.options.y;
   if (normal_shininess.w == 0.0) {  // background
+    bool unoccluded = view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE || view == VIEW_AO;
     out_color = view == VIEW_FINAL ? vec4(frame.ambient.rgb * 0.5, 0.0)
-                                   : vec4(view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE
-                                              ? vec3(1.0) : vec3(0.0), 0.0);
+                                   : vec4(unoccluded ? vec3(1.0) : vec3(0.0), 0.0);
     return;
   }
   vec3 n = normalize(normal_shininess.xyz);
@@ -294,6 +296,12 @@ void main() {
   }
   if (view == VIEW_ALBEDO) {
     out_color = vec4(albedo, 1.0);
+    return;
+  }
+  // Fraction of the ambient light that reaches the point.
+  float ao = frame.options.w != 0 ? texelFetch(ambient_occlusion, pixel, 0).r : 1.0;
+  if (view == VIEW_AO) {
+    out_color = vec4(vec3(ao), 1.0);
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {
@@ -311,7 +319,7 @@ void main() {
   vec3 specular = texelFetch(gbuffer_specular, pixel, 0).rgb;
   float shininess = normal_shininess.w;
   vec3 to_eye = normalize(frame.camera_position.xyz - world);
-  vec3 color = frame.ambient.rgb * albedo;
+  vec3 color = frame.ambient.rgb * albedo * ao;
   for (int i = 0; i < frame.options.x; ++i) {
     vec3 to_light;
     vec3 irradiance = incident_light(i, world, to_light);

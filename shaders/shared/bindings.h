@@ -8,6 +8,7 @@
 #define BINDING_LIGHTS_UBO 1
 #define BINDING_SHADOW_UBO 2
 #define BINDING_PASS_UBO 3
+#define BINDING_SSAO_UBO 4
 
 // Storage buffers
 #define BINDING_MATERIALS_SSBO 0
@@ -19,10 +20,10 @@
 #define UNIT_GBUFFER_NORMAL 1
 #define UNIT_GBUFFER_ALBEDO 2
 #define UNIT_GBUFFER_SPECULAR 3
-#define UNIT_AMBIENT_OCCLUSION 4
-#define UNIT_SHADOW_DEPTH 8    // MAX_LIGHTS units: each light's z-bar depth map
-#define UNIT_SHADOW_FILTERED 12  // MAX_LIGHTS units: each light's filtered representation
-#define UNIT_SHADOW_COMPARE 16   // MAX_LIGHTS units: the depth maps with a comparison sampler
+#define UNIT_AMBIENT_OCCLUSION 4  // the AO texture: read by the lighting pass and the SSAO blur
+#define UNIT_SHADOW_DEPTH 8       // MAX_LIGHTS units: each light's z-bar depth map
+#define UNIT_SHADOW_FILTERED 12   // MAX_LIGHTS units: each light's filtered representation
+#define UNIT_SHADOW_COMPARE 16    // MAX_LIGHTS units: the depth maps with a comparison sampler
 #define UNIT_COMPUTE_INPUT 0
 
 // Image units (compute)
@@ -36,6 +37,8 @@
 // Largest box radius read from a summed-area table (its fixed-point scale
 // is chosen so that a box this size cannot overflow 32 bits).
 #define MAX_SOFT_RADIUS 64
+// Most samples per pixel of the SSAO kernel (GpuSsao::kernel)
+#define SSAO_MAX_SAMPLES 64
 
 // Light types (GpuLight::position_type.w)
 #define LIGHT_SPOT 0
@@ -47,6 +50,7 @@
 #define VIEW_NORMALS 2
 #define VIEW_ALBEDO 3
 #define VIEW_SHADOW_REFERENCE 4
+#define VIEW_AO 5
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 // (the filterable ones, from TECHNIQUE_VSM on, last)

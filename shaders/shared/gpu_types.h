@@ -4,6 +4,8 @@
 #ifndef PENUMBRA_GPU_TYPES_H
 #define PENUMBRA_GPU_TYPES_H
 
+#include "bindings.h"
+
 #ifdef __cplusplus
 #include <glm/glm.hpp>
 namespace penumbra::gpu {
@@ -14,12 +16,12 @@ using mat4 = glm::mat4;
 
 // One light as the shaders see it (one entry of the lights block).
 struct GpuLight {
-  mat4 view;                 // world -> light view (light looks down -z)
-  mat4 view_projection;      // world -> light clip space
+  mat4 view;                     // world -> light view (light looks down -z)
+  mat4 view_projection;          // world -> light clip space
   mat4 inverse_view_projection;  // light clip space -> world
-  vec4 position_type;        // xyz: position (spot); w: LIGHT_SPOT or LIGHT_DIRECTIONAL
-  vec4 direction_cos_outer;  // xyz: unit direction the light shines along; w: cos(outer cone)
-  vec4 radiance_cos_inner;   // rgb: colour * intensity; w: cos(inner cone)
+  vec4 position_type;            // xyz: position (spot); w: LIGHT_SPOT or LIGHT_DIRECTIONAL
+  vec4 direction_cos_outer;      // xyz: unit direction the light shines along; w: cos(outer cone)
+  vec4 radiance_cos_inner;       // rgb: colour * intensity; w: cos(inner cone)
   // x: z0, y: z1 (light-space depth range mapped to z-bar = (z - z0)/(z1 - z0));
   // z: world size of one shadow-map texel at unit depth (spot) or anywhere
   //    (directional); w: shadow-map size in texels
@@ -36,8 +38,10 @@ struct GpuFrame {
   mat4 inverse_view_projection;
   vec4 camera_position;  // xyz: world position
   vec4 viewport;         // xy: size in pixels, zw: 1 / size
-  ivec4 options;         // x: light count, y: VIEW_*, z: light shown by the shadow view
-  vec4 ambient;          // rgb: ambient light colour
+  // x: light count, y: VIEW_*, z: light shown by the shadow view,
+  // w: 1 when the ambient-occlusion texture is bound, 0: ambient unoccluded
+  ivec4 options;
+  vec4 ambient;  // rgb: ambient light colour
 };
 
 // Shadow parameters (see ShadowSettings in src/core/settings.hpp for their
@@ -51,14 +55,33 @@ struct GpuShadow {
   float msm_alpha;  // the alpha for the technique in use (32-bit, or 16-bit/SAT)
   float bleed_reduction;
   float vsm_min_variance;
-  int blur_radius;  // texels
-  float sat_scale;  // fixed-point scale of the summed-area table (values * scale)
+  int blur_radius;          // texels
+  float sat_scale;          // fixed-point scale of the summed-area table (values * scale)
   float filter_slope_bias;  // extra slope-scaled bias per texel of filter radius
   float pcf_width;          // texels
   int pcf_samples;
   int pcss_blocker_samples;
   int pcss_filter_samples;
   int unused;
+};
+
+// Screen-space ambient occlusion (see SsaoSettings in src/core/settings.hpp).
+struct GpuSsao {
+  mat4 view;                // world -> camera view
+  mat4 projection;          // camera view -> clip
+  mat4 inverse_projection;  // clip -> camera view
+  // xyz: unit direction in the normal's frame (z along the normal);
+  // w: distance along it as a fraction of the radius, in (0, 1)
+  vec4 kernel[SSAO_MAX_SAMPLES];
+  ivec4 size;        // xy: AO texture size, zw: G-buffer size
+  float radius;      // world units
+  float bias;        // world units of view depth
+  float range;       // multiples of the radius
+  int sample_count;  // k <= SSAO_MAX_SAMPLES
+  int blur_radius;   // AO texels
+  int scale;         // G-buffer texels per AO texel along each axis (1 or 2)
+  float unused0;
+  float unused1;
 };
 
 #ifdef __cplusplus

@@ -46,6 +46,11 @@ std::string choices(const std::array<std::pair<E, std::string_view>, N>& table) 
   return enum_choices<E>(EnumTable<E>(table));
 }
 
+bool parse_switch(const std::string& flag, const std::string& value) {
+  if (auto on = parse_enum<bool>(kOnOffNames, value)) return *on;
+  throw UsageError(flag + " '" + value + "': choose from " + choices(kOnOffNames));
+}
+
 }  // namespace
 
 void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& named) {
@@ -74,9 +79,33 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
              "approximates, the unfiltered map's depth tests averaged with the same "
              "filter kernel; shadow-map: the light's relative "
              "depth z-bar; moments, moments-filtered: the technique's map before and "
-             "after the filter, as colour; for esm, log(map)/c + 1, in depth units)")
+             "after the filter, as colour; for esm, log(map)/c + 1, in depth units; ao: "
+             "the ambient-occlusion buffer, 1 = unoccluded)")
       ->capture_default_str();
   add_params(app, settings, kRenderIntParams);
+}
+
+void add_ssao_options(CLI::App& app, SsaoSettings& settings, NamedOptions& named) {
+  named.ssao = std::string(enum_name<bool>(kOnOffNames, settings.enabled));
+  app.add_option(
+         "--ssao", named.ssao,
+         "screen-space ambient occlusion darkening the ambient light: " + choices(kOnOffNames))
+      ->capture_default_str();
+  named.ssao_half_resolution = std::string(enum_name<bool>(kOnOffNames, settings.half_resolution));
+  app.add_option("--ssao-half-resolution", named.ssao_half_resolution,
+                 "compute the AO at half width and height, then upsample it with depth and "
+                 "normal awareness: " +
+                     choices(kOnOffNames))
+      ->capture_default_str();
+  add_params(app, settings, kSsaoIntParams);
+  add_params(app, settings, kSsaoFloatParams);
+}
+
+void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render,
+                         SsaoSettings& ssao) {
+  parse_named_options(named, shadow, render);
+  ssao.enabled = parse_switch("--ssao", named.ssao);
+  ssao.half_resolution = parse_switch("--ssao-half-resolution", named.ssao_half_resolution);
 }
 
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow,

@@ -15,12 +15,18 @@ struct NamedOptions {
   std::string technique;
   std::string filter;
   std::string view;
+  std::string ssao;
+  std::string ssao_half_resolution;
 };
 
 void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& named);
 void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named);
+void add_ssao_options(CLI::App& app, SsaoSettings& settings, NamedOptions& named);
 
-// Throws UsageError for an unknown name.
+// Throws UsageError for an unknown name. The SSAO switches are read only by
+// the overload that takes SsaoSettings.
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render);
+void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render,
+                         SsaoSettings& ssao);
 
 }  // namespace penumbra

@@ -20,12 +20,14 @@ void add_render_command_options(CLI::App& command, RenderArgs& args) {
   command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
+  add_ssao_options(command, args.ssao, args.named);
 }
 
 int run_render_command(RenderArgs& args) {
-  parse_named_options(args.named, args.shadow, args.render);
+  parse_named_options(args.named, args.shadow, args.render, args.ssao);
   validate(args.render);
   validate(args.shadow);
+  validate(args.ssao);
   image_format_for(args.output);
   check_output_path(args.output);
   Scene scene = resolve_scene(args.scene);
@@ -36,7 +38,7 @@ int run_render_command(RenderArgs& args) {
                  context->platform().c_str(), context->version().c_str());
   }
   Renderer renderer(scene);
-  renderer.render(args.render, args.shadow);
+  renderer.render(args.render, args.shadow, args.ssao);
   Image image = renderer.read_view();
   if (context->error_count() > 0) {
     throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +

@@ -14,6 +14,7 @@ struct RenderArgs {
   bool verbose = false;
   RenderSettings render;
   ShadowSettings shadow;
+  SsaoSettings ssao;
   NamedOptions named;
 };
 

@@ -48,4 +48,9 @@ void validate(const RenderSettings& settings) {
   check_ranges(settings, kRenderIntParams);
 }
 
+void validate(const SsaoSettings& settings) {
+  check_ranges(settings, kSsaoIntParams);
+  check_ranges(settings, kSsaoFloatParams);
+}
+
 }  // namespace penumbra

@@ -45,10 +45,11 @@ enum class View {
   Moments,
   MomentsFiltered,
   Normals,
-  Albedo
+  Albedo,
+  Ao
 };
 
-inline constexpr std::array<std::pair<View, std::string_view>, 8> kViewNames{{
+inline constexpr std::array<std::pair<View, std::string_view>, 9> kViewNames{{
     {View::Final, "final"},
     {View::Shadow, "shadow"},
     {View::ShadowReference, "shadow-reference"},
@@ -57,6 +58,13 @@ inline constexpr std::array<std::pair<View, std::string_view>, 8> kViewNames{{
     {View::MomentsFiltered, "moments-filtered"},
     {View::Normals, "normals"},
     {View::Albedo, "albedo"},
+    {View::Ao, "ao"},
+}};
+
+// Names of on/off switches on the command line.
+inline constexpr std::array<std::pair<bool, std::string_view>, 2> kOnOffNames{{
+    {true, "on"},
+    {false, "off"},
 }};
 
 // Views that show a light's map rather than the camera's image.
@@ -118,6 +126,43 @@ struct ShadowSettings {
   // Light-bleeding reduction for vsm and msm: lit fractions below this
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
+};
+
+// Screen-space ambient obscurance (seed 003, Task 6) over the G-buffer: k
+// points in the hemisphere of radius r around the normal, each counted as
+// unoccluded when the depth buffer does not hide it (within the depth bias),
+// or when it lies more than range * r behind the surface that hides it.
+struct SsaoSettings {
+  bool enabled = true;
+  // Samples per pixel, k.
+  int samples = 16;
+  // Hemisphere radius r in world units: the reach of the obscurance. About
+  // the size of the default scene's objects, so the ground darkens under
+  // the sphere floating 0.9 above it as well as at the feet of the others.
+  float radius = 1.0f;
+  // Depth bias in world units: a sample counts as hidden only when it lies
+  // more than this behind the surface seen in its direction. That surface's
+  // depth is taken on its tangent plane (exact for planes), so the bias only
+  // absorbs what a plane does not describe: the facets of tessellated curved
+  // surfaces, whose interpolated normals lean over them.
+  float bias = 0.02f;
+  // Range check, in multiples of r: a sample hidden by a surface more than
+  // range * r in front of it counts as unoccluded (seed 003 uses 5). That
+  // surface is then more than (range - 1) r from the shaded point, so 2 is
+  // the smallest range that never discards an occluder seen within r of it;
+  // larger ranges let objects floating in front of a surface darken it in a
+  // halo around their silhouettes (measured: a sphere 1.1 above the ground
+  // seen from 35 degrees darkens the ground to 0.51 at range 5 with
+  // r = 0.5, not at all at 2; the contact darkening at a box's foot is the
+  // same at both).
+  float range = 2.0f;
+  // Radius in AO texels of the depth- and normal-aware blur; 0: none. At 6
+  // no trace of the per-pixel rotation's pattern is left with 16 samples
+  // (at 4 its diagonal streaks remain on the ground of the default scene).
+  int blur = 6;
+  // Computes the AO at half the width and height, then upsamples it with
+  // depth and normal awareness.
+  bool half_resolution = false;
 };
 
 struct RenderSettings {
@@ -191,6 +236,23 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 5> kShadowIntPara
      &ShadowSettings::pcss_filter_samples},
 }};
 
+inline constexpr int kMaxSsaoSamples = 64;  // SSAO_MAX_SAMPLES in shaders/shared/bindings.h
+inline constexpr int kMaxSsaoBlur = 16;
+
+inline constexpr std::array<NumericParam<SsaoSettings, int>, 2> kSsaoIntParams{{
+    {"ssao-samples", "SSAO samples per pixel", 1, kMaxSsaoSamples, &SsaoSettings::samples},
+    {"ssao-blur", "radius in AO texels of the depth- and normal-aware SSAO blur; 0: none", 0,
+     kMaxSsaoBlur, &SsaoSettings::blur},
+}};
+
+inline constexpr std::array<NumericParam<SsaoSettings, float>, 3> kSsaoFloatParams{{
+    {"ssao-radius", "SSAO hemisphere radius in world units", 1e-4f, 1000.0f, &SsaoSettings::radius},
+    {"ssao-bias", "SSAO depth bias in world units", 0.0f, 100.0f, &SsaoSettings::bias},
+    {"ssao-range",
+     "SSAO range check: occluders more than this many radii in front of a sample are ignored", 0.0f,
+     1000.0f, &SsaoSettings::range},
+}};
+
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{
     {"width", "image width in pixels", 1, kMaxImageSize, &RenderSettings::width},
     {"height", "image height in pixels", 1, kMaxImageSize, &RenderSettings::height},
@@ -201,5 +263,6 @@ inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntPara
 // Throws UsageError naming the first parameter outside its range.
 void validate(const ShadowSettings& settings);
 void validate(const RenderSettings& settings);
+void validate(const SsaoSettings& settings);
 
 }  // namespace penumbra

@@ -35,7 +35,8 @@ const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
 
 void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shadows,
                            const std::array<GLuint, 4>& filtered_maps, int light_count,
-                           const ShadowSettings& settings, int width, int height) {
+                           const ShadowSettings& settings, GLuint ambient_occlusion, int width,
+                           int height) {
   static_assert(MAX_LIGHTS == 4);
   if (width != width_ || height != height_) {
     output_ = gl::Texture(gl::TextureInfo{
@@ -57,7 +58,8 @@ void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shad
   glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
   glBindTextureUnit(UNIT_GBUFFER_ALBEDO, gbuffer.albedo().id());
   glBindTextureUnit(UNIT_GBUFFER_SPECULAR, gbuffer.specular().id());
-  for (int unit = UNIT_GBUFFER_DEPTH; unit <= UNIT_GBUFFER_SPECULAR; ++unit) {
+  glBindTextureUnit(UNIT_AMBIENT_OCCLUSION, ambient_occlusion);
+  for (int unit = UNIT_GBUFFER_DEPTH; unit <= UNIT_AMBIENT_OCCLUSION; ++unit) {
     glBindSampler(static_cast<GLuint>(unit), nearest_.id());
   }
   // Lights beyond the maps rendered (none for Technique::None) are never

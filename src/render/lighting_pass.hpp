@@ -20,9 +20,11 @@ class LightingPass {
   // The frame, lights and shadow blocks must be bound. `filtered_maps[i]`
   // is light i's filtered representation (a summed-area table for the sat
   // filter), or 0 for techniques that read the depth map.
+  // `ambient_occlusion` is the AO texture at the G-buffer's size, read when
+  // the frame block's options.w is 1; 0 when there is none.
   void execute(const GBufferPass& gbuffer, const ShadowMapPass& shadows,
                const std::array<GLuint, 4>& filtered_maps, int light_count,
-               const ShadowSettings& settings, int width, int height);
+               const ShadowSettings& settings, GLuint ambient_occlusion, int width, int height);
 
   // RGBA32F: rgb as the view defines, alpha 1 where geometry was seen.
   [[nodiscard]] const gl::Texture& output() const { return output_; }

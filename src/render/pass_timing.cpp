@@ -26,7 +26,7 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
   run.shadow = shadow;
   for (int frame = 0; frame < warmup + frames; ++frame) {
     profiler.begin_frame();
-    renderer.render(render, shadow, &profiler);
+    renderer.render(render, shadow, {}, &profiler);
     {
       gl::GpuPassScope timed(&profiler, GpuPass::BandwidthCopy);
       copy.execute(renderer.shadow_map_texture(0));

@@ -75,6 +75,8 @@ int view_define(View view) {
       return VIEW_NORMALS;
     case View::Albedo:
       return VIEW_ALBEDO;
+    case View::Ao:
+      return VIEW_AO;
     default:
       return VIEW_FINAL;
   }
@@ -128,9 +130,10 @@ glm::mat4 Renderer::camera_projection(int width, int height) const {
 }
 
 void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow,
-                      gl::GpuProfiler* profiler) {
+                      const SsaoSettings& ssao, gl::GpuProfiler* profiler) {
   validate(render);
   validate(shadow);
+  validate(ssao);
   GLint max_texture = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
   if (shadow.map_size > max_texture) {
@@ -154,6 +157,11 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     throw UsageError("--view " + std::string(enum_name<View>(kViewNames, render.view)) +
                      " needs a filterable technique (vsm, esm, msm or msm16)");
   }
+  if (render.view == View::Ao && !ssao.enabled) {
+    throw UsageError("--view ao needs --ssao on");
+  }
+  const bool ambient_occlusion =
+      ssao.enabled && (render.view == View::Final || render.view == View::Ao);
   last_render_ = render;
   last_shadow_ = shadow;
 
@@ -174,7 +182,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   frame.camera_position = glm::vec4(scene_.camera.position, 1.0f);
   frame.viewport = glm::vec4(render.width, render.height, 1.0f / static_cast<float>(render.width),
                              1.0f / static_cast<float>(render.height));
-  frame.options = glm::ivec4(light_count, view_define(render.view), render.light_index, 0);
+  frame.options = glm::ivec4(light_count, view_define(render.view), render.light_index,
+                             ambient_occlusion ? 1 : 0);
   frame.ambient = glm::vec4(0.06f, 0.065f, 0.08f, 0.0f);
   frame_ubo_.update(&frame, sizeof frame);
 
@@ -245,9 +254,15 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       gl::GpuPassScope timed(profiler, gl::GpuPass::GBuffer);
       gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
     }
+    GLuint ao = 0;
+    if (ambient_occlusion) {
+      gl::GpuPassScope timed(profiler, gl::GpuPass::AmbientOcclusion);
+      ssao_pass_.execute(gbuffer_pass_, frame.view, frame.projection, ssao);
+      ao = ssao_pass_.output().id();
+    }
     gl::GpuPassScope timed(profiler, gl::GpuPass::Lighting);
-    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow, render.width,
-                           render.height);
+    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow, ao,
+                           render.width, render.height);
   }
 }
 

@@ -14,6 +14,7 @@
 #include "render/gbuffer_pass.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/lighting_pass.hpp"
+#include "render/ssao_pass.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 #include "shadow/light_view.hpp"
@@ -33,14 +34,16 @@ class Renderer {
 
   // Renders one frame. Throws UsageError for settings the GPU cannot honour
   // (a shadow map larger than its texture limit, a light index out of range).
-  // With a profiler, each pass is timed (the caller begins and ends the frame).
+  // SSAO runs for the final and ao views only. With a profiler, each pass
+  // is timed (the caller begins and ends the frame).
   void render(const RenderSettings& render, const ShadowSettings& shadow,
-              gl::GpuProfiler* profiler = nullptr);
+              const SsaoSettings& ssao = {}, gl::GpuProfiler* profiler = nullptr);
 
   // The view chosen in the last render(): the lighting pass's output for
   // camera views; for map views, the light's z-bar map (shadow-map) or its
   // representation before or after the filter (moments,
   // moments-filtered; for esm shown as log(map)/c + 1, in depth units).
+  // The ao view is the AO texture as the lighting pass reads it.
   [[nodiscard]] Image read_view();
   // Light i's shadow map (z-bar in every channel), as last rendered.
   [[nodiscard]] Image read_shadow_map(int light) const;
@@ -51,6 +54,8 @@ class Renderer {
 
   [[nodiscard]] const Scene& scene() const { return scene_; }
   [[nodiscard]] const TriangleMesh& mesh() const { return mesh_; }
+  // The camera's G-buffer, as last rendered.
+  [[nodiscard]] const GBufferPass& gbuffer() const { return gbuffer_pass_; }
   [[nodiscard]] const LightView& light_view(int light) const { return light_views_.at(light); }
   [[nodiscard]] glm::mat4 camera_view() const;
   [[nodiscard]] glm::mat4 camera_projection(int width, int height) const;
@@ -65,6 +70,7 @@ class Renderer {
   GaussianBlurPass blur_pass_;
   SummedAreaTablePass sat_pass_;
   GBufferPass gbuffer_pass_;
+  SsaoPass ssao_pass_;
   LightingPass lighting_pass_;
   gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_;
   gl::Buffer reference_weights_;

@@ -25,7 +25,8 @@ struct Result {
 Result run(const std::string& args) {
   const fs::path dir = fs::path(PENUMBRA_TEST_OUTPUT) / "cli";
   fs::create_directories(dir);
-  const std::string err_file = (dir / "stderr.txt").string();
+  // One file per test process: CTest runs the suites' tests side by side.
+  const std::string err_file = (dir / ("stderr-" + std::to_string(getpid()) + ".txt")).string();
   const std::string cmd = std::string(PENUMBRA_BINARY) + " " + args + " 2>" + err_file;
   Result r;
   FILE* pipe = popen(cmd.c_str(), "r");
@@ -54,11 +55,13 @@ void expect_error(const std::string& args, int status, const std::string& culpri
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected:\n" << r.err;
   EXPECT_NE(r.err.find(culprit), std::string::npos) << args << "\nmessage: " << r.err;
   EXPECT_FALSE(fs::exists(output)) << "output left behind for: " << args;
-  // No temporary files either.
+  // No temporary files either: those of this output's name (other tests
+  // running beside this one may be writing theirs).
   const fs::path folder = fs::path(output).parent_path();
   if (!fs::is_directory(folder)) return;
+  const std::string temporary_prefix = "." + fs::path(output).filename().string() + ".tmp";
   for (const auto& entry : fs::directory_iterator(folder)) {
-    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
+    EXPECT_NE(entry.path().filename().string().rfind(temporary_prefix, 0), 0u)
         << entry.path() << " left behind by: " << args;
   }
 }
@@ -179,6 +182,38 @@ TEST(Cli, RendersEveryFilteredTechnique) {
   }
 }
 
+TEST(Cli, SsaoUsageErrors) {
+  const std::string out = out_path("ssao.png");
+  expect_error("render --ssao maybe", 2, "--ssao", out);
+  expect_error("render --ssao 1", 2, "--ssao", out);
+  expect_error("render --ssao-half-resolution yes", 2, "--ssao-half-resolution", out);
+  expect_error("render --ssao-samples 0", 2, "--ssao-samples", out);
+  expect_error("render --ssao-samples 65", 2, "--ssao-samples", out);
+  expect_error("render --ssao-samples 8.5", 2, "--ssao-samples", out);
+  expect_error("render --ssao-radius 0", 2, "--ssao-radius", out);
+  expect_error("render --ssao-radius nan", 2, "--ssao-radius", out);
+  expect_error("render --ssao-bias -0.1", 2, "--ssao-bias", out);
+  expect_error("render --ssao-range inf", 2, "--ssao-range", out);
+  expect_error("render --ssao-blur 17", 2, "--ssao-blur", out);
+  expect_error("render --ssao off --view ao", 2, "--view ao", out);
+}
+
+TEST(Cli, RendersTheAoView) {
+  for (const char* half : {"off", "on"}) {
+    for (const char* extension : {".png", ".exr"}) {
+      const std::string path = out_path(std::string("ao-half-") + half + extension);
+      Result r = run(std::string("render --width 48 --height 32 --view ao --ssao-samples 8 ") +
+                     "--ssao-half-resolution " + half + " -o " + path);
+      EXPECT_EQ(r.status, 0) << half << " " << extension << ": " << r.err;
+      EXPECT_TRUE(fs::exists(path)) << path;
+    }
+  }
+  const std::string off = out_path("ssao-off.png");
+  Result r = run("render --width 48 --height 32 --ssao off -o " + off);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(off));
+}
+
 TEST(Cli, ShadowMapAboveTheGpuLimitIsRefused) {
   // Within the option's range but above what llvmpipe (16384) and most
   // GPUs allow.
@@ -226,7 +261,9 @@ TEST(Cli, HelpListsEveryOptionWithItsDefault) {
   EXPECT_EQ(r.status, 0);
   for (const char* option :
        {"--scene", "--technique", "--view", "--width", "--height", "--shadow-map-size",
-        "--constant-bias", "--slope-bias", "--normal-offset", "--light-size", "--output"}) {
+        "--constant-bias", "--slope-bias", "--normal-offset", "--light-size", "--output", "--ssao",
+        "--ssao-samples", "--ssao-radius", "--ssao-bias", "--ssao-range", "--ssao-blur",
+        "--ssao-half-resolution"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from --help";
   }
   EXPECT_NE(r.out.find("2048"), std::string::npos) << "shadow-map-size default not shown";

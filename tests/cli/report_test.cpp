@@ -3,6 +3,7 @@
 // headless Chromium renders the page without console errors.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -35,10 +36,13 @@ struct Figure {
 class Report : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::path(PENUMBRA_TEST_OUTPUT) / "report";
+    // CTest may run this binary's tests in parallel processes: each makes
+    // its own report.
+    dir_ = fs::path(PENUMBRA_TEST_OUTPUT) / ("report-" + std::to_string(getpid()));
     fs::remove_all(dir_);
+    fs::create_directories(dir_);
     status_ = run_shell(std::string(PENUMBRA_BINARY) + " report --quick -o " + dir_.string() +
-                        " > " + (dir_.parent_path() / "report-stdout.txt").string());
+                        " > " + (dir_ / "stdout.txt").string());
     html_ = read_file(dir_ / "index.html");
     // <img src="F" width="W" height="H" ...> followed in its figure by <code>COMMAND</code>
     const std::regex figure_re(
@@ -50,6 +54,7 @@ class Report : public ::testing::Test {
                           command});
     }
   }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
   static inline fs::path dir_;
   static inline int status_ = -1;
   static inline std::string html_;
@@ -105,13 +110,13 @@ TEST_F(Report, ChromiumShowsThePageWithoutConsoleErrors) {
   ASSERT_EQ(status_, 0);
   ASSERT_EQ(run_shell("command -v chromium > /dev/null"), 0)
       << "chromium is missing: scripts/install-deps installs it";
-  const fs::path shot = dir_.parent_path() / "report-screenshot.png";
-  const fs::path log = dir_.parent_path() / "report-chromium.log";
+  const fs::path shot = dir_ / "screenshot.png";
+  const fs::path log = dir_ / "chromium.log";
   fs::remove(shot);
   const std::string command =
       "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
       "--disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir=" + (dir_.parent_path() / "chromium-profile").string() +
+      "--user-data-dir=" + (dir_ / "chromium-profile").string() +
       " --enable-logging=stderr --v=0 --window-size=1400,2000 --screenshot=" + shot.string() +
       " file://" + fs::absolute(dir_ / "index.html").string() + " 2> " + log.string();
   EXPECT_EQ(run_shell(command), 0);

@@ -60,5 +60,27 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   EXPECT_EQ(driver_offset(p, "lights[1].view"), GLint(sizeof(gpu::GpuLight)));
 }
 
+TEST_F(GpuTest, SsaoBlockMatchesItsCppMirror) {
+  gl::Program ssao = gl::Program::compute("render/ssao.comp");
+  const GLuint p = ssao.id();
+  EXPECT_OFFSET(p, "ssao", GpuSsao, view);
+  EXPECT_OFFSET(p, "ssao", GpuSsao, projection);
+  EXPECT_OFFSET(p, "ssao", GpuSsao, inverse_projection);
+  EXPECT_EQ(driver_offset(p, "ssao.kernel[0]"), GLint(offsetof(gpu::GpuSsao, kernel)));
+  EXPECT_OFFSET(p, "ssao", GpuSsao, size);
+  EXPECT_OFFSET(p, "ssao", GpuSsao, radius);
+  EXPECT_OFFSET(p, "ssao", GpuSsao, bias);
+  EXPECT_OFFSET(p, "ssao", GpuSsao, range);
+  EXPECT_OFFSET(p, "ssao", GpuSsao, sample_count);
+  EXPECT_OFFSET(p, "ssao", GpuSsao, scale);
+  const GLuint kernel = glGetProgramResourceIndex(p, GL_UNIFORM, "ssao.kernel[0]");
+  const GLenum stride_property = GL_ARRAY_STRIDE;
+  GLint stride = -1;
+  glGetProgramResourceiv(p, GL_UNIFORM, kernel, 1, &stride_property, 1, nullptr, &stride);
+  EXPECT_EQ(stride, GLint(sizeof(glm::vec4)));
+  gl::Program blur = gl::Program::compute("render/ssao_blur.comp", {{"AXIS", "0"}});
+  EXPECT_OFFSET(blur.id(), "ssao", GpuSsao, blur_radius);
+}
+
 }  // namespace
 }  // namespace penumbra
