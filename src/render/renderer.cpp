@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "core/error.hpp"
@@ -230,7 +231,9 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO,
                      reference_weights_.id());
   }
-  if (!is_map_view(render.view)) {
+  gbuffer_current_ = !is_map_view(render.view);
+  if (gbuffer_current_) {
+    last_view_projection_ = frame.projection * frame.view;
     gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
     lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow, render.width,
                            render.height);
@@ -264,6 +267,31 @@ Image Renderer::read_view() {
   }
   const gl::Texture& out = lighting_pass_.output();
   return read_texture(out.id(), out.width(), out.height(), GL_RGBA);
+}
+
+SurfacePoints Renderer::read_surfaces() const {
+  if (!gbuffer_current_) throw std::logic_error("read_surfaces() needs a camera view rendered");
+  const int width = gbuffer_pass_.depth().width(), height = gbuffer_pass_.depth().height();
+  const Image depth = read_texture(gbuffer_pass_.depth().id(), width, height, GL_DEPTH_COMPONENT);
+  const Image normal = read_texture(gbuffer_pass_.normal().id(), width, height, GL_RGBA);
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(last_view_projection_));
+  SurfacePoints surfaces(width, height);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      const float* n = normal.pixel(x, y);
+      if (n[3] == 0.0f) continue;  // shininess 0 marks the background, as in lighting.frag
+      // The pixel centre in NDC, as lighting.frag's world_position() (GL
+      // rows run bottom to top, image rows top to bottom).
+      const glm::dvec4 ndc((x + 0.5) / width * 2.0 - 1.0, (height - y - 0.5) / height * 2.0 - 1.0,
+                           double(depth.pixel(x, y)[0]) * 2.0 - 1.0, 1.0);
+      const glm::dvec4 p = inverse * ndc;
+      surfaces.position[i] = glm::vec3(glm::dvec3(p) / p.w);
+      surfaces.normal[i] = glm::normalize(glm::vec3(n[0], n[1], n[2]));
+      surfaces.covered[i] = 1;
+    }
+  }
+  return surfaces;
 }
 
 Image Renderer::read_shadow_map(int light) const {
