@@ -48,4 +48,8 @@ void validate(const RenderSettings& settings) {
   check_ranges(settings, kRenderIntParams);
 }
 
+void validate(const ReferenceSettings& settings) {
+  check_ranges(settings, kReferenceIntParams);
+}
+
 }  // namespace penumbra
