@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -30,23 +31,6 @@ std::string lower_extension(const std::string& path) {
 float srgb_encode(float linear) {
   linear = std::clamp(linear, 0.0f, 1.0f);
   return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
-}
-
-// A temporary name beside the target, unique to this process.
-std::string temporary_name(const std::string& path) {
-  fs::path p(path);
-  std::string name = ".";
-  name.append(p.filename().string()).append(".tmp").append(std::to_string(getpid()));
-  return (p.parent_path() / name).string();
-}
-
-void commit(const std::string& temporary, const std::string& path) {
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw RuntimeError("cannot write '" + path + "': " + ec.message());
-  }
 }
 
 }  // namespace
@@ -89,7 +73,7 @@ void write_png(const Image& image, const std::string& path, PngEncoding encoding
     fs::remove(temporary, ec);
     throw RuntimeError("cannot write '" + path + "'");
   }
-  commit(temporary, path);
+  commit_temporary(temporary, path);
 }
 
 void write_exr(const Image& image, const std::string& path) {
@@ -133,7 +117,7 @@ void write_exr(const Image& image, const std::string& path) {
     fs::remove(temporary, ec);
     throw RuntimeError("cannot write '" + path + "': " + why);
   }
-  commit(temporary, path);
+  commit_temporary(temporary, path);
 }
 
 void write_image(const Image& image, const std::string& path, PngEncoding png_encoding) {
