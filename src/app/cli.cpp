@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/compare_command.hpp"
 #include "app/options.hpp"
 #include "app/render_command.hpp"
 #include "core/error.hpp"
@@ -38,6 +39,12 @@ int run_cli(int argc, char** argv) {
   CLI::App* render = app.add_subcommand("render", "render one image of a scene (PNG or EXR)");
   add_render_command_options(*render, render_args);
 
+  CompareArgs compare_args;
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "measure every technique against a ray-traced reference: a table, JSON, error images");
+  add_compare_command_options(*compare, compare_args);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -49,7 +56,7 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
-      what = "a command is required: render (see 'penumbra --help')";
+      what = "a command is required: render or compare (see 'penumbra --help')";
     }
     print_error(what);
     return 2;
@@ -57,6 +64,7 @@ int run_cli(int argc, char** argv) {
 
   try {
     if (render->parsed()) return run_render_command(render_args);
+    if (compare->parsed()) return run_compare_command(compare_args);
   } catch (const UsageError& e) {
     print_error(e.what());
     return 2;

@@ -20,6 +20,12 @@ struct NamedOptions {
 void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& named);
 void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named);
 
+// The numeric parameters alone, for commands that take the technique,
+// filter or view their own way.
+void add_shadow_parameters(CLI::App& app, ShadowSettings& settings);
+void add_render_parameters(CLI::App& app, RenderSettings& settings);
+void add_reference_options(CLI::App& app, ReferenceSettings& settings);
+
 // Throws UsageError for an unknown name.
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render);
 
