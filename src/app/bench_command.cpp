@@ -191,7 +191,7 @@ int run_bench_command(BenchArgs& args) {
     j["height"] = args.render.height;
     j["runs"] = nlohmann::json::array();
     for (const PassTimes& run : runs) j["runs"].push_back(run_json(run, args.frames, timer_clock));
-    write_text_file(args.json, j.dump(2) + "\n");
+    write_file_atomically(args.json, j.dump(2) + "\n");
   }
   return 0;
 }

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "app/bench_command.hpp"
+#include "app/compare_command.hpp"
 #include "app/options.hpp"
 #include "app/report_command.hpp"
 #include "app/render_command.hpp"
@@ -48,6 +49,12 @@ int run_cli(int argc, char** argv) {
       "report", "the whole study (every technique, sweeps, errors, timings) as one HTML page");
   add_report_command_options(*report, report_args);
 
+  CompareArgs compare_args;
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "measure every technique against a ray-traced reference: a table, JSON, error images");
+  add_compare_command_options(*compare, compare_args);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -59,7 +66,7 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
-      what = "a command is required: render, bench or report (see 'penumbra --help')";
+      what = "a command is required: render, compare, bench or report (see 'penumbra --help')";
     }
     print_error(what);
     return 2;
@@ -67,6 +74,7 @@ int run_cli(int argc, char** argv) {
 
   try {
     if (render->parsed()) return run_render_command(render_args);
+    if (compare->parsed()) return run_compare_command(compare_args);
     if (bench->parsed()) return run_bench_command(bench_args);
     if (report->parsed()) return run_report_command(report_args);
   } catch (const UsageError& e) {

@@ -62,11 +62,23 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
                  "filter of the vsm/esm/msm/msm16 maps: " + choices(kFilterNames) +
                      " (separable Gaussian, or summed-area table)")
       ->capture_default_str();
+  add_shadow_parameters(app, settings);
+}
+
+void add_shadow_parameters(CLI::App& app, ShadowSettings& settings) {
   app.add_flag("--soft", settings.soft,
                "vsm/msm/msm16 with --filter sat: filter width follows the estimated penumbra "
                "(blocker search from the moments), at least --blur");
   add_params(app, settings, kShadowIntParams);
   add_params(app, settings, kShadowFloatParams);
+}
+
+void add_render_parameters(CLI::App& app, RenderSettings& settings) {
+  add_params(app, settings, kRenderIntParams);
+}
+
+void add_reference_options(CLI::App& app, ReferenceSettings& settings) {
+  add_params(app, settings, kReferenceIntParams);
 }
 
 void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named) {
@@ -82,7 +94,7 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
              "after the filter, as colour; for esm, log(map)/c + 1, in depth units; ao: "
              "the ambient-occlusion buffer, 1 = unoccluded)")
       ->capture_default_str();
-  add_params(app, settings, kRenderIntParams);
+  add_render_parameters(app, settings);
 }
 
 void add_ssao_options(CLI::App& app, SsaoSettings& settings, NamedOptions& named) {

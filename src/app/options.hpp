@@ -23,6 +23,12 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
 void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named);
 void add_ssao_options(CLI::App& app, SsaoSettings& settings, NamedOptions& named);
 
+// The numeric parameters alone, for commands that take the technique,
+// filter or view their own way.
+void add_shadow_parameters(CLI::App& app, ShadowSettings& settings);
+void add_render_parameters(CLI::App& app, RenderSettings& settings);
+void add_reference_options(CLI::App& app, ReferenceSettings& settings);
+
 // Throws UsageError for an unknown name. The SSAO switches are read only by
 // the overload that takes SsaoSettings.
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render);

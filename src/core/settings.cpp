@@ -53,4 +53,8 @@ void validate(const SsaoSettings& settings) {
   check_ranges(settings, kSsaoFloatParams);
 }
 
+void validate(const ReferenceSettings& settings) {
+  check_ranges(settings, kReferenceIntParams);
+}
+
 }  // namespace penumbra

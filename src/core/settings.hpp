@@ -165,6 +165,16 @@ struct SsaoSettings {
   bool half_resolution = false;
 };
 
+// The ray-traced reference (src/reference/): how it samples. The light's
+// size is the techniques' own: ShadowSettings::light_size (spot) or
+// sun_angle (directional).
+struct ReferenceSettings {
+  // Shadow rays per pixel towards an area light (a source size > 0), spread
+  // over the light by correlated multi-jittered sampling; a point light
+  // takes one ray.
+  int samples = 256;
+};
+
 struct RenderSettings {
   int width = 1280;
   int height = 720;
@@ -207,10 +217,12 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 13> kShadowFloa
      &ShadowSettings::normal_offset},
     {"light-size",
      "width of a spot light's source in world units (0: point light), for pcss, --soft and "
-     "the area-light reference",
+     "the area-light reference (a square facing the light's direction)",
      0.0f, 100.0f, &ShadowSettings::light_size},
-    {"sun-angle", "angular diameter of a directional light's source in degrees (0: a point)", 0.0f,
-     45.0f, &ShadowSettings::sun_angle},
+    {"sun-angle",
+     "angular diameter of a directional light's source in degrees (0: a point); the reference "
+     "traces a square of directions 2 tan(angle / 2) wide at unit distance",
+     0.0f, 45.0f, &ShadowSettings::sun_angle},
     {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
      &ShadowSettings::pcf_width},
     {"esm-c", "ESM exponent c", 1.0f, kEsmMaxC, &ShadowSettings::esm_c},
@@ -260,9 +272,19 @@ inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntPara
      &RenderSettings::light_index},
 }};
 
+inline constexpr int kMaxReferenceSamples = 65536;
+
+inline constexpr std::array<NumericParam<ReferenceSettings, int>, 1> kReferenceIntParams{{
+    {"reference-samples",
+     "traced reference: shadow rays per pixel towards an area light (--light-size or "
+     "--sun-angle > 0)",
+     1, kMaxReferenceSamples, &ReferenceSettings::samples},
+}};
+
 // Throws UsageError naming the first parameter outside its range.
 void validate(const ShadowSettings& settings);
 void validate(const RenderSettings& settings);
 void validate(const SsaoSettings& settings);
+void validate(const ReferenceSettings& settings);
 
 }  // namespace penumbra

@@ -11,7 +11,7 @@ namespace penumbra {
 
 namespace fs = std::filesystem;
 
-std::string temporary_path_for(const std::string& path) {
+std::string temporary_name(const std::string& path) {
   fs::path p(path);
   std::string name = ".";
   name.append(p.filename().string()).append(".tmp").append(std::to_string(getpid()));
@@ -27,12 +27,12 @@ void commit_temporary(const std::string& temporary, const std::string& path) {
   }
 }
 
-void write_text_file(const std::string& path, const std::string& text) {
-  const std::string temporary = temporary_path_for(path);
+void write_file_atomically(const std::string& path, std::string_view bytes) {
+  const std::string temporary = temporary_name(path);
   {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    out.flush();
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
     if (!out) {
       std::error_code ec;
       fs::remove(temporary, ec);

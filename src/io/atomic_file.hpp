@@ -1,18 +1,19 @@
 #pragma once
-// Files written atomically: to a temporary name beside the target, then
-// renamed over it, so a failure never leaves a partial file behind.
+// Whole files written atomically: to a temporary name beside the target,
+// then renamed, so a reader (or a crash) never sees half a file.
 #include <string>
+#include <string_view>
 
 namespace penumbra {
 
-// A temporary name in the target's folder, unique to this process.
-std::string temporary_path_for(const std::string& path);
+// A temporary name beside `path`, unique to this process: ".NAME.tmpPID".
+std::string temporary_name(const std::string& path);
 
-// Renames the temporary file to `path`; on failure removes it and throws
+// Renames `temporary` to `path`; on failure removes `temporary` and throws
 // RuntimeError naming `path`.
 void commit_temporary(const std::string& temporary, const std::string& path);
 
-// Writes `text` to `path` atomically. Throws RuntimeError.
-void write_text_file(const std::string& path, const std::string& text);
+// Writes `bytes` to `path` atomically. Throws RuntimeError.
+void write_file_atomically(const std::string& path, std::string_view bytes);
 
 }  // namespace penumbra

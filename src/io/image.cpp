@@ -66,7 +66,7 @@ void write_png(const Image& image, const std::string& path, PngEncoding encoding
           static_cast<std::uint8_t>(std::lround(v * 255.0f));
     }
   }
-  const std::string temporary = temporary_path_for(path);
+  const std::string temporary = temporary_name(path);
   if (!stbi_write_png(temporary.c_str(), image.width, image.height, 3, bytes.data(),
                       image.width * 3)) {
     std::error_code ec;
@@ -107,7 +107,7 @@ void write_exr(const Image& image, const std::string& path) {
   header.requested_pixel_types = requested;
   header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
 
-  const std::string temporary = temporary_path_for(path);
+  const std::string temporary = temporary_name(path);
   const char* err = nullptr;
   int result = SaveEXRImageToFile(&exr, &header, temporary.c_str(), &err);
   if (result != TINYEXR_SUCCESS) {

@@ -1,29 +1,34 @@
 #pragma once
-// A one-line progress bar on stderr, drawn only when stderr is a terminal
-// and the work has run for more than a second (so scripts and short runs
-// see nothing).
+// A one-line progress bar on stderr for long work. It appears only when
+// stderr is a terminal and the work has run for over a second, so short
+// runs, pipes and logs stay clean; finish() erases it.
 #include <chrono>
+#include <cstdint>
+#include <mutex>
 #include <string>
+#include <utility>
 
 namespace penumbra {
 
 class ProgressBar {
  public:
-  ProgressBar(std::string label, long total);
-  ~ProgressBar();  // ends the line if one was drawn
+  explicit ProgressBar(std::string label);
+  ~ProgressBar();
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
 
-  // Marks `done` of `total` finished; `item` names what is being worked on.
-  void update(long done, const std::string& item = {});
+  // Safe to call from many threads at once; a call that finds another
+  // drawing returns at once.
+  void update(std::int64_t done, std::int64_t total);
+  void finish();
 
  private:
+  using Clock = std::chrono::steady_clock;
+  std::mutex mutex_;
   std::string label_;
-  long total_;
-  bool terminal_;
+  Clock::time_point start_, last_draw_;
+  bool terminal_ = false;
   bool drawn_ = false;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-  std::chrono::steady_clock::time_point last_draw_{};
 };
 
 }  // namespace penumbra

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "core/error.hpp"
@@ -111,22 +112,23 @@ glm::mat4 Renderer::camera_view() const {
 }
 
 glm::mat4 Renderer::camera_projection(int width, int height) const {
-  // Near and far planes hug the scene so depth precision is not wasted.
+  // Near and far planes hug the geometry inside the view frustum, so depth
+  // precision is not wasted: the nearest bounding-box corner is often
+  // behind the camera, and a near plane at 1e-4 of the far one put the
+  // default scene's far ground 4e-3 units off once rebuilt from the depth
+  // buffer (more than the reference tracer's ray offset).
   const glm::mat4 view = camera_view();
+  const float fov_y = glm::radians(scene_.camera.fov_y_degrees);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const float ky = std::tan(0.5f * fov_y);
   float zmin = 1e30f, zmax = 0.0f;
-  for (int i = 0; i < 8; ++i) {
-    glm::vec3 corner{(i & 1) ? bounds_.max.x : bounds_.min.x,
-                     (i & 2) ? bounds_.max.y : bounds_.min.y,
-                     (i & 4) ? bounds_.max.z : bounds_.min.z};
-    float z = -(view * glm::vec4(corner, 1.0f)).z;
-    zmin = std::min(zmin, z);
-    zmax = std::max(zmax, z);
+  if (!frustum_depth_range(view, aspect * ky, ky, mesh_.vertices, mesh_.indices, zmin, zmax)) {
+    zmin = 0.1f;  // nothing in view
+    zmax = 1.0f;
   }
   const float far_plane = std::max(zmax * 1.01f, 1e-2f);
   const float near_plane = std::max(zmin * 0.99f, far_plane * 1e-4f);
-  return glm::perspective(glm::radians(scene_.camera.fov_y_degrees),
-                          static_cast<float>(width) / static_cast<float>(height), near_plane,
-                          far_plane);
+  return glm::perspective(fov_y, aspect, near_plane, far_plane);
 }
 
 void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow,
@@ -249,7 +251,9 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO,
                      reference_weights_.id());
   }
-  if (!is_map_view(render.view)) {
+  gbuffer_current_ = !is_map_view(render.view);
+  if (gbuffer_current_) {
+    last_view_projection_ = frame.projection * frame.view;
     {
       gl::GpuPassScope timed(profiler, gl::GpuPass::GBuffer);
       gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
@@ -293,6 +297,31 @@ Image Renderer::read_view() {
   }
   const gl::Texture& out = lighting_pass_.output();
   return read_texture(out.id(), out.width(), out.height(), GL_RGBA);
+}
+
+SurfacePoints Renderer::read_surfaces() const {
+  if (!gbuffer_current_) throw std::logic_error("read_surfaces() needs a camera view rendered");
+  const int width = gbuffer_pass_.depth().width(), height = gbuffer_pass_.depth().height();
+  const Image depth = read_texture(gbuffer_pass_.depth().id(), width, height, GL_DEPTH_COMPONENT);
+  const Image normal = read_texture(gbuffer_pass_.normal().id(), width, height, GL_RGBA);
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(last_view_projection_));
+  SurfacePoints surfaces(width, height);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      const float* n = normal.pixel(x, y);
+      if (n[3] == 0.0f) continue;  // shininess 0 marks the background, as in lighting.frag
+      // The pixel centre in NDC, as lighting.frag's world_position() (GL
+      // rows run bottom to top, image rows top to bottom).
+      const glm::dvec4 ndc((x + 0.5) / width * 2.0 - 1.0, (height - y - 0.5) / height * 2.0 - 1.0,
+                           double(depth.pixel(x, y)[0]) * 2.0 - 1.0, 1.0);
+      const glm::dvec4 p = inverse * ndc;
+      surfaces.position[i] = glm::vec3(glm::dvec3(p) / p.w);
+      surfaces.normal[i] = glm::normalize(glm::vec3(n[0], n[1], n[2]));
+      surfaces.covered[i] = 1;
+    }
+  }
+  return surfaces;
 }
 
 const gl::Texture& Renderer::shadow_map_texture(int light) const {

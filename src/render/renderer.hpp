@@ -15,6 +15,7 @@
 #include "render/gpu_scene.hpp"
 #include "render/lighting_pass.hpp"
 #include "render/ssao_pass.hpp"
+#include "render/surface_points.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 #include "shadow/light_view.hpp"
@@ -47,6 +48,10 @@ class Renderer {
   [[nodiscard]] Image read_view();
   // Light i's shadow map (z-bar in every channel), as last rendered.
   [[nodiscard]] Image read_shadow_map(int light) const;
+  // The world positions and normals the last render()'s camera view shaded,
+  // rebuilt from the G-buffer depth (through the inverse view-projection,
+  // in double) and normals. Throws std::logic_error after a map view.
+  [[nodiscard]] SurfacePoints read_surfaces() const;
 
   // Light i's map as the filters see it: the technique's representation
   // for vsm/esm/msm/msm16, the z-bar depth map otherwise. As last rendered.
@@ -78,6 +83,8 @@ class Renderer {
   std::vector<LightView> light_views_;
   RenderSettings last_render_;
   ShadowSettings last_shadow_;
+  glm::mat4 last_view_projection_{1.0f};
+  bool gbuffer_current_ = false;
 };
 
 }  // namespace penumbra

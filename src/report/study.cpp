@@ -58,7 +58,8 @@ class Study {
 
     StudyResult result;
     result.index_path = (std::filesystem::path(options_.output_dir) / "index.html").string();
-    write_text_file(result.index_path, page.finish());
+    write_file_atomically(result.index_path, page.finish());
+    progress_.finish();
     result.items = items_;
     result.failed = failed_;
     return result;
@@ -72,7 +73,7 @@ class Study {
     f.caption = caption;
     f.command = render_command_line(options_.scene_argument, render, shadow, file);
     ++items_;
-    progress_.update(items_, file);
+    progress_.update(items_, total_items());
     try {
       renderer_.render(render, shadow);
       const Image image = renderer_.read_view();
@@ -219,7 +220,7 @@ class Study {
       figures.push_back(figure("esm-c" + fixed(c, 0) + ".png", "esm, c = " + fixed(c, 0),
                                base_render_, s));
       ++items_;
-      progress_.update(items_, "esm metrics");
+      progress_.update(items_, total_items());
       if (auto m = measure(s)) {
         points.push_back({c, *m});
         rows.push_back({fixed(c, 0), fixed(m->mean_absolute_error, 4),
@@ -272,7 +273,7 @@ class Study {
     for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
                         Technique::Esm, Technique::Msm, Technique::Msm16}) {
       ++items_;
-      progress_.update(items_, "metrics " + name_of(t));
+      progress_.update(items_, total_items());
       if (auto m = measure(with(t))) {
         rows.push_back({name_of(t), fixed(m->mean_absolute_error, 4), fixed(m->rmse, 4),
                         fixed(100.0 * m->leak_fraction, 3) + " %",
@@ -305,7 +306,7 @@ class Study {
     for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
                         Technique::Esm, Technique::Msm, Technique::Msm16}) {
       ++items_;
-      progress_.update(items_, "timing " + name_of(t));
+      progress_.update(items_, total_items());
       try {
         const PassTimes times = measure_pass_times(renderer_, base_render_, with(t), kTimedFrames, 1);
         check_gl();
@@ -338,7 +339,9 @@ class Study {
   Renderer renderer_;
   RenderSettings base_render_;
   ShadowSettings base_shadow_;
-  ProgressBar progress_{"report", options_.quick ? 52 : 73};
+  // Images, metrics and timings the study makes, for the progress bar.
+  int total_items() const { return options_.quick ? 52 : 73; }
+  ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;
   int errors_seen_ = 0;

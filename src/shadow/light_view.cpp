@@ -14,33 +14,31 @@ glm::vec3 stable_up(const glm::vec3& direction) {
   return std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-// Light-space depth range of the parts of the triangles inside the spot
-// light's frustum side planes (|x| <= k*z, |y| <= k*z in view space, with
-// k = tan(fov / 2)). Each triangle is clipped Sutherland-Hodgman style, so
-// geometry outside the cone does not widen the range and a large triangle
-// that crosses the cone still counts where it is seen.
-bool clipped_depth_range(const glm::mat4& view, float k, std::span<const Vertex> vertices,
-                         std::span<const std::uint32_t> indices, float& zmin, float& zmax) {
+}  // namespace
+
+bool frustum_depth_range(const glm::mat4& view, float kx, float ky,
+                         std::span<const Vertex> vertices, std::span<const std::uint32_t> indices,
+                         float& zmin, float& zmax) {
   bool any = false;
   std::vector<glm::vec3> poly, next;
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     poly.clear();
     for (std::size_t c = 0; c < 3; ++c) {
       glm::vec4 p = view * glm::vec4(vertices[indices[t + c]].position, 1.0f);
-      poly.emplace_back(p.x, p.y, -p.z);  // z: depth in front of the light
+      poly.emplace_back(p.x, p.y, -p.z);  // z: depth in front of the eye
     }
     // Plane i keeps points with distance(p) >= 0.
     for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
       auto distance = [&](const glm::vec3& p) {
         switch (plane) {
           case 0:
-            return k * p.z - p.x;
+            return kx * p.z - p.x;
           case 1:
-            return k * p.z + p.x;
+            return kx * p.z + p.x;
           case 2:
-            return k * p.z - p.y;
+            return ky * p.z - p.y;
           default:
-            return k * p.z + p.y;
+            return ky * p.z + p.y;
         }
       };
       next.clear();
@@ -63,8 +61,6 @@ bool clipped_depth_range(const glm::mat4& view, float k, std::span<const Vertex>
   return any;
 }
 
-}  // namespace
-
 float LightView::relative_depth(const glm::vec3& world) const {
   const float z = -(view * glm::vec4(world, 1.0f)).z;
   return (z - z0) / (z1 - z0);
@@ -83,7 +79,8 @@ LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
     // Depth range of the geometry the light's frustum sees: geometry behind
     // the light or outside its cone would only waste precision.
     float zmin = 1e30f, zmax = 0.0f;
-    if (!clipped_depth_range(lv.view, std::tan(0.5f * fov), vertices, indices, zmin, zmax)) {
+    const float k = std::tan(0.5f * fov);
+    if (!frustum_depth_range(lv.view, k, k, vertices, indices, zmin, zmax)) {
       zmin = 0.1f;  // nothing in view
       zmax = 1.0f;
     }

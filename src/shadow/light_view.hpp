@@ -34,4 +34,14 @@ LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
                          std::span<const std::uint32_t> indices, int map_size);
 LightView fit_light_view(const Light& light, const TriangleMesh& mesh, int map_size);
 
+// Depth range, in front of the eye of `view`, of the parts of the triangles
+// inside the frustum side planes |x| <= kx z, |y| <= ky z of view space (kx,
+// ky: tangents of the half-angles). Each triangle is clipped
+// Sutherland-Hodgman style, so geometry outside the frustum does not widen
+// the range and a large triangle that crosses it still counts where it is
+// seen. False if no geometry is inside.
+bool frustum_depth_range(const glm::mat4& view, float kx, float ky,
+                         std::span<const Vertex> vertices, std::span<const std::uint32_t> indices,
+                         float& zmin, float& zmax);
+
 }  // namespace penumbra

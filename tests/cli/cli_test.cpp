@@ -1,70 +1,23 @@
 // The real binary with bad inputs: one "penumbra: error:" line naming the
 // culprit, the documented exit status, and no output file left behind.
 #include <gtest/gtest.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli/cli_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string err;
-  std::string out;
-};
-
-Result run(const std::string& args) {
-  const fs::path dir = fs::path(PENUMBRA_TEST_OUTPUT) / "cli";
-  fs::create_directories(dir);
-  // One file per test process: CTest runs the suites' tests side by side.
-  const std::string err_file = (dir / ("stderr-" + std::to_string(getpid()) + ".txt")).string();
-  const std::string cmd = std::string(PENUMBRA_BINARY) + " " + args + " 2>" + err_file;
-  Result r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe)) r.out += buf.data();
-  int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream in(err_file);
-  r.err.assign(std::istreambuf_iterator<char>(in), {});
-  return r;
-}
-
-std::string out_path(const std::string& name) {
-  fs::path dir = fs::path(PENUMBRA_TEST_OUTPUT) / "cli";
-  fs::create_directories(dir);
-  fs::path p = dir / name;
-  fs::remove(p);
-  return p.string();
-}
-
-void expect_error(const std::string& args, int status, const std::string& culprit,
-                  const std::string& output, const std::string& output_flag = "-o") {
-  Result r = run(args + " " + output_flag + " " + output);
-  EXPECT_EQ(r.status, status) << args << "\n" << r.err;
-  EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << args << "\n" << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected:\n" << r.err;
-  EXPECT_NE(r.err.find(culprit), std::string::npos) << args << "\nmessage: " << r.err;
-  EXPECT_FALSE(fs::exists(output)) << "output left behind for: " << args;
-  // No temporary files either: those of this output's name (other tests
-  // running beside this one may be writing theirs).
-  const fs::path folder = fs::path(output).parent_path();
-  if (!fs::is_directory(folder)) return;
-  const std::string temporary_prefix = "." + fs::path(output).filename().string() + ".tmp";
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    EXPECT_NE(entry.path().filename().string().rfind(temporary_prefix, 0), 0u)
-        << entry.path() << " left behind by: " << args;
-  }
-}
+using penumbra::testing::expect_error;
+using penumbra::testing::out_path;
+using penumbra::testing::Result;
+using penumbra::testing::run;
 
 TEST(Cli, UsageErrorsExitWithStatus2) {
   const std::string out = out_path("bad.png");

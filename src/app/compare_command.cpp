@@ -1,0 +1,493 @@
+#include "app/compare_command.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+
+#include "app/options.hpp"
+#include "io/progress_bar.hpp"
+#include "core/error.hpp"
+#include "gl/context.hpp"
+#include "io/atomic_file.hpp"
+#include "io/image.hpp"
+#include "reference/error_image.hpp"
+#include "reference/reference_cache.hpp"
+#include "reference/shadow_metrics.hpp"
+#include "reference/shadow_ray_tracer.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_file.hpp"
+
+namespace penumbra {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+template <class E, std::size_t N>
+std::string choices(const std::array<std::pair<E, std::string_view>, N>& table) {
+  return enum_choices<E>(EnumTable<E>(table), ",");
+}
+
+std::vector<std::string> split_list(const std::string& list) {
+  std::vector<std::string> names;
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    names.push_back(name);
+  }
+  return names;
+}
+
+template <class E, std::size_t N>
+std::vector<E> parse_list(const std::string& list, const std::string& flag, const char* what,
+                          const std::array<std::pair<E, std::string_view>, N>& table,
+                          const std::vector<E>& all) {
+  if (list == "all") return all;
+  std::vector<E> values;
+  for (const std::string& name : split_list(list)) {
+    const std::optional<E> value = parse_enum<E>(table, name);
+    if (!value) {
+      throw UsageError(flag + ": unknown " + what + " '" + name + "' (choose all, or from " +
+                       choices(table) + ", comma-separated)");
+    }
+    if (std::find(values.begin(), values.end(), *value) == values.end()) values.push_back(*value);
+  }
+  if (values.empty()) throw UsageError(flag + " is empty");
+  return values;
+}
+
+// One row group of the table: a technique with one filter (or none).
+struct Item {
+  ShadowSettings settings;
+  std::string skipped;  // why the item cannot run (a usage error); empty if it runs
+  std::optional<ShadowMetrics> traced, filtered;
+  json images = json::object();
+};
+
+std::string technique_name(Technique t) {
+  return std::string(enum_name<Technique>(kTechniqueNames, t));
+}
+
+std::string filter_name(Filter f) {
+  return std::string(enum_name<Filter>(kFilterNames, f));
+}
+
+// File-name stem of an item's images: "hard", "vsm-gaussian-w2".
+std::string item_stem(const ShadowSettings& s) {
+  std::string stem = technique_name(s.technique);
+  if (is_filterable(s.technique)) {
+    stem += "-" + filter_name(s.filter) + "-w" + std::to_string(s.blur);
+  }
+  return stem;
+}
+
+// The output folder: an existing writable folder, or one to be created in
+// an existing writable folder. Checked before any work, created after.
+void check_output_dir(const std::string& dir) {
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) throw UsageError("output '" + dir + "' is not a folder");
+    if (access(dir.c_str(), W_OK) != 0) {
+      throw UsageError("output folder '" + dir + "' is not writable");
+    }
+    return;
+  }
+  fs::path parent = fs::path(dir).lexically_normal().parent_path();
+  if (parent.empty()) parent = ".";
+  if (!fs::is_directory(parent, ec)) {
+    throw UsageError("output folder '" + parent.string() + "' does not exist");
+  }
+  if (access(parent.c_str(), W_OK) != 0) {
+    throw UsageError("output folder '" + parent.string() + "' is not writable");
+  }
+}
+
+// Whether the filtered hard-shadow reference (the `shadow-reference` view:
+// the map's depth tests averaged with the technique's kernel) is the
+// technique's target: for the filterable techniques with a fixed kernel.
+// Soft moment shadows (--soft, with the summed-area table) choose each
+// pixel's kernel from a penumbra estimate, which that view does not model.
+bool has_filtered_reference(const ShadowSettings& s) {
+  return is_filterable(s.technique) && !(s.soft && s.filter == Filter::Sat);
+}
+
+// Pixels not compared in `mask` (alpha 0) become not compared in `image`.
+void restrict_to(Image& image, const Image& mask) {
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) {
+    image.rgba[i] = std::min(image.rgba[i], mask.rgba[i]);
+  }
+}
+
+json metrics_json(const ShadowMetrics& m) {
+  return {{"pixels", m.pixels},
+          {"mae", m.mean_absolute_error},
+          {"rmse", m.rmse},
+          {"max_error", m.max_error},
+          {"leak_fraction", m.leak_fraction},
+          {"over_dark_fraction", m.over_dark_fraction}};
+}
+
+// The reason in a validate() message, without its explanation.
+std::string short_reason(const std::string& message) {
+  const std::size_t colon = message.find(": ");
+  return colon == std::string::npos ? message : message.substr(0, colon);
+}
+
+// A table row. In a row that `spans`, the last cell runs on past the
+// columns (a note) and does not widen them.
+struct Row {
+  std::vector<std::string> cells;
+  bool spans = false;
+};
+
+// Prints the rows in aligned columns; columns from `first_numeric` on are
+// right-aligned.
+void print_table(const std::vector<Row>& rows, std::size_t first_numeric) {
+  std::vector<std::size_t> widths;
+  for (const Row& row : rows) {
+    const std::size_t n = row.cells.size() - (row.spans ? 1 : 0);
+    widths.resize(std::max(widths.size(), n), 0);
+    for (std::size_t c = 0; c < n; ++c) widths[c] = std::max(widths[c], row.cells[c].size());
+  }
+  for (const Row& row : rows) {
+    std::string line;
+    for (std::size_t c = 0; c < row.cells.size(); ++c) {
+      const std::string& cell = row.cells[c];
+      if (c > 0) line += "  ";
+      const bool last = c + 1 == row.cells.size();
+      const std::size_t pad = last && row.spans ? 0 : widths[c] - cell.size();
+      if (c >= first_numeric) line.append(pad, ' ');
+      line += cell;
+      if (c < first_numeric && !last) line.append(pad, ' ');
+    }
+    std::printf("%s\n", line.c_str());
+  }
+}
+
+std::string fixed(double v, int digits) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+std::string percent(double fraction) {
+  return fixed(100.0 * fraction, 3) + "%";
+}
+
+std::vector<std::string> metrics_row(const Item& item, const char* reference,
+                                     const ShadowMetrics& m, bool first) {
+  const ShadowSettings& s = item.settings;
+  const bool filtered = is_filterable(s.technique);
+  return {first ? technique_name(s.technique) : "",
+          first ? (filtered ? filter_name(s.filter) : "-") : "",
+          first ? (filtered ? std::to_string(s.blur) : "-") : "",
+          reference,
+          fixed(m.mean_absolute_error, 4),
+          fixed(m.rmse, 4),
+          fixed(m.max_error, 3),
+          percent(m.leak_fraction),
+          percent(m.over_dark_fraction)};
+}
+
+}  // namespace
+
+std::vector<Technique> parse_technique_list(const std::string& list) {
+  std::vector<Technique> all;
+  for (const auto& [t, name] : kTechniqueNames) {
+    if (t != Technique::None) all.push_back(t);
+  }
+  return parse_list<Technique>(list, "--techniques", "technique", kTechniqueNames, all);
+}
+
+std::vector<Filter> parse_filter_list(const std::string& list) {
+  std::vector<Filter> all;
+  for (const auto& [f, name] : kFilterNames) all.push_back(f);
+  return parse_list<Filter>(list, "--filter", "filter", kFilterNames, all);
+}
+
+void add_compare_command_options(CLI::App& command, CompareArgs& args) {
+  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
+      ->capture_default_str();
+  command
+      .add_option(
+          "--techniques", args.techniques,
+          "all (every technique but none) or a comma-separated list of " + choices(kTechniqueNames))
+      ->capture_default_str();
+  command
+      .add_option("--filter", args.filters,
+                  "filters for the vsm/esm/msm/msm16 maps: all or a comma-separated list of " +
+                      choices(kFilterNames))
+      ->capture_default_str();
+  command.add_option("-o,--output", args.output_dir,
+                     "folder for the images (created if missing): each technique's shadow, its "
+                     "references and error maps (technique - reference: blue too dark, red too "
+                     "light, saturating at +-0.5)");
+  command.add_option("--json", args.json, "write the numbers to this file as JSON");
+  command.add_option("--cache-dir", args.cache_dir,
+                     "where traced references are kept (default: $XDG_CACHE_HOME/penumbra, or "
+                     "~/.cache/penumbra)");
+  command.add_flag("--no-cache", args.no_cache, "trace the reference even if it is cached");
+  command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
+  add_render_parameters(command, args.render);
+  add_shadow_parameters(command, args.shadow);
+  add_reference_options(command, args.reference);
+}
+
+namespace {
+
+// The items to run: each technique once, or once per filter for the
+// filterable ones; an item the settings forbid is kept, marked skipped.
+std::vector<Item> plan_items(const CompareArgs& args) {
+  std::vector<Item> items;
+  for (Technique t : parse_technique_list(args.techniques)) {
+    for (Filter f : parse_filter_list(args.filters)) {
+      Item item;
+      item.settings = args.shadow;
+      item.settings.technique = t;
+      item.settings.filter = f;
+      try {
+        validate(item.settings);
+      } catch (const UsageError& e) {
+        item.skipped = e.what();
+      }
+      items.push_back(item);
+      if (!is_filterable(t)) break;  // the filter does not apply: one item
+    }
+  }
+  const bool any =
+      std::any_of(items.begin(), items.end(), [](const Item& i) { return i.skipped.empty(); });
+  if (!any) throw UsageError("nothing to compare: " + items.front().skipped);
+  return items;
+}
+
+struct TracedReference {
+  Image image;  // alpha 1 on the pixels compared
+  ReferenceLight light;
+  int rays = 1;
+  bool cached = false;
+  double seconds = 0.0;
+  long pixels = 0;
+};
+
+// The traced shadow of the surfaces the camera sees, from the cache when
+// it holds them (`cache_dir` empty: no cache).
+TracedReference traced_reference(Renderer& renderer, const CompareArgs& args,
+                                 const std::string& cache_dir) {
+  RenderSettings view = args.render;
+  view.view = View::Shadow;
+  ShadowSettings no_shadow = args.shadow;
+  no_shadow.technique = Technique::None;
+  renderer.render(view, no_shadow);  // the G-buffer, and the fitted light views
+  const SurfacePoints surfaces = renderer.read_surfaces();
+  const int light_index = args.render.light_index;
+  TracedReference r;
+  r.light = make_reference_light(renderer.scene().lights[static_cast<std::size_t>(light_index)],
+                                 renderer.light_view(light_index), args.shadow);
+  r.rays = r.light.size > 0.0f ? args.reference.samples : 1;
+  const std::uint64_t key = reference_key(renderer.mesh(), surfaces, r.light, r.rays);
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<Image> cached;
+  if (!cache_dir.empty()) {
+    cached = load_cached_reference(cache_dir, key, surfaces.width, surfaces.height);
+  }
+  if (cached) {
+    r.image = std::move(*cached);
+    r.cached = true;
+  } else {
+    const ShadowRayTracer tracer(renderer.mesh());
+    ProgressBar progress("tracing the reference");
+    r.image = tracer.trace(surfaces, r.light, r.rays, [&](std::int64_t done, std::int64_t total) {
+      progress.update(done, total);
+    });
+    progress.finish();
+    if (!cache_dir.empty()) {
+      try {
+        store_cached_reference(cache_dir, key, r.image);
+      } catch (const RuntimeError& e) {
+        std::fprintf(stderr, "penumbra: warning: reference not cached: %s\n", e.what());
+      }
+    }
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (std::size_t i = 3; i < r.image.rgba.size(); i += 4) r.pixels += r.image.rgba[i] >= 0.5f;
+  return r;
+}
+
+// Renders each item's shadow (and its filtered reference), measures them
+// against the references and writes the images into `output_dir` (none
+// if empty).
+void measure_items(Renderer& renderer, const CompareArgs& args, const Image& traced,
+                   std::vector<Item>& items) {
+  const std::string& dir = args.output_dir;
+  auto write = [&](const Image& image, const std::string& name, Item* item, const char* role) {
+    if (dir.empty()) return;
+    const std::string path = (fs::path(dir) / (name + ".png")).string();
+    write_png(image, path, PngEncoding::Linear);
+    if (item != nullptr) item->images[role] = path;
+  };
+  write(traced, "reference-traced", nullptr, "");
+  RenderSettings view = args.render;
+  for (Item& item : items) {
+    if (!item.skipped.empty()) continue;
+    const std::string stem = item_stem(item.settings);
+    view.view = View::Shadow;
+    renderer.render(view, item.settings);
+    Image shadow = renderer.read_view();
+    restrict_to(shadow, traced);
+    item.traced = compare_shadow(shadow, traced);
+    write(shadow, stem, &item, "shadow");
+    write(error_image(shadow, traced), stem + "-error-traced", &item, "error_traced");
+    if (has_filtered_reference(item.settings)) {
+      view.view = View::ShadowReference;
+      renderer.render(view, item.settings);
+      Image filtered = renderer.read_view();
+      restrict_to(filtered, traced);
+      item.filtered = compare_shadow(shadow, filtered);
+      write(filtered, stem + "-reference-filtered", &item, "reference_filtered");
+      write(error_image(shadow, filtered), stem + "-error-filtered", &item, "error_filtered");
+    }
+  }
+}
+
+const char* light_type_name(LightType type) {
+  return type == LightType::Spot ? "spot" : "directional";
+}
+
+void print_report(const CompareArgs& args, const Scene& scene, const TracedReference& reference,
+                  const std::vector<Item>& items) {
+  const int light_index = args.render.light_index;
+  std::printf("scene %s, light %d (%s), %dx%d pixels, %d^2 shadow maps\n", scene.name.c_str(),
+              light_index,
+              light_type_name(scene.lights[static_cast<std::size_t>(light_index)].type),
+              args.render.width, args.render.height, args.shadow.map_size);
+  const ReferenceLight& light = reference.light;
+  if (light.size > 0.0f && light.type == LightType::Spot) {
+    std::printf("traced reference: square light %g wide, %d rays per pixel", light.size,
+                reference.rays);
+  } else if (light.size > 0.0f) {
+    std::printf("traced reference: sun %g degrees wide, %d rays per pixel", args.shadow.sun_angle,
+                reference.rays);
+  } else {
+    std::printf("traced reference: point light, 1 ray per pixel");
+  }
+  std::printf(", %s; %ld pixels compared (geometry the light reaches)\n\n",
+              reference.cached ? "cached" : (fixed(reference.seconds, 1) + " s").c_str(),
+              reference.pixels);
+  std::vector<Row> rows = {
+      {{"technique", "filter", "W", "reference", "MAE", "RMSE", "max", "leak", "over-dark"}}};
+  for (const Item& item : items) {
+    if (!item.skipped.empty()) {
+      rows.push_back(
+          {{technique_name(item.settings.technique), filter_name(item.settings.filter),
+            std::to_string(item.settings.blur), "skipped: " + short_reason(item.skipped)},
+           true});
+      continue;
+    }
+    rows.push_back({metrics_row(item, "traced", *item.traced, true)});
+    if (item.filtered) rows.push_back({metrics_row(item, "filtered", *item.filtered, false)});
+  }
+  print_table(rows, 4);
+  std::printf(
+      "\ntraced: against the ray-traced shadow; filtered: against the map's own depth tests "
+      "averaged with the technique's filter kernel. leak: reference < %.1f while the technique "
+      "> %.1f; over-dark: reference > %.1f while the technique < %.1f.\n",
+      kLeakReferenceBelow, kLeakTechniqueAbove, kOverDarkReferenceAbove, kOverDarkTechniqueBelow);
+  std::fflush(stdout);
+}
+
+json json_report(const CompareArgs& args, const Scene& scene, const TracedReference& reference,
+                 const std::vector<Item>& items) {
+  json results = json::array();
+  for (const Item& item : items) {
+    const ShadowSettings& s = item.settings;
+    json r = {{"technique", technique_name(s.technique)}};
+    r["filter"] = is_filterable(s.technique) ? json(filter_name(s.filter)) : json(nullptr);
+    r["blur"] = is_filterable(s.technique) ? json(s.blur) : json(nullptr);
+    if (!item.skipped.empty()) {
+      r["status"] = "skipped";
+      r["reason"] = item.skipped;
+    } else {
+      r["status"] = "ok";
+      r["traced"] = metrics_json(*item.traced);
+      r["filtered"] = item.filtered ? metrics_json(*item.filtered) : json(nullptr);
+      if (!args.output_dir.empty()) r["images"] = item.images;
+    }
+    results.push_back(r);
+  }
+  const int light_index = args.render.light_index;
+  return {
+      {"scene", scene.name},
+      {"light_index", light_index},
+      {"light_type", light_type_name(scene.lights[static_cast<std::size_t>(light_index)].type)},
+      {"width", args.render.width},
+      {"height", args.render.height},
+      {"shadow_map_size", args.shadow.map_size},
+      {"light_size", args.shadow.light_size},
+      {"sun_angle", args.shadow.sun_angle},
+      {"reference",
+       {{"rays_per_pixel", reference.rays},
+        {"pixels", reference.pixels},
+        {"cached", reference.cached},
+        {"seconds", reference.seconds},
+        {"image", args.output_dir.empty()
+                      ? json(nullptr)
+                      : json((fs::path(args.output_dir) / "reference-traced.png").string())}}},
+      {"results", results},
+  };
+}
+
+}  // namespace
+
+int run_compare_command(CompareArgs& args) {
+  // Every usage error first, so that none leaves output behind.
+  validate(args.render);
+  validate(args.shadow);
+  validate(args.reference);
+  std::vector<Item> items = plan_items(args);
+  if (!args.output_dir.empty()) check_output_dir(args.output_dir);
+  if (!args.json.empty()) check_output_path(args.json);
+  const Scene scene = resolve_scene(args.scene);
+  const int light_index = args.render.light_index;
+  if (light_index >= static_cast<int>(scene.lights.size())) {
+    throw UsageError("--light-index " + std::to_string(light_index) + ": scene '" + scene.name +
+                     "' has " + std::to_string(scene.lights.size()) + " light(s)");
+  }
+  const std::string cache_dir =
+      args.no_cache ? std::string()
+                    : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
+
+  auto context = gl::Context::create_headless({.debug = true, .verbose = args.verbose});
+  if (args.verbose) {
+    std::fprintf(stderr, "penumbra: %s via %s (%s)\n", context->renderer().c_str(),
+                 context->platform().c_str(), context->version().c_str());
+  }
+  Renderer renderer(scene);
+  const TracedReference reference = traced_reference(renderer, args, cache_dir);
+  if (!args.output_dir.empty()) {
+    std::error_code ec;
+    fs::create_directories(args.output_dir, ec);
+    if (ec) {
+      throw RuntimeError("cannot create folder '" + args.output_dir + "': " + ec.message());
+    }
+  }
+  measure_items(renderer, args, reference.image, items);
+  if (context->error_count() > 0) {
+    throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
+                       " error(s); last: " + context->last_error());
+  }
+  print_report(args, scene, reference, items);
+  if (!args.json.empty()) {
+    write_file_atomically(args.json, json_report(args, scene, reference, items).dump(2) + "\n");
+  }
+  return 0;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,41 @@
+#pragma once
+// `penumbra compare`: every chosen technique on one scene and light,
+// measured against the ray-traced reference (and, for the filtered
+// techniques, against the filtered hard shadow they approximate); prints a
+// table, optionally writes the numbers as JSON and the images (technique,
+// references, error maps) into a folder.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "core/settings.hpp"
+
+namespace penumbra {
+
+struct CompareArgs {
+  std::string scene = "default";
+  std::string techniques = "all";
+  std::string filters = "gaussian";
+  std::string output_dir;  // images; none when empty
+  std::string json;        // the numbers for scripts; none when empty
+  std::string cache_dir;   // traced references; default_cache_dir() when empty
+  bool no_cache = false;
+  bool verbose = false;
+  RenderSettings render;
+  ShadowSettings shadow;
+  ReferenceSettings reference;
+};
+
+void add_compare_command_options(CLI::App& command, CompareArgs& args);
+
+// "all" (every technique but none) or a comma-separated list of names, in
+// the order given, without repeats. Throws UsageError naming an unknown one.
+std::vector<Technique> parse_technique_list(const std::string& list);
+// "all" or a comma-separated list of filter names. Throws UsageError.
+std::vector<Filter> parse_filter_list(const std::string& list);
+
+// Runs the comparison; throws UsageError or RuntimeError. Every usage
+// error is found before anything is written.
+int run_compare_command(CompareArgs& args);
+
+}  // namespace penumbra

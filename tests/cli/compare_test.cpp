@@ -1,0 +1,166 @@
+// `penumbra compare` end to end on a tiny view: the table, the JSON, the
+// images, the reference cache, and its usage errors (each found before
+// anything is written).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using penumbra::testing::is_one_error_line;
+using penumbra::testing::out_path;
+using penumbra::testing::Result;
+using penumbra::testing::run;
+
+const std::string kSmall = "--width 48 --height 32 --shadow-map-size 128 ";
+
+std::string cache_dir(const std::string& name) {
+  return out_path("compare-cache-" + name);
+}
+
+// The command fails with the status and one line naming the culprit, and
+// neither the image folder nor the JSON file appears.
+void expect_compare_error(const std::string& args, int status, const std::string& culprit) {
+  const std::string dir = out_path("compare-error-out");
+  const std::string json = out_path("compare-error.json");
+  const std::string cache = cache_dir("error");
+  Result r = run("compare " + kSmall + args + " --cache-dir " + cache + " --json " + json +
+                 ((" " + args).find(" -o ") == std::string::npos ? " -o " + dir : ""));
+  EXPECT_EQ(r.status, status) << args << "\n" << r.err;
+  EXPECT_TRUE(is_one_error_line(r.err, culprit)) << args << "\nstderr: " << r.err;
+  EXPECT_TRUE(r.out.empty()) << args << "\nstdout: " << r.out;
+  EXPECT_FALSE(fs::exists(dir)) << "image folder made for: " << args;
+  EXPECT_FALSE(fs::exists(json)) << "JSON written for: " << args;
+  EXPECT_FALSE(fs::exists(cache)) << "cache written for: " << args;
+}
+
+TEST(Compare, UsageErrors) {
+  expect_compare_error("--techniques hard,blurry", 2, "'blurry'");
+  expect_compare_error("--techniques ''", 2, "--techniques");
+  expect_compare_error("--filter box", 2, "'box'");
+  expect_compare_error("--scene nosuchscene", 2, "nosuchscene");
+  expect_compare_error("--light-index 3", 2, "--light-index");
+  expect_compare_error("--reference-samples 0", 2, "--reference-samples");
+  expect_compare_error("--light-size -1", 2, "--light-size");
+  expect_compare_error("--techniques esm --filter sat", 2, "nothing to compare");
+  expect_compare_error("--no-such-flag", 2, "--no-such-flag");
+}
+
+TEST(Compare, RunTimeErrors) {
+  expect_compare_error("--scene " + out_path("missing.json"), 1, "missing.json");
+}
+
+TEST(Compare, BadOutputPaths) {
+  expect_compare_error("-o " + out_path("no-such-folder") + "/images", 2, "does not exist");
+  // procfs refuses new files and folders even to root.
+  expect_compare_error("-o /proc/self/images", 2, "not writable");
+  const std::string file = out_path("compare-a-file");
+  std::ofstream(file) << "x";
+  expect_compare_error("-o " + file, 2, "is not a folder");
+  const std::string dir = out_path("compare-bad-json");
+  const std::string cache = cache_dir("bad-json");
+  Result r = run("compare " + kSmall + "--cache-dir " + cache + " -o " + dir + " --json " +
+                 out_path("no-such-folder") + "/x.json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(is_one_error_line(r.err, "does not exist")) << r.err;
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+// Hard and filtered techniques against a point light's traced shadow; esm
+// with sat is reported as skipped while the rest run; the numbers, the
+// images and the cache all appear, and a second run finds the reference
+// in the cache.
+TEST(Compare, WritesTableJsonImagesAndCache) {
+  const std::string dir = out_path("compare-out");
+  const std::string json_path = out_path("compare.json");
+  const std::string cache = cache_dir("ok");
+  const std::string args = "compare " + kSmall +
+                           "--techniques hard,esm,msm --filter all --light-size 0 --cache-dir " +
+                           cache + " -o " + dir + " --json " + json_path;
+  Result r = run(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("technique"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("skipped: --technique esm cannot use --filter sat"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("point light, 1 ray per pixel"), std::string::npos) << r.out;
+
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["scene"], "default");
+  EXPECT_EQ(j["width"], 48);
+  EXPECT_EQ(j["reference"]["cached"], false);
+  EXPECT_GT(j["reference"]["pixels"].get<long>(), 100);
+  const auto& results = j["results"];
+  ASSERT_EQ(results.size(), 5u);  // hard; esm gaussian, esm sat; msm gaussian, msm sat
+  int ok = 0;
+  for (const auto& item : results) {
+    if (item["status"] == "skipped") {
+      EXPECT_EQ(item["technique"], "esm");
+      EXPECT_EQ(item["filter"], "sat");
+      continue;
+    }
+    ++ok;
+    const bool filtered = item["technique"] != "hard";
+    for (const char* reference : {"traced", "filtered"}) {
+      if (!filtered && std::string(reference) == "filtered") {
+        EXPECT_TRUE(item[reference].is_null());
+        continue;
+      }
+      const auto& m = item[reference];
+      EXPECT_EQ(m["pixels"], j["reference"]["pixels"]) << reference;
+      for (const char* key : {"mae", "rmse", "max_error", "leak_fraction", "over_dark_fraction"}) {
+        EXPECT_GE(m[key].get<double>(), 0.0) << key;
+        EXPECT_LE(m[key].get<double>(), 1.0) << key;
+      }
+      EXPECT_LE(m["mae"].get<double>(), m["rmse"].get<double>());
+    }
+    for (const auto& [name, path] : item["images"].items()) {
+      EXPECT_TRUE(fs::exists(path.get<std::string>())) << name;
+    }
+    EXPECT_EQ(item["images"].size(), filtered ? 4u : 2u);
+  }
+  EXPECT_EQ(ok, 4);
+  EXPECT_TRUE(fs::exists(fs::path(dir) / "reference-traced.png"));
+  EXPECT_TRUE(fs::exists(fs::path(dir) / "msm-sat-w2-error-filtered.png"));
+  int cached = 0;
+  for (const auto& entry : fs::directory_iterator(cache)) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);
+    ++cached;
+  }
+  EXPECT_EQ(cached, 1);
+
+  Result again = run(args);
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.out.find("1 ray per pixel, cached"), std::string::npos) << again.out;
+  std::ifstream in2(json_path);
+  EXPECT_EQ(nlohmann::json::parse(in2)["reference"]["cached"], true);
+}
+
+// An area light: the table names it, and without -o, --json or a cache
+// nothing is written.
+TEST(Compare, AreaLightReferenceWithoutOutputs) {
+  Result r = run("compare " + kSmall +
+                 "--techniques pcss --light-size 0.8 --reference-samples 16 --no-cache");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("square light 0.8 wide, 16 rays per pixel"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pcss"), std::string::npos) << r.out;
+}
+
+TEST(Compare, HelpListsItsOptions) {
+  Result r = run("compare --help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* option : {"--scene", "--techniques", "--filter", "--blur", "--light-size",
+                             "--sun-angle", "--reference-samples", "--json", "--output",
+                             "--cache-dir", "--no-cache", "--light-index", "--width"}) {
+    EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from --help";
+  }
+}
+
+}  // namespace
