@@ -21,29 +21,6 @@ namespace {
 
 using gl::GpuPass;
 
-std::vector<Technique> parse_techniques(const std::string& list) {
-  std::vector<Technique> out;
-  if (list == "all") {
-    for (const auto& [t, name] : kTechniqueNames) {
-      if (t != Technique::None) out.push_back(t);
-    }
-    return out;
-  }
-  std::stringstream in(list);
-  std::string name;
-  while (std::getline(in, name, ',')) {
-    auto t = parse_enum<Technique>(kTechniqueNames, name);
-    if (!t) {
-      throw UsageError("unknown technique '" + name + "' in --technique (choose from " +
-                       enum_choices<Technique>(kTechniqueNames) +
-                       ", a comma-separated list, or all)");
-    }
-    out.push_back(*t);
-  }
-  if (out.empty()) throw UsageError("--technique lists no technique");
-  return out;
-}
-
 // The settings of each run: every technique, and the sweep's values.
 std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
                                       const std::vector<Technique>& techniques) {
@@ -151,7 +128,7 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
 }
 
 int run_bench_command(BenchArgs& args) {
-  const std::vector<Technique> techniques = parse_techniques(args.named.technique);
+  const std::vector<Technique> techniques = parse_technique_list(args.named.technique, "--technique");
   args.named.technique = "hard";  // parsed above; the rest of the named options as usual
   parse_named_options(args.named, args.shadow, args.render);
   if (!args.json.empty()) check_output_path(args.json);

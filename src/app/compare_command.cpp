@@ -35,35 +35,6 @@ std::string choices(const std::array<std::pair<E, std::string_view>, N>& table) 
   return enum_choices<E>(EnumTable<E>(table), ",");
 }
 
-std::vector<std::string> split_list(const std::string& list) {
-  std::vector<std::string> names;
-  std::stringstream in(list);
-  for (std::string name; std::getline(in, name, ',');) {
-    name.erase(0, name.find_first_not_of(" \t"));
-    name.erase(name.find_last_not_of(" \t") + 1);
-    names.push_back(name);
-  }
-  return names;
-}
-
-template <class E, std::size_t N>
-std::vector<E> parse_list(const std::string& list, const std::string& flag, const char* what,
-                          const std::array<std::pair<E, std::string_view>, N>& table,
-                          const std::vector<E>& all) {
-  if (list == "all") return all;
-  std::vector<E> values;
-  for (const std::string& name : split_list(list)) {
-    const std::optional<E> value = parse_enum<E>(table, name);
-    if (!value) {
-      throw UsageError(flag + ": unknown " + what + " '" + name + "' (choose all, or from " +
-                       choices(table) + ", comma-separated)");
-    }
-    if (std::find(values.begin(), values.end(), *value) == values.end()) values.push_back(*value);
-  }
-  if (values.empty()) throw UsageError(flag + " is empty");
-  return values;
-}
-
 // One row group of the table: a technique with one filter (or none).
 struct Item {
   ShadowSettings settings;
@@ -199,20 +170,6 @@ std::vector<std::string> metrics_row(const Item& item, const char* reference,
 
 }  // namespace
 
-std::vector<Technique> parse_technique_list(const std::string& list) {
-  std::vector<Technique> all;
-  for (const auto& [t, name] : kTechniqueNames) {
-    if (t != Technique::None) all.push_back(t);
-  }
-  return parse_list<Technique>(list, "--techniques", "technique", kTechniqueNames, all);
-}
-
-std::vector<Filter> parse_filter_list(const std::string& list) {
-  std::vector<Filter> all;
-  for (const auto& [f, name] : kFilterNames) all.push_back(f);
-  return parse_list<Filter>(list, "--filter", "filter", kFilterNames, all);
-}
-
 void add_compare_command_options(CLI::App& command, CompareArgs& args) {
   command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
       ->capture_default_str();
@@ -247,8 +204,8 @@ namespace {
 // filterable ones; an item the settings forbid is kept, marked skipped.
 std::vector<Item> plan_items(const CompareArgs& args) {
   std::vector<Item> items;
-  for (Technique t : parse_technique_list(args.techniques)) {
-    for (Filter f : parse_filter_list(args.filters)) {
+  for (Technique t : parse_technique_list(args.techniques, "--techniques")) {
+    for (Filter f : parse_filter_list(args.filters, "--filter")) {
       Item item;
       item.settings = args.shadow;
       item.settings.technique = t;

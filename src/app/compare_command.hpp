@@ -29,10 +29,6 @@ struct CompareArgs {
 void add_compare_command_options(CLI::App& command, CompareArgs& args);
 
 // "all" (every technique but none) or a comma-separated list of names, in
-// the order given, without repeats. Throws UsageError naming an unknown one.
-std::vector<Technique> parse_technique_list(const std::string& list);
-// "all" or a comma-separated list of filter names. Throws UsageError.
-std::vector<Filter> parse_filter_list(const std::string& list);
 
 // Runs the comparison; throws UsageError or RuntimeError. Every usage
 // error is found before anything is written.

@@ -51,7 +51,51 @@ bool parse_switch(const std::string& flag, const std::string& value) {
   throw UsageError(flag + " '" + value + "': choose from " + choices(kOnOffNames));
 }
 
+
+std::vector<std::string> split_list(const std::string& list) {
+  std::vector<std::string> names;
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    names.push_back(name);
+  }
+  return names;
+}
+
+template <class E, std::size_t N>
+std::vector<E> parse_list(const std::string& list, const std::string& flag, const char* what,
+                          const std::array<std::pair<E, std::string_view>, N>& table,
+                          const std::vector<E>& all) {
+  if (list == "all") return all;
+  std::vector<E> values;
+  for (const std::string& name : split_list(list)) {
+    const std::optional<E> value = parse_enum<E>(table, name);
+    if (!value) {
+      throw UsageError(flag + ": unknown " + what + " '" + name + "' (choose all, or from " +
+                       choices(table) + ", comma-separated)");
+    }
+    if (std::find(values.begin(), values.end(), *value) == values.end()) values.push_back(*value);
+  }
+  if (values.empty()) throw UsageError(flag + " is empty");
+  return values;
+}
+
 }  // namespace
+
+std::vector<Technique> parse_technique_list(const std::string& list, const std::string& flag) {
+  std::vector<Technique> all;
+  for (const auto& [t, name] : kTechniqueNames) {
+    if (t != Technique::None) all.push_back(t);
+  }
+  return parse_list<Technique>(list, flag, "technique", kTechniqueNames, all);
+}
+
+std::vector<Filter> parse_filter_list(const std::string& list, const std::string& flag) {
+  std::vector<Filter> all;
+  for (const auto& [f, name] : kFilterNames) all.push_back(f);
+  return parse_list<Filter>(list, flag, "filter", kFilterNames, all);
+}
 
 void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& named) {
   named.technique = std::string(enum_name<Technique>(kTechniqueNames, settings.technique));

@@ -4,6 +4,7 @@
 // default (the struct's) per parameter.
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "core/settings.hpp"
 
@@ -28,6 +29,12 @@ void add_ssao_options(CLI::App& app, SsaoSettings& settings, NamedOptions& named
 void add_shadow_parameters(CLI::App& app, ShadowSettings& settings);
 void add_render_parameters(CLI::App& app, RenderSettings& settings);
 void add_reference_options(CLI::App& app, ReferenceSettings& settings);
+
+// "all" or a comma-separated list of names, for commands that take several
+// techniques (all: every one but none) or filters; `flag` names the option
+// in errors. Throws UsageError.
+std::vector<Technique> parse_technique_list(const std::string& list, const std::string& flag);
+std::vector<Filter> parse_filter_list(const std::string& list, const std::string& flag);
 
 // Throws UsageError for an unknown name. The SSAO switches are read only by
 // the overload that takes SsaoSettings.
