@@ -128,7 +128,8 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
 }
 
 int run_bench_command(BenchArgs& args) {
-  const std::vector<Technique> techniques = parse_technique_list(args.named.technique, "--technique");
+  const std::vector<Technique> techniques =
+      parse_technique_list(args.named.technique, "--technique");
   args.named.technique = "hard";  // parsed above; the rest of the named options as usual
   parse_named_options(args.named, args.shadow, args.render);
   if (!args.json.empty()) check_output_path(args.json);

@@ -7,8 +7,8 @@
 #include "app/bench_command.hpp"
 #include "app/compare_command.hpp"
 #include "app/options.hpp"
-#include "app/report_command.hpp"
 #include "app/render_command.hpp"
+#include "app/report_command.hpp"
 #include "core/error.hpp"
 
 namespace penumbra {

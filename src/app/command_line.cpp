@@ -12,7 +12,9 @@ std::string number(float value) {
   auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, result.ptr);
 }
-std::string number(int value) { return std::to_string(value); }
+std::string number(int value) {
+  return std::to_string(value);
+}
 
 template <class Settings, class T, std::size_t N>
 void append_changed(std::string& out, const Settings& settings,

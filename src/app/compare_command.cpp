@@ -11,15 +11,16 @@
 #include <sstream>
 
 #include "app/options.hpp"
-#include "io/progress_bar.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
+#include "io/progress_bar.hpp"
 #include "reference/error_image.hpp"
 #include "reference/reference_cache.hpp"
 #include "reference/shadow_metrics.hpp"
 #include "reference/shadow_ray_tracer.hpp"
+#include "reference/traced_reference.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
 
@@ -225,59 +226,6 @@ std::vector<Item> plan_items(const CompareArgs& args) {
   return items;
 }
 
-struct TracedReference {
-  Image image;  // alpha 1 on the pixels compared
-  ReferenceLight light;
-  int rays = 1;
-  bool cached = false;
-  double seconds = 0.0;
-  long pixels = 0;
-};
-
-// The traced shadow of the surfaces the camera sees, from the cache when
-// it holds them (`cache_dir` empty: no cache).
-TracedReference traced_reference(Renderer& renderer, const CompareArgs& args,
-                                 const std::string& cache_dir) {
-  RenderSettings view = args.render;
-  view.view = View::Shadow;
-  ShadowSettings no_shadow = args.shadow;
-  no_shadow.technique = Technique::None;
-  renderer.render(view, no_shadow);  // the G-buffer, and the fitted light views
-  const SurfacePoints surfaces = renderer.read_surfaces();
-  const int light_index = args.render.light_index;
-  TracedReference r;
-  r.light = make_reference_light(renderer.scene().lights[static_cast<std::size_t>(light_index)],
-                                 renderer.light_view(light_index), args.shadow);
-  r.rays = r.light.size > 0.0f ? args.reference.samples : 1;
-  const std::uint64_t key = reference_key(renderer.mesh(), surfaces, r.light, r.rays);
-  const auto start = std::chrono::steady_clock::now();
-  std::optional<Image> cached;
-  if (!cache_dir.empty()) {
-    cached = load_cached_reference(cache_dir, key, surfaces.width, surfaces.height);
-  }
-  if (cached) {
-    r.image = std::move(*cached);
-    r.cached = true;
-  } else {
-    const ShadowRayTracer tracer(renderer.mesh());
-    ProgressBar progress("tracing the reference");
-    r.image = tracer.trace(surfaces, r.light, r.rays, [&](std::int64_t done, std::int64_t total) {
-      progress.update(done, total);
-    });
-    progress.finish();
-    if (!cache_dir.empty()) {
-      try {
-        store_cached_reference(cache_dir, key, r.image);
-      } catch (const RuntimeError& e) {
-        std::fprintf(stderr, "penumbra: warning: reference not cached: %s\n", e.what());
-      }
-    }
-  }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (std::size_t i = 3; i < r.image.rgba.size(); i += 4) r.pixels += r.image.rgba[i] >= 0.5f;
-  return r;
-}
-
 // Renders each item's shadow (and its filtered reference), measures them
 // against the references and writes the images into `output_dir` (none
 // if empty).
@@ -427,7 +375,8 @@ int run_compare_command(CompareArgs& args) {
                  context->platform().c_str(), context->version().c_str());
   }
   Renderer renderer(scene);
-  const TracedReference reference = traced_reference(renderer, args, cache_dir);
+  const TracedReference reference =
+      traced_reference(renderer, args.render, args.shadow, args.reference.samples, cache_dir);
   if (!args.output_dir.empty()) {
     std::error_code ec;
     fs::create_directories(args.output_dir, ec);

@@ -51,7 +51,6 @@ bool parse_switch(const std::string& flag, const std::string& value) {
   throw UsageError(flag + " '" + value + "': choose from " + choices(kOnOffNames));
 }
 
-
 std::vector<std::string> split_list(const std::string& list) {
   std::vector<std::string> names;
   std::stringstream in(list);

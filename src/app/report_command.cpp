@@ -32,9 +32,9 @@ int run_report_command(const ReportArgs& args) {
                         : args.output);
   const Scene scene = resolve_scene(args.scene);
   auto context = gl::Context::create_headless();
-  const StudyResult result =
-      write_study(scene, {.scene_argument = args.scene, .output_dir = args.output, .quick = args.quick},
-                  *context);
+  const StudyResult result = write_study(
+      scene, {.scene_argument = args.scene, .output_dir = args.output, .quick = args.quick},
+      *context);
   std::printf("%s\n", result.index_path.c_str());
   if (result.failed > 0) {
     std::fprintf(stderr,

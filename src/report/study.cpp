@@ -11,7 +11,10 @@
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/progress_bar.hpp"
+#include "reference/error_image.hpp"
+#include "reference/reference_cache.hpp"
 #include "reference/shadow_metrics.hpp"
+#include "reference/traced_reference.hpp"
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
 #include "report/html_page.hpp"
@@ -28,7 +31,9 @@ std::string fixed(double value, int digits) {
   return out.str();
 }
 
-std::string name_of(Technique t) { return std::string(enum_name<Technique>(kTechniqueNames, t)); }
+std::string name_of(Technique t) {
+  return std::string(enum_name<Technique>(kTechniqueNames, t));
+}
 
 class Study {
  public:
@@ -115,16 +120,22 @@ class Study {
     std::vector<HtmlFigure> figures;
     for (Technique t : {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss,
                         Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16}) {
-      figures.push_back(figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t)));
+      figures.push_back(
+          figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t)));
     }
     for (Technique t : {Technique::Vsm, Technique::Msm}) {
       ShadowSettings s = with(t);
       s.filter = Filter::Sat;
       s.soft = true;
       s.blur = 1;
-      figures.push_back(
-          figure("technique-" + name_of(t) + "-soft.png", name_of(t) + " --soft (SAT)", base_render_, s));
+      figures.push_back(figure("technique-" + name_of(t) + "-soft.png",
+                               name_of(t) + " --soft (SAT)", base_render_, s));
     }
+    RenderSettings ao = base_render_;
+    ao.view = View::Ao;
+    figures.push_back(figure("ambient-occlusion.png",
+                             "the ambient-occlusion buffer (SSAO), which scales the ambient term",
+                             ao, base_shadow_));
     page.figures(figures);
   }
 
@@ -157,8 +168,8 @@ class Study {
         "W = 1 or 2 only anti-aliases the edge; W = 16 and 32 simulate a wide light. A fixed "
         "filter widens every penumbra alike, contact shadows included; PCSS widens them with "
         "the blocker-receiver distance (sharp at the box's foot, wide under the high slab).");
-    const std::vector<int> widths = options_.quick ? std::vector<int>{1, 4, 16}
-                                                   : std::vector<int>{1, 2, 4, 8, 16, 32};
+    const std::vector<int> widths =
+        options_.quick ? std::vector<int>{1, 4, 16} : std::vector<int>{1, 2, 4, 8, 16, 32};
     const std::vector<Technique> swept =
         options_.quick ? std::vector<Technique>{Technique::Msm}
                        : std::vector<Technique>{Technique::Msm, Technique::Vsm, Technique::Esm,
@@ -186,7 +197,7 @@ class Study {
   }
 
   // The spot light's shadow factor against the filtered reference.
-  std::optional<ShadowMetrics> measure(const ShadowSettings& shadow) {
+  std::optional<ShadowMetrics> measure_against_filtered(const ShadowSettings& shadow) {
     try {
       RenderSettings r = base_render_;
       r.view = View::Shadow;
@@ -217,11 +228,11 @@ class Study {
     for (float c : cs) {
       ShadowSettings s = with(Technique::Esm);
       s.esm_c = c;
-      figures.push_back(figure("esm-c" + fixed(c, 0) + ".png", "esm, c = " + fixed(c, 0),
-                               base_render_, s));
+      figures.push_back(
+          figure("esm-c" + fixed(c, 0) + ".png", "esm, c = " + fixed(c, 0), base_render_, s));
       ++items_;
       progress_.update(items_, total_items());
-      if (auto m = measure(s)) {
+      if (auto m = measure_against_filtered(s)) {
         points.push_back({c, *m});
         rows.push_back({fixed(c, 0), fixed(m->mean_absolute_error, 4),
                         fixed(100.0 * m->leak_fraction, 3) + " %",
@@ -230,7 +241,8 @@ class Study {
     }
     page.paragraph(
         "The map stores exp(c (z - 1)), in (0, 1] for every c, so it cannot overflow; c is "
-        "capped at " + fixed(kEsmMaxC, 0) +
+        "capped at " +
+        fixed(kEsmMaxC, 0) +
         " where exp(-c) would leave the normal float range. Measured on the spot light's shadow "
         "factor (W = 4) against the filtered hard reference; light leaking counts pixels the "
         "reference has in shadow (< 0.1) that the technique lights (> 0.3), over-darkening "
@@ -242,9 +254,10 @@ class Study {
 
   template <class Points>
   static std::string esm_discussion(float lowest, float highest, const Points& points) {
-    const auto best = std::min_element(points.begin(), points.end(), [](const auto& a, const auto& b) {
-      return a.m.mean_absolute_error < b.m.mean_absolute_error;
-    });
+    const auto best =
+        std::min_element(points.begin(), points.end(), [](const auto& a, const auto& b) {
+          return a.m.mean_absolute_error < b.m.mean_absolute_error;
+        });
     const auto& first = points.front().m;
     const auto& last = points.back().m;
     std::ostringstream out;
@@ -256,33 +269,99 @@ class Study {
         << fixed(first.mean_absolute_error, 4) << " at c = " << fixed(lowest, 0) << " to "
         << fixed(last.mean_absolute_error, 4) << " at c = " << fixed(highest, 0)
         << ", and light leaking from " << fixed(100.0 * first.leak_fraction, 3) << " % to "
-        << fixed(100.0 * last.leak_fraction, 3) << " % of the pixels. On this scene c = "
-        << fixed(best->c, 0) << " wins, with a mean error of "
-        << fixed(best->m.mean_absolute_error, 4) << ".";
+        << fixed(100.0 * last.leak_fraction, 3)
+        << " % of the pixels. On this scene c = " << fixed(best->c, 0)
+        << " wins, with a mean error of " << fixed(best->m.mean_absolute_error, 4) << ".";
     return out.str();
   }
 
+  // The spot light's shadow factor of a technique, or nullopt on failure.
+  std::optional<Image> shadow_image(const ShadowSettings& shadow, View view = View::Shadow) {
+    try {
+      RenderSettings r = base_render_;
+      r.view = view;
+      renderer_.render(r, shadow);
+      Image image = renderer_.read_view();
+      check_gl();
+      return image;
+    } catch (const std::exception&) {
+      ++failed_;
+      return std::nullopt;
+    }
+  }
+
   void errors_section(HtmlPage& page) {
-    page.heading("5. Errors against the filtered hard-shadow reference");
+    page.heading("5. Errors against the references");
+    const int samples = options_.quick ? 64 : 256;
+    std::optional<TracedReference> traced;
+    ++items_;
+    progress_.update(items_, total_items());
+    try {
+      traced =
+          traced_reference(renderer_, base_render_, base_shadow_, samples, default_cache_dir());
+      check_gl();
+    } catch (const std::exception& e) {
+      ++failed_;
+      page.paragraph(std::string("The traced reference failed: ") + e.what());
+    }
     page.paragraph(
-        "The spot light's shadow factor over every pixel that sees geometry. For hard, PCF and "
-        "PCSS the reference is the plain hard shadow (their own filters are not a fixed "
-        "kernel); for the filtered techniques it is their kernel (Gaussian, W = 4).");
-    std::vector<std::vector<std::string>> rows = {
-        {"technique", "mean abs. error", "RMSE", "light leaking", "over-darkening", "max error"}};
+        "The spot light's shadow factor over the pixels that see geometry inside its cone, "
+        "against two references. Traced: the ground truth, shadow rays from every pixel's "
+        "surface point to the light's square source (" +
+        fixed(base_shadow_.light_size, 2) + " wide, " + std::to_string(samples) +
+        " stratified rays per pixel), traced with Embree through the same triangles; `penumbra "
+        "compare` computes the same. Filtered: the unfiltered map's depth tests averaged with the "
+        "technique's own kernel (Gaussian, W = 4), what a filtered technique approximates. Light "
+        "leaking counts pixels the reference has in shadow (< 0.1) that the technique lights "
+        "(> 0.3); over-darkening the reverse (reference > 0.9, technique < 0.7). The error "
+        "images show technique minus traced reference: red where the technique is too light, "
+        "blue where too dark.");
+    std::vector<std::vector<std::string>> rows = {{"technique", "MAE traced", "RMSE traced",
+                                                   "leaking traced", "over-dark traced",
+                                                   "MAE filtered", "leaking filtered"}};
+    std::vector<HtmlFigure> figures;
     for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
                         Technique::Esm, Technique::Msm, Technique::Msm16}) {
       ++items_;
       progress_.update(items_, total_items());
-      if (auto m = measure(with(t))) {
-        rows.push_back({name_of(t), fixed(m->mean_absolute_error, 4), fixed(m->rmse, 4),
-                        fixed(100.0 * m->leak_fraction, 3) + " %",
-                        fixed(100.0 * m->over_dark_fraction, 3) + " %", fixed(m->max_error, 3)});
-      } else {
-        rows.push_back({name_of(t), "failed", "", "", "", ""});
+      const ShadowSettings settings = with(t);
+      std::optional<Image> image = shadow_image(settings);
+      if (!image || !traced) {
+        rows.push_back({name_of(t), "failed"});
+        continue;
       }
+      const ShadowMetrics m = compare_shadow(*image, traced->image);
+      std::vector<std::string> row = {name_of(t), fixed(m.mean_absolute_error, 4), fixed(m.rmse, 4),
+                                      fixed(100.0 * m.leak_fraction, 3) + " %",
+                                      fixed(100.0 * m.over_dark_fraction, 3) + " %"};
+      if (is_filterable(t)) {
+        if (std::optional<Image> reference = shadow_image(settings, View::ShadowReference)) {
+          const ShadowMetrics f = compare_shadow(*image, *reference);
+          row.push_back(fixed(f.mean_absolute_error, 4));
+          row.push_back(fixed(100.0 * f.leak_fraction, 3) + " %");
+        }
+      } else {
+        row.push_back("");
+        row.push_back("");
+      }
+      rows.push_back(row);
+      HtmlFigure f;
+      f.caption = name_of(t) + " minus traced";
+      f.image = "error-" + name_of(t) + ".png";
+      try {
+        const Image error = error_image(*image, traced->image);
+        write_png(error, (std::filesystem::path(options_.output_dir) / f.image).string(),
+                  PngEncoding::Linear);
+        f.width = error.width;
+        f.height = error.height;
+      } catch (const std::exception& e) {
+        f.error = e.what();
+        ++failed_;
+      }
+      figures.push_back(f);
     }
     page.table(rows);
+    page.figures(figures);
   }
 
   void timings_section(HtmlPage& page) {
@@ -293,7 +372,8 @@ class Study {
         "). Median of " + std::to_string(kTimedFrames) + " frames at " +
         std::to_string(base_render_.width) + "x" + std::to_string(base_render_.height) +
         " with a " + std::to_string(base_shadow_.map_size) + "^2 map, passes serialized, in ms (" +
-        (timer ? "GPU timer queries" : "wall clock: this renderer's timer queries miss compute work") +
+        (timer ? "GPU timer queries"
+               : "wall clock: this renderer's timer queries miss compute work") +
         "). The last columns put each filter pass against a compute copy of the same map (one "
         "read, one write per texel): the filters are memory-bound, so that ratio says how close "
         "they come to the bandwidth limit. `penumbra bench` measures more.");
@@ -308,7 +388,8 @@ class Study {
       ++items_;
       progress_.update(items_, total_items());
       try {
-        const PassTimes times = measure_pass_times(renderer_, base_render_, with(t), kTimedFrames, 1);
+        const PassTimes times =
+            measure_pass_times(renderer_, base_render_, with(t), kTimedFrames, 1);
         check_gl();
         std::vector<std::string> row = {name_of(t)};
         for (std::size_t p = 0; p < kPassCount; ++p) {
@@ -316,7 +397,8 @@ class Study {
           row.push_back(times.ran[p] ? fixed(spread_of(timer ? s.timer_ms : s.wall_ms).median, 2)
                                      : "");
         }
-        row.push_back(fixed(spread_of(timer ? times.total.timer_ms : times.total.wall_ms).median, 2));
+        row.push_back(
+            fixed(spread_of(timer ? times.total.timer_ms : times.total.wall_ms).median, 2));
         std::string ratios;
         for (const auto& [name, ratio] : copy_ratios(times, timer).values) {
           ratios += (ratios.empty() ? "" : ", ") + name + " " + fixed(ratio, 1) + "x";
@@ -340,7 +422,7 @@ class Study {
   RenderSettings base_render_;
   ShadowSettings base_shadow_;
   // Images, metrics and timings the study makes, for the progress bar.
-  int total_items() const { return options_.quick ? 52 : 73; }
+  int total_items() const { return options_.quick ? 55 : 76; }
   ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;

@@ -1,0 +1,56 @@
+#include "reference/traced_reference.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <optional>
+
+#include "core/error.hpp"
+#include "io/progress_bar.hpp"
+#include "reference/reference_cache.hpp"
+
+namespace penumbra {
+
+TracedReference traced_reference(Renderer& renderer, const RenderSettings& render,
+                                 const ShadowSettings& shadow, int samples,
+                                 const std::string& cache_dir) {
+  RenderSettings view = render;
+  view.view = View::Shadow;
+  ShadowSettings no_shadow = shadow;
+  no_shadow.technique = Technique::None;
+  renderer.render(view, no_shadow);  // the G-buffer, and the fitted light views
+  const SurfacePoints surfaces = renderer.read_surfaces();
+  const int light_index = render.light_index;
+  TracedReference r;
+  r.light = make_reference_light(renderer.scene().lights[static_cast<std::size_t>(light_index)],
+                                 renderer.light_view(light_index), shadow);
+  r.rays = r.light.size > 0.0f ? samples : 1;
+  const std::uint64_t key = reference_key(renderer.mesh(), surfaces, r.light, r.rays);
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<Image> cached;
+  if (!cache_dir.empty()) {
+    cached = load_cached_reference(cache_dir, key, surfaces.width, surfaces.height);
+  }
+  if (cached) {
+    r.image = std::move(*cached);
+    r.cached = true;
+  } else {
+    const ShadowRayTracer tracer(renderer.mesh());
+    ProgressBar progress("tracing the reference");
+    r.image = tracer.trace(surfaces, r.light, r.rays, [&](std::int64_t done, std::int64_t total) {
+      progress.update(done, total);
+    });
+    progress.finish();
+    if (!cache_dir.empty()) {
+      try {
+        store_cached_reference(cache_dir, key, r.image);
+      } catch (const RuntimeError& e) {
+        std::fprintf(stderr, "penumbra: warning: reference not cached: %s\n", e.what());
+      }
+    }
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (std::size_t i = 3; i < r.image.rgba.size(); i += 4) r.pixels += r.image.rgba[i] >= 0.5f;
+  return r;
+}
+
+}  // namespace penumbra

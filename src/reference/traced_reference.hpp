@@ -1,0 +1,29 @@
+#pragma once
+// The traced reference of a camera view: the G-buffer's surfaces, shadow
+// rays to the light through Embree, cached on disk.
+#include <string>
+
+#include "core/settings.hpp"
+#include "io/image.hpp"
+#include "reference/shadow_ray_tracer.hpp"
+#include "render/renderer.hpp"
+
+namespace penumbra {
+
+struct TracedReference {
+  Image image;  // alpha 1 on the pixels compared
+  ReferenceLight light;
+  int rays = 1;
+  bool cached = false;
+  double seconds = 0.0;
+  long pixels = 0;
+};
+
+// The traced shadow of the surfaces the camera sees for render.light_index,
+// from the cache when it holds them (`cache_dir` empty: no cache); `samples`
+// rays per pixel for an area light. Shows a progress bar on a terminal.
+TracedReference traced_reference(Renderer& renderer, const RenderSettings& render,
+                                 const ShadowSettings& shadow, int samples,
+                                 const std::string& cache_dir);
+
+}  // namespace penumbra
