@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/options.hpp"
+#include "app/scene_options.hpp"
 #include "core/settings.hpp"
 
 namespace penumbra {
@@ -15,6 +16,7 @@ struct RenderArgs {
   RenderSettings render;
   ShadowSettings shadow;
   NamedOptions named;
+  SceneOptions scene_options;
 };
 
 void add_render_command_options(CLI::App& command, RenderArgs& args);

@@ -139,6 +139,14 @@ struct NumericParam {
   T Settings::*field;
 };
 
+// An on/off parameter: flag name (without "--"), help, and where it lives.
+template <class Settings>
+struct FlagParam {
+  std::string_view name;
+  std::string_view help;
+  bool Settings::*field;
+};
+
 inline constexpr int kMaxMapSize =
     32768;  // the largest any GPU offers; each GPU's own limit is checked too
 inline constexpr int kMaxImageSize = 16384;
@@ -189,6 +197,13 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 5> kShadowIntPara
      &ShadowSettings::pcss_blocker_samples},
     {"pcss-filter-samples", "PCSS filter samples over the penumbra", 1, kMaxShadowSamples,
      &ShadowSettings::pcss_filter_samples},
+}};
+
+inline constexpr std::array<FlagParam<ShadowSettings>, 1> kShadowFlagParams{{
+    {"soft",
+     "vsm/msm/msm16 with --filter sat: filter width follows the estimated penumbra (blocker "
+     "search from the moments), at least --blur",
+     &ShadowSettings::soft},
 }};
 
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{
