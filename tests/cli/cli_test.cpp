@@ -25,7 +25,8 @@ struct Result {
 Result run(const std::string& args) {
   const fs::path dir = fs::path(PENUMBRA_TEST_OUTPUT) / "cli";
   fs::create_directories(dir);
-  const std::string err_file = (dir / "stderr.txt").string();
+  // One file per test process: CTest runs the suites' tests side by side.
+  const std::string err_file = (dir / ("stderr-" + std::to_string(getpid()) + ".txt")).string();
   const std::string cmd = std::string(PENUMBRA_BINARY) + " " + args + " 2>" + err_file;
   Result r;
   FILE* pipe = popen(cmd.c_str(), "r");
@@ -54,11 +55,13 @@ void expect_error(const std::string& args, int status, const std::string& culpri
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected:\n" << r.err;
   EXPECT_NE(r.err.find(culprit), std::string::npos) << args << "\nmessage: " << r.err;
   EXPECT_FALSE(fs::exists(output)) << "output left behind for: " << args;
-  // No temporary files either.
+  // No temporary files either: those of this output's name (other tests
+  // running beside this one may be writing theirs).
   const fs::path folder = fs::path(output).parent_path();
   if (!fs::is_directory(folder)) return;
+  const std::string temporary_prefix = "." + fs::path(output).filename().string() + ".tmp";
   for (const auto& entry : fs::directory_iterator(folder)) {
-    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
+    EXPECT_NE(entry.path().filename().string().rfind(temporary_prefix, 0), 0u)
         << entry.path() << " left behind by: " << args;
   }
 }
