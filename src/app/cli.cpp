@@ -7,6 +7,7 @@
 #include "app/bench_command.hpp"
 #include "app/options.hpp"
 #include "app/render_command.hpp"
+#include "app/view_command.hpp"
 #include "core/error.hpp"
 
 namespace penumbra {
@@ -42,6 +43,10 @@ int run_cli(int argc, char** argv) {
   CLI::App* bench = app.add_subcommand(
       "bench", "GPU time of every pass per technique, against a bandwidth yardstick");
   add_bench_command_options(*bench, bench_args);
+  ViewArgs view_args;
+  CLI::App* view = app.add_subcommand(
+      "view", "interactive viewer: a window with a panel that edits every setting, live");
+  add_view_command_options(*view, view_args);
 
   try {
     app.parse(argc, argv);
@@ -54,7 +59,7 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
-      what = "a command is required: render or bench (see 'penumbra --help')";
+      what = "a command is required: render, bench or view (see 'penumbra --help')";
     }
     print_error(what);
     return 2;
@@ -63,6 +68,7 @@ int run_cli(int argc, char** argv) {
   try {
     if (render->parsed()) return run_render_command(render_args);
     if (bench->parsed()) return run_bench_command(bench_args);
+    if (view->parsed()) return run_view_command(view_args);
   } catch (const UsageError& e) {
     print_error(e.what());
     return 2;
