@@ -25,6 +25,7 @@
 #define UNIT_SHADOW_FILTERED 12   // MAX_LIGHTS units: each light's filtered representation
 #define UNIT_SHADOW_COMPARE 16    // MAX_LIGHTS units: the depth maps with a comparison sampler
 #define UNIT_COMPUTE_INPUT 0
+#define UNIT_PRESENT_SOURCE 0
 
 // Image units (compute)
 #define IMAGE_OUTPUT 0
@@ -71,5 +72,12 @@
 // Views of a light's map written by the map-view kernel
 #define MAP_VIEW_RAW 0
 #define MAP_VIEW_ESM_LOG 1
+
+// How a view's texture holds its values (Renderer's ViewEncoding), for the
+// present pass that shows it in a window
+#define VIEW_ENCODING_LINEAR_COLOR 0
+#define VIEW_ENCODING_DATA 1
+#define VIEW_ENCODING_DEPTH 2
+#define VIEW_ENCODING_ESM_LOG 3
 
 #endif

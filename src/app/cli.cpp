@@ -9,6 +9,7 @@
 #include "app/options.hpp"
 #include "app/render_command.hpp"
 #include "app/report_command.hpp"
+#include "app/view_command.hpp"
 #include "core/error.hpp"
 
 namespace penumbra {
@@ -54,6 +55,10 @@ int run_cli(int argc, char** argv) {
       "compare",
       "measure every technique against a ray-traced reference: a table, JSON, error images");
   add_compare_command_options(*compare, compare_args);
+  ViewArgs view_args;
+  CLI::App* view = app.add_subcommand(
+      "view", "interactive viewer: a window with a panel that edits every setting, live");
+  add_view_command_options(*view, view_args);
 
   try {
     app.parse(argc, argv);
@@ -66,7 +71,7 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
-      what = "a command is required: render, compare, bench or report (see 'penumbra --help')";
+      what = "a command is required: render, view, compare, bench or report (see 'penumbra --help')";
     }
     print_error(what);
     return 2;
@@ -77,6 +82,7 @@ int run_cli(int argc, char** argv) {
     if (compare->parsed()) return run_compare_command(compare_args);
     if (bench->parsed()) return run_bench_command(bench_args);
     if (report->parsed()) return run_report_command(report_args);
+    if (view->parsed()) return run_view_command(view_args);
   } catch (const UsageError& e) {
     print_error(e.what());
     return 2;

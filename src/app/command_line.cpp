@@ -1,53 +1,105 @@
 #include "app/command_line.hpp"
 
-#include <charconv>
+#include "app/scene_options.hpp"
 
 namespace penumbra {
 
 namespace {
 
-// The shortest text that parses back to the same float.
-std::string number(float value) {
-  char buffer[32];
-  auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
+std::string flag(std::string_view name) {
+  return "--" + std::string(name);
 }
-std::string number(int value) {
+
+std::string text(float value) {
+  return format_float(value);
+}
+std::string text(int value) {
   return std::to_string(value);
 }
 
 template <class Settings, class T, std::size_t N>
-void append_changed(std::string& out, const Settings& settings,
-                    const std::array<NumericParam<Settings, T>, N>& params) {
+void add_changed(std::vector<std::string>& args, const Settings& settings,
+                 const std::array<NumericParam<Settings, T>, N>& params) {
   const Settings defaults{};
   for (const auto& p : params) {
     if (settings.*(p.field) != defaults.*(p.field)) {
-      out += " --" + std::string(p.name) + " " + number(settings.*(p.field));
+      args.push_back(flag(p.name) + "=" + text(settings.*(p.field)));
     }
   }
 }
 
+template <class E, std::size_t N>
+void add_changed_name(std::vector<std::string>& args, std::string_view name, E value, E fallback,
+                      const std::array<std::pair<E, std::string_view>, N>& table) {
+  if (value != fallback) {
+    args.push_back(flag(name) + "=" + std::string(enum_name<E>(EnumTable<E>(table), value)));
+  }
+}
+
+bool needs_quotes(const std::string& arg) {
+  if (arg.empty()) return true;
+  for (const char c : arg) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       std::string_view("-_=.,:/+@%").find(c) != std::string_view::npos;
+    if (!plain) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
-std::string render_command_line(const std::string& scene, const RenderSettings& render,
-                                const ShadowSettings& shadow, const std::string& output) {
-  const ShadowSettings shadow_defaults{};
+std::vector<std::string> render_command_args(const RenderCommand& command) {
   const RenderSettings render_defaults{};
-  std::string out = "penumbra render --scene " + scene;
-  if (shadow.technique != shadow_defaults.technique) {
-    out += " --technique " + std::string(enum_name<Technique>(kTechniqueNames, shadow.technique));
+  const ShadowSettings shadow_defaults{};
+  std::vector<std::string> args{"render"};
+  if (command.scene_argument != "default") {
+    args.push_back("--scene=" + command.scene_argument);
   }
-  if (shadow.filter != shadow_defaults.filter) {
-    out += " --filter " + std::string(enum_name<Filter>(kFilterNames, shadow.filter));
+  add_changed_name(args, "technique", command.shadow.technique, shadow_defaults.technique,
+                   kTechniqueNames);
+  add_changed_name(args, "filter", command.shadow.filter, shadow_defaults.filter, kFilterNames);
+  add_changed_name(args, "view", command.render.view, render_defaults.view, kViewNames);
+  add_changed(args, command.render, kRenderIntParams);
+  add_changed(args, command.shadow, kShadowIntParams);
+  add_changed(args, command.shadow, kShadowFloatParams);
+  add_changed_name(args, "ssao", command.ssao.enabled, SsaoSettings{}.enabled, kOnOffNames);
+  add_changed_name(args, "ssao-half-resolution", command.ssao.half_resolution,
+                   SsaoSettings{}.half_resolution, kOnOffNames);
+  add_changed(args, command.ssao, kSsaoIntParams);
+  add_changed(args, command.ssao, kSsaoFloatParams);
+  for (const auto& p : kShadowFlagParams) {
+    const bool value = command.shadow.*(p.field);
+    if (value != shadow_defaults.*(p.field)) args.push_back(flag(p.name) + (value ? "" : "=false"));
   }
-  if (shadow.soft) out += " --soft";
-  if (render.view != render_defaults.view) {
-    out += " --view " + std::string(enum_name<View>(kViewNames, render.view));
+  if (command.original != nullptr && command.edited != nullptr) {
+    for (std::string& arg :
+         scene_option_args(*command.original, *command.edited, command.render.light_index)) {
+      args.push_back(std::move(arg));
+    }
   }
-  append_changed(out, render, kRenderIntParams);
-  append_changed(out, shadow, kShadowIntParams);
-  append_changed(out, shadow, kShadowFloatParams);
-  return out + " -o " + output;
+  args.push_back("--output=" + command.output);
+  return args;
+}
+
+std::string shell_command(const std::vector<std::string>& args) {
+  std::string line = "penumbra";
+  for (const std::string& arg : args) {
+    line += ' ';
+    if (!needs_quotes(arg)) {
+      line += arg;
+      continue;
+    }
+    line += '\'';
+    for (const char c : arg) {
+      if (c == '\'') {
+        line += "'\\''";
+      } else {
+        line += c;
+      }
+    }
+    line += '\'';
+  }
+  return line;
 }
 
 }  // namespace penumbra

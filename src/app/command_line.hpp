@@ -1,14 +1,30 @@
 #pragma once
-// The `penumbra render` command line that re-makes an image: the scene,
-// every setting that differs from its default (read from the parameter
-// tables, so new parameters appear by themselves), and the output.
+// The `penumbra render` command that re-makes a view headless: what the
+// viewer's "Copy as command" gives. It names only what differs from the
+// defaults, with the flag names the CLI registers.
 #include <string>
+#include <vector>
 
 #include "core/settings.hpp"
+#include "scene/scene.hpp"
 
 namespace penumbra {
 
-std::string render_command_line(const std::string& scene, const RenderSettings& render,
-                                const ShadowSettings& shadow, const std::string& output);
+struct RenderCommand {
+  std::string scene_argument;  // as given to --scene
+  RenderSettings render;
+  ShadowSettings shadow;
+  SsaoSettings ssao;
+  // The scene as loaded, and with its camera and lights as shown.
+  const Scene* original = nullptr;
+  const Scene* edited = nullptr;
+  std::string output;
+};
+
+// The arguments after the program name, starting with "render".
+std::vector<std::string> render_command_args(const RenderCommand& command);
+
+// "penumbra render ...": the arguments quoted for a POSIX shell.
+std::string shell_command(const std::vector<std::string>& args);
 
 }  // namespace penumbra

@@ -109,9 +109,9 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
 }
 
 void add_shadow_parameters(CLI::App& app, ShadowSettings& settings) {
-  app.add_flag("--soft", settings.soft,
-               "vsm/msm/msm16 with --filter sat: filter width follows the estimated penumbra "
-               "(blocker search from the moments), at least --blur");
+  for (const auto& p : kShadowFlagParams) {
+    app.add_flag("--" + std::string(p.name), settings.*(p.field), std::string(p.help));
+  }
   add_params(app, settings, kShadowIntParams);
   add_params(app, settings, kShadowFloatParams);
 }

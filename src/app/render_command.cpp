@@ -21,6 +21,7 @@ void add_render_command_options(CLI::App& command, RenderArgs& args) {
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
   add_ssao_options(command, args.ssao, args.named);
+  add_scene_options(command, args.scene_options);
 }
 
 int run_render_command(RenderArgs& args) {
@@ -31,6 +32,7 @@ int run_render_command(RenderArgs& args) {
   image_format_for(args.output);
   check_output_path(args.output);
   Scene scene = resolve_scene(args.scene);
+  apply_scene_options(args.scene_options, args.render.light_index, scene);
 
   auto context = gl::Context::create_headless({.debug = true, .verbose = args.verbose});
   if (args.verbose) {

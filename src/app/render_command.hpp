@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/options.hpp"
+#include "app/scene_options.hpp"
 #include "core/settings.hpp"
 
 namespace penumbra {
@@ -16,6 +17,7 @@ struct RenderArgs {
   ShadowSettings shadow;
   SsaoSettings ssao;
   NamedOptions named;
+  SceneOptions scene_options;
 };
 
 void add_render_command_options(CLI::App& command, RenderArgs& args);

@@ -194,6 +194,14 @@ struct NumericParam {
   T Settings::*field;
 };
 
+// An on/off parameter: flag name (without "--"), help, and where it lives.
+template <class Settings>
+struct FlagParam {
+  std::string_view name;
+  std::string_view help;
+  bool Settings::*field;
+};
+
 inline constexpr int kMaxMapSize =
     32768;  // the largest any GPU offers; each GPU's own limit is checked too
 inline constexpr int kMaxImageSize = 16384;
@@ -263,6 +271,13 @@ inline constexpr std::array<NumericParam<SsaoSettings, float>, 3> kSsaoFloatPara
     {"ssao-range",
      "SSAO range check: occluders more than this many radii in front of a sample are ignored", 0.0f,
      1000.0f, &SsaoSettings::range},
+}};
+
+inline constexpr std::array<FlagParam<ShadowSettings>, 1> kShadowFlagParams{{
+    {"soft",
+     "vsm/msm/msm16 with --filter sat: filter width follows the estimated penumbra (blocker "
+     "search from the moments), at least --blur",
+     &ShadowSettings::soft},
 }};
 
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{

@@ -79,7 +79,6 @@ std::string try_display(EGLDisplay display, bool debug, Attempt& out) {
 
 std::unique_ptr<Context> Context::create_headless(const ContextOptions& options) {
   std::unique_ptr<Context> ctx(new Context());
-  ctx->verbose_ = options.verbose;
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   std::string tried;
   Attempt attempt;
@@ -124,7 +123,10 @@ std::unique_ptr<Context> Context::create_headless(const ContextOptions& options)
   if (epoxy_gl_version() < 45) {
     throw RuntimeError("the OpenGL context is version " + ctx->version() + ", 4.5 is required");
   }
-  ctx->install_debug_output(options);
+  if (options.debug) {
+    ctx->debug_ = std::make_unique<DebugOutput>(options.verbose);
+    ctx->debug_->install();
+  }
   return ctx;
 }
 
@@ -135,29 +137,6 @@ Context::~Context() {
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
     // The display is shared by every context on it in this process; EGL
     // reference-counts nothing, so terminating here would break the others.
-  }
-}
-
-void Context::install_debug_output(const ContextOptions& options) {
-  if (!options.debug) return;
-  glEnable(GL_DEBUG_OUTPUT);
-  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
-  glDebugMessageCallback(&Context::on_debug_message, this);
-  glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
-}
-
-void GLAPIENTRY Context::on_debug_message(GLenum /*source*/, GLenum type, GLuint id,
-                                          GLenum severity, GLsizei /*length*/,
-                                          const GLchar* message, const void* user) {
-  auto* self = static_cast<Context*>(const_cast<void*>(user));
-  if (type == GL_DEBUG_TYPE_ERROR) {
-    ++self->error_count_;
-    self->last_error_ = message;
-    std::fprintf(stderr, "penumbra: GL error %u: %s\n", id, message);
-    return;
-  }
-  if (self->verbose_ && severity != GL_DEBUG_SEVERITY_NOTIFICATION) {
-    std::fprintf(stderr, "penumbra: GL: %s\n", message);
   }
 }
 

@@ -8,6 +8,8 @@
 #include <memory>
 #include <string>
 
+#include "gl/debug_output.hpp"
+
 namespace penumbra::gl {
 
 struct ContextOptions {
@@ -35,22 +37,17 @@ class Context {
 
   // Number of GL_DEBUG_TYPE_ERROR messages seen since creation; tests fail
   // when it grows.
-  [[nodiscard]] int error_count() const { return error_count_; }
-  [[nodiscard]] const std::string& last_error() const { return last_error_; }
+  [[nodiscard]] int error_count() const { return debug_ ? debug_->error_count() : 0; }
+  [[nodiscard]] std::string last_error() const { return debug_ ? debug_->last_error() : ""; }
 
  private:
   Context() = default;
-  void install_debug_output(const ContextOptions& options);
-  static void GLAPIENTRY on_debug_message(GLenum source, GLenum type, GLuint id, GLenum severity,
-                                          GLsizei length, const GLchar* message, const void* user);
 
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
   EGLSurface surface_ = EGL_NO_SURFACE;
   std::string platform_;
-  bool verbose_ = false;
-  int error_count_ = 0;
-  std::string last_error_;
+  std::unique_ptr<DebugOutput> debug_;
 };
 
 }  // namespace penumbra::gl

@@ -101,10 +101,15 @@ Renderer::Renderer(const Scene& scene)
                          "reference filter weights"),
       poisson_(gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
                                 "poisson samples")) {
-  if (scene_.lights.size() > MAX_LIGHTS) {
-    throw UsageError("scene '" + scene_.name + "' has " + std::to_string(scene_.lights.size()) +
+  set_lights(scene_.lights);
+}
+
+void Renderer::set_lights(const std::vector<Light>& lights) {
+  if (lights.size() > MAX_LIGHTS) {
+    throw UsageError("scene '" + scene_.name + "' has " + std::to_string(lights.size()) +
                      " lights; at most " + std::to_string(MAX_LIGHTS) + " are supported");
   }
+  scene_.lights = lights;
 }
 
 glm::mat4 Renderer::camera_view() const {
@@ -270,10 +275,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   }
 }
 
-Image Renderer::read_view() {
+ViewSource Renderer::view_source() {
   const int light = last_render_.light_index;
   const View view = last_render_.view;
-  if (view == View::ShadowMap) return read_shadow_map(light);
+  if (view == View::ShadowMap) return {&shadow_pass_.depth_map(light), ViewEncoding::Depth};
   if (view == View::Moments || view == View::MomentsFiltered) {
     const gl::Texture* map = &resolve_pass_.representation(light);
     const int filter = filter_define(last_shadow_);
@@ -282,21 +287,33 @@ Image Renderer::read_view() {
     } else if (view == View::MomentsFiltered && filter == FILTER_SAT) {
       map = &sat_pass_.box_filtered(light, last_shadow_.blur);
     }
-    Image image = read_texture(map->id(), map->width(), map->height(), GL_RGBA);
     if (last_shadow_.technique == Technique::Esm) {
-      // log(map) / c + 1 is the occluder depth for an unfiltered map; after
-      // the blur it is log(blur(exp(c z))) / c + 1, which is not blur(z).
-      for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
-        const float v = image.rgba[p];
-        const float depth = v > 0.0f ? std::log(v) / last_shadow_.esm_c + 1.0f : 0.0f;
-        image.rgba[p] = image.rgba[p + 1] = image.rgba[p + 2] = depth;
-        image.rgba[p + 3] = 1.0f;
-      }
+      return {map, ViewEncoding::EsmLog, last_shadow_.esm_c};
     }
-    return image;
+    return {map, ViewEncoding::Data};
   }
-  const gl::Texture& out = lighting_pass_.output();
-  return read_texture(out.id(), out.width(), out.height(), GL_RGBA);
+  return {&lighting_pass_.output(),
+          view == View::Final ? ViewEncoding::LinearColor : ViewEncoding::Data};
+}
+
+Image Renderer::read_view() {
+  const ViewSource source = view_source();
+  const gl::Texture& map = *source.texture;
+  if (source.encoding == ViewEncoding::Depth) {
+    return read_texture(map.id(), map.width(), map.height(), GL_DEPTH_COMPONENT);
+  }
+  Image image = read_texture(map.id(), map.width(), map.height(), GL_RGBA);
+  if (source.encoding == ViewEncoding::EsmLog) {
+    // log(map) / c + 1 is the occluder depth for an unfiltered map; after
+    // the blur it is log(blur(exp(c z))) / c + 1, which is not blur(z).
+    for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
+      const float v = image.rgba[p];
+      const float depth = v > 0.0f ? std::log(v) / source.esm_c + 1.0f : 0.0f;
+      image.rgba[p] = image.rgba[p + 1] = image.rgba[p + 2] = depth;
+      image.rgba[p + 3] = 1.0f;
+    }
+  }
+  return image;
 }
 
 SurfacePoints Renderer::read_surfaces() const {

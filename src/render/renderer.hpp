@@ -21,12 +21,30 @@
 #include "shadow/light_view.hpp"
 #include "shadow/moment_resolve_pass.hpp"
 #include "shadow/shadow_map_pass.hpp"
+#include "shared/bindings.h"
 
 namespace penumbra {
 
 // How a view's values become 8-bit PNG: colour through the sRGB curve,
 // data (shadow factors, depths, moments, normals) as they are.
 PngEncoding png_encoding_for(View view);
+// How a view's texture holds its values, for display and read-back alike.
+enum class ViewEncoding {
+  // the final image: linear RGB, shown through the sRGB curve
+  LinearColor = VIEW_ENCODING_LINEAR_COLOR,
+  // shadow factor, normals, albedo, moments: shown as stored, clamped to [0, 1]
+  Data = VIEW_ENCODING_DATA,
+  // a depth texture: z-bar in its one channel, shown as grey
+  Depth = VIEW_ENCODING_DEPTH,
+  // an ESM map exp(c (z - 1)): shown as log(map)/c + 1, in depth units
+  EsmLog = VIEW_ENCODING_ESM_LOG,
+};
+
+struct ViewSource {
+  const gl::Texture* texture = nullptr;
+  ViewEncoding encoding = ViewEncoding::LinearColor;
+  float esm_c = 1.0f;  // for EsmLog
+};
 
 class Renderer {
  public:
@@ -46,6 +64,9 @@ class Renderer {
   // moments-filtered; for esm shown as log(map)/c + 1, in depth units).
   // The ao view is the AO texture as the lighting pass reads it.
   [[nodiscard]] Image read_view();
+  // The texture read_view() reads, left on the GPU (a window shows it),
+  // and how its values are encoded. Valid until the next render().
+  [[nodiscard]] ViewSource view_source();
   // Light i's shadow map (z-bar in every channel), as last rendered.
   [[nodiscard]] Image read_shadow_map(int light) const;
   // The world positions and normals the last render()'s camera view shaded,
@@ -56,6 +77,12 @@ class Renderer {
   // Light i's map as the filters see it: the technique's representation
   // for vsm/esm/msm/msm16, the z-bar depth map otherwise. As last rendered.
   [[nodiscard]] const gl::Texture& shadow_map_texture(int light) const;
+
+  // The camera and the lights may change between frames (the viewer moves
+  // them); the geometry is fixed at construction. set_lights throws
+  // UsageError for more lights than the shaders hold.
+  void set_camera(const Camera& camera) { scene_.camera = camera; }
+  void set_lights(const std::vector<Light>& lights);
 
   [[nodiscard]] const Scene& scene() const { return scene_; }
   [[nodiscard]] const TriangleMesh& mesh() const { return mesh_; }

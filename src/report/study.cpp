@@ -76,7 +76,9 @@ class Study {
                     ShadowSettings shadow) {
     HtmlFigure f;
     f.caption = caption;
-    f.command = render_command_line(options_.scene_argument, render, shadow, file);
+    f.command = shell_command(render_command_args(
+        {.scene_argument = options_.scene_argument, .render = render, .shadow = shadow, .ssao = {},
+         .original = nullptr, .edited = nullptr, .output = file}));
     ++items_;
     progress_.update(items_, total_items());
     try {

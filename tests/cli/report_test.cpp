@@ -103,7 +103,7 @@ TEST_F(Report, TheCommandUnderAnImageRemakesIt) {
   std::string command = chosen->command;
   ASSERT_EQ(command.rfind("penumbra render ", 0), 0u) << command;
   command.replace(0, std::string("penumbra").size(), PENUMBRA_BINARY);
-  command = std::regex_replace(command, std::regex(" -o \\S+$"), " -o remade.png");
+  command = std::regex_replace(command, std::regex(" --output=\\S+$"), " --output=remade.png");
   ASSERT_EQ(run_shell("cd " + dir_.string() + " && " + command), 0) << command;
   const penumbra::Image original = penumbra::read_png((dir_ / chosen->src).string());
   const penumbra::Image remade = penumbra::read_png((dir_ / "remade.png").string());

@@ -1,0 +1,192 @@
+#include "app/scene_options.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace penumbra {
+
+namespace {
+
+std::string flag(std::string_view name) {
+  return "--" + std::string(name);
+}
+
+float parse_number(std::string_view name, std::string_view text) {
+  float value = 0.0f;
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
+    throw UsageError(flag(name) + ": '" + std::string(text) + "' is not a finite number");
+  }
+  return value;
+}
+
+glm::vec3 parse_vector(std::string_view name, std::string_view text) {
+  glm::vec3 v{};
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = text.find(',', start);
+    if ((i < 2) != (comma != std::string_view::npos)) {
+      throw UsageError(flag(name) + ": '" + std::string(text) +
+                       "' must be three numbers separated by commas");
+    }
+    v[i] = parse_number(name, text.substr(start, i < 2 ? comma - start : std::string_view::npos));
+    start = comma + 1;
+  }
+  return v;
+}
+
+float parse_scalar(std::string_view name, std::string_view text, float min, float max) {
+  const float value = parse_number(name, text);
+  if (value < min || value > max) {
+    std::ostringstream msg;
+    msg << flag(name) << ": " << text << " is outside [" << min << ", " << max << "]";
+    throw UsageError(msg.str());
+  }
+  return value;
+}
+
+// "[I:]VALUE" -> the light it names and its value.
+Light& target_light(std::string_view name, std::string_view& text, int light_index, bool spot_only,
+                    Scene& scene) {
+  int index = light_index;
+  const std::size_t colon = text.find(':');
+  if (colon != std::string_view::npos) {
+    const std::string_view prefix = text.substr(0, colon);
+    auto [ptr, ec] = std::from_chars(prefix.data(), prefix.data() + prefix.size(), index);
+    if (ec != std::errc() || ptr != prefix.data() + prefix.size() || index < 0) {
+      throw UsageError(flag(name) + ": '" + std::string(prefix) +
+                       "' is not a light index (the form is [I:]VALUE)");
+    }
+    text = text.substr(colon + 1);
+  }
+  if (index >= static_cast<int>(scene.lights.size())) {
+    throw UsageError(flag(name) + ": scene '" + scene.name + "' has no light " +
+                     std::to_string(index) + " (it has " + std::to_string(scene.lights.size()) +
+                     ")");
+  }
+  Light& light = scene.lights[static_cast<std::size_t>(index)];
+  if (spot_only && light.type != LightType::Spot) {
+    throw UsageError(flag(name) + ": light " + std::to_string(index) +
+                     " is directional; only spot lights have it");
+  }
+  return light;
+}
+
+std::string vector_text(const glm::vec3& v) {
+  return format_float(v.x) + "," + format_float(v.y) + "," + format_float(v.z);
+}
+
+}  // namespace
+
+std::string format_float(float value) {
+  char buffer[64];
+  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, end);
+}
+
+void add_scene_options(CLI::App& app, SceneOptions& options) {
+  for (std::size_t i = 0; i < kCameraVectorParams.size(); ++i) {
+    app.add_option(flag(kCameraVectorParams[i].name), options.camera_vectors[i],
+                   std::string(kCameraVectorParams[i].help) + " (default: the scene's)");
+  }
+  for (std::size_t i = 0; i < kCameraScalarParams.size(); ++i) {
+    const auto& p = kCameraScalarParams[i];
+    std::ostringstream help;
+    help << p.help << ", in [" << p.min << ", " << p.max << "] (default: the scene's)";
+    app.add_option(flag(p.name), options.camera_scalars[i], help.str());
+  }
+  for (std::size_t i = 0; i < kLightVectorParams.size(); ++i) {
+    app.add_option(flag(kLightVectorParams[i].name), options.light_vectors[i],
+                   std::string(kLightVectorParams[i].help) + " (default: the scene's)")
+        ->allow_extra_args(false);
+  }
+  for (std::size_t i = 0; i < kLightScalarParams.size(); ++i) {
+    const auto& p = kLightScalarParams[i];
+    std::ostringstream help;
+    help << p.help << ", in [" << p.min << ", " << p.max << "] (default: the scene's)";
+    app.add_option(flag(p.name), options.light_scalars[i], help.str())->allow_extra_args(false);
+  }
+}
+
+void apply_scene_options(const SceneOptions& options, int light_index, Scene& scene) {
+  bool camera_changed = false;
+  for (std::size_t i = 0; i < kCameraVectorParams.size(); ++i) {
+    const auto& p = kCameraVectorParams[i];
+    if (options.camera_vectors[i].empty()) continue;
+    scene.camera.*(p.field) = parse_vector(p.name, options.camera_vectors[i]);
+    camera_changed = true;
+  }
+  for (std::size_t i = 0; i < kCameraScalarParams.size(); ++i) {
+    const auto& p = kCameraScalarParams[i];
+    if (options.camera_scalars[i].empty()) continue;
+    scene.camera.*(p.field) = parse_scalar(p.name, options.camera_scalars[i], p.min, p.max);
+  }
+  if (camera_changed && scene.camera.position == scene.camera.target) {
+    throw UsageError("--camera-position and --camera-target are the same point");
+  }
+  for (std::size_t i = 0; i < kLightVectorParams.size(); ++i) {
+    const auto& p = kLightVectorParams[i];
+    for (const std::string& value : options.light_vectors[i]) {
+      std::string_view text = value;
+      Light& light = target_light(p.name, text, light_index, p.spot_only, scene);
+      const glm::vec3 v = parse_vector(p.name, text);
+      if (p.field == &Light::direction && v == glm::vec3(0.0f)) {
+        throw UsageError(flag(p.name) + ": a direction cannot be 0,0,0");
+      }
+      if (p.field == &Light::color && (v.x < 0.0f || v.y < 0.0f || v.z < 0.0f)) {
+        throw UsageError(flag(p.name) + ": a colour cannot be negative (got '" + std::string(text) +
+                         "')");
+      }
+      light.*(p.field) = v;
+    }
+  }
+  for (std::size_t i = 0; i < kLightScalarParams.size(); ++i) {
+    const auto& p = kLightScalarParams[i];
+    for (const std::string& value : options.light_scalars[i]) {
+      std::string_view text = value;
+      Light& light = target_light(p.name, text, light_index, p.spot_only, scene);
+      light.*(p.field) = parse_scalar(p.name, text, p.min, p.max);
+    }
+  }
+}
+
+std::vector<std::string> scene_option_args(const Scene& original, const Scene& edited,
+                                           int light_index) {
+  std::vector<std::string> args;
+  for (const auto& p : kCameraVectorParams) {
+    if (original.camera.*(p.field) != edited.camera.*(p.field)) {
+      args.push_back(flag(p.name) + "=" + vector_text(edited.camera.*(p.field)));
+    }
+  }
+  for (const auto& p : kCameraScalarParams) {
+    if (original.camera.*(p.field) != edited.camera.*(p.field)) {
+      args.push_back(flag(p.name) + "=" + format_float(edited.camera.*(p.field)));
+    }
+  }
+  const std::size_t lights = std::min(original.lights.size(), edited.lights.size());
+  for (std::size_t i = 0; i < lights; ++i) {
+    const Light& before = original.lights[i];
+    const Light& after = edited.lights[i];
+    const bool spot = after.type == LightType::Spot;
+    const std::string prefix =
+        static_cast<int>(i) == light_index ? std::string() : std::to_string(i) + ":";
+    for (const auto& p : kLightVectorParams) {
+      if ((spot || !p.spot_only) && before.*(p.field) != after.*(p.field)) {
+        args.push_back(flag(p.name) + "=" + prefix + vector_text(after.*(p.field)));
+      }
+    }
+    for (const auto& p : kLightScalarParams) {
+      if ((spot || !p.spot_only) && before.*(p.field) != after.*(p.field)) {
+        args.push_back(flag(p.name) + "=" + prefix + format_float(after.*(p.field)));
+      }
+    }
+  }
+  return args;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,279 @@
+#include "app/view_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+#include "app/command_line.hpp"
+#include "core/error.hpp"
+#include "gl/gpu_profiler.hpp"
+#include "io/image.hpp"
+#include "render/present_pass.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_file.hpp"
+#include "viewer/imgui_layer.hpp"
+#include "viewer/key_bindings.hpp"
+#include "viewer/mouse_controls.hpp"
+#include "viewer/orbit_camera.hpp"
+#include "viewer/panel.hpp"
+#include "viewer/viewer_state.hpp"
+#include "viewer/window.hpp"
+
+namespace penumbra {
+
+namespace {
+
+// The panel's width in screen units.
+constexpr float kPanelWidth = 400.0f;
+
+PngEncoding png_encoding(View view) {
+  return view == View::Final ? PngEncoding::Srgb : PngEncoding::Linear;
+}
+
+// `name` in the current folder, or name-2, name-3, ... if it exists.
+std::string unused_path(const std::string& name) {
+  namespace fs = std::filesystem;
+  const fs::path base(name);
+  fs::path path = base;
+  for (int n = 2; fs::exists(path); ++n) {
+    path = base.stem().string() + "-" + std::to_string(n) + base.extension().string();
+  }
+  return path.string();
+}
+
+// The window's back buffer, as an image (rows top to bottom).
+Image read_window(glm::ivec2 size) {
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(size.x) * size.y * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+  Image image(size.x, size.y);
+  for (int y = 0; y < size.y; ++y) {
+    const unsigned char* row = bytes.data() + static_cast<std::size_t>(size.y - 1 - y) * size.x * 4;
+    for (int x = 0; x < size.x; ++x) {
+      float* p = image.pixel(x, y);
+      for (int c = 0; c < 4; ++c) p[c] = row[x * 4 + c] / 255.0f;
+    }
+  }
+  return image;
+}
+
+void check_gl_errors(const gl::DebugOutput& debug) {
+  if (debug.error_count() > 0) {
+    throw RuntimeError("OpenGL reported " + std::to_string(debug.error_count()) +
+                       " error(s); last: " + debug.last_error());
+  }
+}
+
+// What a key does; the actions that need the frame's image are left in
+// `actions` for after it is rendered.
+void apply_key(KeyAction action, ViewerState& state, PanelActions& actions, bool& panel_visible,
+               Window& window) {
+  switch (action) {
+    case KeyAction::NextTechnique:
+      step_technique(state, 1);
+      break;
+    case KeyAction::PreviousTechnique:
+      step_technique(state, -1);
+      break;
+    case KeyAction::NextView:
+      step_view(state, 1);
+      break;
+    case KeyAction::PreviousView:
+      step_view(state, -1);
+      break;
+    case KeyAction::Screenshot:
+      actions.screenshot = true;
+      break;
+    case KeyAction::CopyCommand:
+      actions.copy_command = true;
+      break;
+    case KeyAction::Reset:
+      actions.reset = true;
+      break;
+    case KeyAction::TogglePanel:
+      panel_visible = !panel_visible;
+      break;
+    case KeyAction::Quit:
+      window.close();
+      break;
+  }
+}
+
+}  // namespace
+
+void add_view_command_options(CLI::App& command, ViewArgs& args) {
+  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
+      ->capture_default_str();
+  command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
+  command
+      .add_option("--frames", args.frames,
+                  "scripted mode: render this many frames ignoring mouse and keys, then close "
+                  "(0: run until the window is closed)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000000));
+  command.add_option("--screenshot", args.screenshot,
+                     "on closing, write the last frame's view as 'render' writes it (.png, .exr)");
+  command.add_option("--capture-window", args.capture_window,
+                     "on closing, write the whole window, panel included (.png)");
+  add_render_options(command, args.render, args.named);
+  add_shadow_options(command, args.shadow, args.named);
+  add_ssao_options(command, args.ssao, args.named);
+  add_scene_options(command, args.scene_options);
+}
+
+int run_view_command(ViewArgs& args) {
+  parse_named_options(args.named, args.shadow, args.render, args.ssao);
+  validate(args.render);
+  validate(args.shadow);
+  if (!args.screenshot.empty()) {
+    image_format_for(args.screenshot);
+    check_output_path(args.screenshot);
+  }
+  if (!args.capture_window.empty()) {
+    if (image_format_for(args.capture_window) != ImageFormat::Png) {
+      throw UsageError("--capture-window '" + args.capture_window + "' must end in .png");
+    }
+    check_output_path(args.capture_window);
+  }
+  Scene loaded = resolve_scene(args.scene);
+  Scene start = loaded;
+  apply_scene_options(args.scene_options, args.render.light_index, start);
+
+  const bool scripted = args.frames > 0;
+  Window window({.width = args.render.width + static_cast<int>(kPanelWidth),
+                 .height = args.render.height,
+                 .title = "penumbra: " + args.scene,
+                 .vsync = !scripted,
+                 .verbose = args.verbose});
+  if (epoxy_gl_version() < 45) {
+    throw RuntimeError("the window's OpenGL context is version " +
+                       std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))) +
+                       ", 4.5 is required");
+  }
+  const std::string gpu_name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (args.verbose) std::fprintf(stderr, "penumbra: %s via GLFW\n", gpu_name.c_str());
+  GLint max_texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+
+  ImGuiLayer imgui(window);
+  Renderer renderer(start);
+  PresentPass present;
+  // Read a few frames late, so the frame loop never waits for the GPU.
+  gl::GpuProfiler profiler(4, /*serialize=*/false);
+
+  ViewerState state =
+      make_viewer_state(args.scene, std::move(loaded), start, args.render, args.shadow,
+                        args.ssao);
+  OrbitCamera orbit(state.camera);
+  MouseControls mouse(renderer.mesh().bounds().center());
+
+  PanelStatus status;
+  status.renderer = gpu_name;
+  status.max_texture_size = max_texture;
+  std::optional<FrameInput> shown;  // the last frame rendered
+  bool panel_visible = true;
+  auto last_time = std::chrono::steady_clock::now();
+
+  for (int frame_index = 0; !window.should_close(); ++frame_index) {
+    window.poll();
+    const glm::ivec2 fb = window.framebuffer_size();
+    const glm::ivec2 win = window.window_size();
+    const float scale = win.x > 0 ? static_cast<float>(fb.x) / static_cast<float>(win.x) : 1.0f;
+    const int panel_pixels =
+        panel_visible ? std::min(fb.x, static_cast<int>(std::lround(kPanelWidth * scale))) : 0;
+    const glm::ivec2 view(fb.x - panel_pixels, fb.y);
+
+    PanelActions actions;
+    if (!scripted) {
+      for (const KeyPress& key : window.keys()) {
+        if (imgui.wants_keyboard()) break;
+        const std::optional<KeyAction> action = action_for_key(key.key, key.mods);
+        if (!action) continue;
+        apply_key(*action, state, actions, panel_visible, window);
+      }
+    }
+
+    imgui.begin_frame();
+    if (!scripted) {
+      mouse.update(window.mouse(), panel_visible && imgui.wants_mouse(), view.y, state, orbit);
+    }
+    if (panel_visible) {
+      status.frame = shown ? &*shown : nullptr;
+      const PanelActions clicked = draw_panel(state, status, kPanelWidth);
+      actions.screenshot |= clicked.screenshot;
+      actions.copy_command |= clicked.copy_command;
+      actions.reset |= clicked.reset;
+    }
+    if (actions.reset) {
+      state.camera = start.camera;
+      state.lights = start.lights;
+    }
+
+    bool rendered = false;
+    if (view.x > 0 && view.y > 0) {
+      FrameInput frame = frame_input(state, view.x, view.y, max_texture);
+      profiler.begin_frame();
+      try {
+        render_frame(renderer, frame, &profiler);
+        rendered = true;
+      } catch (const UsageError& e) {
+        if (scripted) throw;  // nobody is there to change the settings
+        status.message = e.what();
+      }
+      profiler.end_frame();
+      shown = std::move(frame);
+    }
+    while (std::optional<gl::GpuFrameTimes> times = profiler.read(false)) status.gpu = times;
+    if (shown) {
+      status.command =
+          shell_command(render_command_for(state, *shown, screenshot_name(state, *shown)));
+    }
+
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb.x, fb.y);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (rendered) present.execute(renderer.view_source(), 0, {0, 0, view.x, view.y});
+    if (shown) draw_notes(*shown);
+    imgui.end_frame();
+
+    if (rendered && actions.screenshot) {
+      const std::string path = unused_path(screenshot_name(state, *shown));
+      try {
+        write_image(renderer.read_view(), path, png_encoding(shown->render.view));
+        status.message = "saved " + path;
+      } catch (const RuntimeError& e) {
+        status.message = e.what();
+      }
+    }
+    if (actions.copy_command) {
+      window.set_clipboard(status.command);
+      status.message = "copied the command to the clipboard";
+    }
+    const bool last = scripted && frame_index + 1 >= args.frames;
+    if (last && !args.capture_window.empty()) {
+      write_png(read_window(fb), args.capture_window, PngEncoding::Linear);
+    }
+    window.swap_buffers();
+
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - last_time).count();
+    last_time = now;
+    status.frame_ms = status.frame_ms == 0.0 ? ms : 0.9 * status.frame_ms + 0.1 * ms;
+    if (last) window.close();
+  }
+
+  if (!args.screenshot.empty()) {
+    if (!shown) throw RuntimeError("no frame was rendered for --screenshot");
+    write_image(renderer.read_view(), args.screenshot, png_encoding(shown->render.view));
+  }
+  check_gl_errors(window.debug_output());
+  return 0;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,253 @@
+#include "viewer/panel.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "app/scene_options.hpp"
+#include "viewer/key_bindings.hpp"
+
+namespace penumbra {
+
+namespace {
+
+void tooltip(std::string_view text) {
+  if (!text.empty() && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.data(), text.data() + text.size());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+// Parameters whose default is small against their range get a logarithmic
+// slider, so the default's neighbourhood is not a few pixels wide.
+template <class Settings, class T>
+bool logarithmic(const NumericParam<Settings, T>& p) {
+  const T start = Settings{}.*(p.field);
+  if constexpr (std::is_integral_v<T>) {
+    return p.max / std::max<T>(p.min, 1) > 256;
+  } else {
+    return start < (p.max - p.min) / 50;
+  }
+}
+
+template <class Settings, std::size_t N>
+void float_sliders(ViewerState& state, const Settings& settings,
+                   const std::array<NumericParam<Settings, float>, N>& params) {
+  for (const auto& p : params) {
+    float value = settings.*(p.field);
+    const std::string label(p.name);
+    ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoRoundToFormat;
+    if (logarithmic(p)) flags |= ImGuiSliderFlags_Logarithmic;
+    if (ImGui::SliderFloat(label.c_str(), &value, p.min, p.max, "%.6g", flags)) {
+      set_number(state, p.name, value);
+    }
+    tooltip(p.help);
+  }
+}
+
+template <class Settings, std::size_t N>
+void int_sliders(ViewerState& state, const Settings& settings,
+                 const std::array<NumericParam<Settings, int>, N>& params, int limit,
+                 bool skip_window_owned) {
+  for (const auto& p : params) {
+    if constexpr (std::is_same_v<Settings, RenderSettings>) {
+      if (skip_window_owned && is_window_owned(p)) continue;
+    }
+    int value = settings.*(p.field);
+    const int max = std::min(p.max, limit);
+    const std::string label(p.name);
+    ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
+    if (logarithmic(p)) flags |= ImGuiSliderFlags_Logarithmic;
+    if (ImGui::SliderInt(label.c_str(), &value, p.min, max, "%d", flags)) {
+      set_number(state, p.name, value);
+    }
+    tooltip(p.help);
+  }
+}
+
+template <class E, std::size_t N>
+void choice_combo(ViewerState& state, const char* name, E current,
+                  const std::array<std::pair<E, std::string_view>, N>& table,
+                  std::string_view help) {
+  const std::string shown(enum_name<E>(EnumTable<E>(table), current));
+  if (ImGui::BeginCombo(name, shown.c_str())) {
+    for (const auto& [value, text] : table) {
+      const std::string item(text);
+      if (ImGui::Selectable(item.c_str(), value == current)) set_choice(state, name, text);
+    }
+    ImGui::EndCombo();
+  }
+  tooltip(help);
+}
+
+void light_section(ViewerState& state) {
+  if (state.lights.empty()) {
+    ImGui::TextDisabled("the scene has no light");
+    return;
+  }
+  const int index =
+      std::clamp(state.render.light_index, 0, static_cast<int>(state.lights.size()) - 1);
+  Light light = state.lights[static_cast<std::size_t>(index)];
+  const bool spot = light.type == LightType::Spot;
+  ImGui::Text("light %d: %s", index, spot ? "spot" : "directional");
+  bool changed = false;
+  for (const auto& p : kLightVectorParams) {
+    if (p.spot_only && !spot) continue;
+    const std::string label(p.name);
+    glm::vec3& v = light.*(p.field);
+    if (p.field == &Light::color) {
+      changed |= ImGui::ColorEdit3(label.c_str(), &v.x, ImGuiColorEditFlags_Float);
+    } else {
+      changed |= ImGui::DragFloat3(label.c_str(), &v.x, 0.01f, 0.0f, 0.0f, "%.3f");
+    }
+    tooltip(p.help);
+  }
+  for (const auto& p : kLightScalarParams) {
+    if (p.spot_only && !spot) continue;
+    const std::string label(p.name);
+    changed |= ImGui::SliderFloat(label.c_str(), &(light.*(p.field)), p.min,
+                                  p.field == &Light::intensity ? 1000.0f : p.max, "%.4g",
+                                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_NoRoundToFormat);
+    tooltip(p.help);
+  }
+  if (changed) set_light(state, index, light);
+}
+
+void camera_section(ViewerState& state) {
+  Camera camera = state.camera;
+  bool changed = false;
+  for (const auto& p : kCameraVectorParams) {
+    const std::string label(p.name);
+    changed |= ImGui::DragFloat3(label.c_str(), &(camera.*(p.field)).x, 0.01f, 0.0f, 0.0f, "%.3f");
+    tooltip(p.help);
+  }
+  for (const auto& p : kCameraScalarParams) {
+    const std::string label(p.name);
+    changed |= ImGui::SliderFloat(label.c_str(), &(camera.*(p.field)), p.min, p.max, "%.1f");
+    tooltip(p.help);
+  }
+  if (changed) set_camera(state, camera);
+}
+
+void timing_section(const PanelStatus& status) {
+  ImGui::Text("frame %.1f ms (%.1f fps)", status.frame_ms,
+              status.frame_ms > 0.0 ? 1000.0 / status.frame_ms : 0.0);
+  if (!status.gpu) {
+    ImGui::TextDisabled("GPU times: waiting for the first results");
+    return;
+  }
+  if (ImGui::BeginTable("gpu", 2, ImGuiTableFlags_SizingStretchProp)) {
+    for (std::size_t p = 0; p < status.gpu->pass_ms.size(); ++p) {
+      if (!status.gpu->ran[p]) continue;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      const std::string name(gl::kGpuPassNames[p]);
+      ImGui::TextUnformatted(name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%8.3f ms", status.gpu->pass_ms[p]);
+    }
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("GPU frame");
+    ImGui::TableNextColumn();
+    ImGui::Text("%8.3f ms", status.gpu->total_ms);
+    ImGui::EndTable();
+  }
+}
+
+void help_section() {
+  for (const KeyBinding& b : kKeyBindings) {
+    if (b.what.empty()) continue;
+    const std::string keys(b.keys), what(b.what);
+    ImGui::BulletText("%s: %s", keys.c_str(), what.c_str());
+  }
+  ImGui::BulletText("left drag: orbit; right or middle drag: pan; wheel: zoom");
+  ImGui::BulletText("shift or ctrl + left drag: move the selected light");
+}
+
+}  // namespace
+
+PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float width) {
+  PanelActions actions;
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(
+      ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - width, viewport->WorkPos.y));
+  ImGui::SetNextWindowSize(ImVec2(width, viewport->WorkSize.y));
+  ImGui::Begin("penumbra", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 11.5f);
+
+  const FrameInput* frame = status.frame;
+  ImGui::TextDisabled("%s", status.renderer.c_str());
+  if (frame != nullptr) {
+    ImGui::Text("%s, %d x %d", state.scene_argument.c_str(), frame->render.width,
+                frame->render.height);
+  }
+
+  if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
+    choice_combo(state, "view", state.render.view, kViewNames,
+                 "what the window shows: the final image, a light's shadow factor, its map, "
+                 "the moments before and after the filter, normals or albedo");
+    int_sliders(state, state.render, kRenderIntParams,
+                std::max(1, static_cast<int>(state.lights.size())) - 1, true);
+  }
+  if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
+    choice_combo(state, "technique", state.shadow.technique, kTechniqueNames,
+                 "the shadow technique");
+    choice_combo(state, "filter", state.shadow.filter, kFilterNames,
+                 "filter of the vsm/esm/msm/msm16 maps: separable Gaussian or summed-area table");
+    for (const auto& p : kShadowFlagParams) {
+      bool value = state.shadow.*(p.field);
+      const std::string label(p.name);
+      if (ImGui::Checkbox(label.c_str(), &value)) set_flag(state, p.name, value);
+      tooltip(p.help);
+    }
+    int_sliders(state, state.shadow, kShadowIntParams, status.max_texture_size, false);
+    float_sliders(state, state.shadow, kShadowFloatParams);
+  }
+  if (ImGui::CollapsingHeader("Ambient occlusion")) {
+    choice_combo(state, "ssao", state.ssao.enabled, kOnOffNames,
+                 "screen-space ambient occlusion darkening the ambient light");
+    choice_combo(state, "ssao-half-resolution", state.ssao.half_resolution, kOnOffNames,
+                 "compute the AO at half resolution, upsampled with depth and normal awareness");
+    int_sliders(state, state.ssao, kSsaoIntParams, std::numeric_limits<int>::max(), false);
+    float_sliders(state, state.ssao, kSsaoFloatParams);
+  }
+  if (ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) light_section(state);
+  if (ImGui::CollapsingHeader("Camera")) camera_section(state);
+  if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) timing_section(status);
+  if (ImGui::CollapsingHeader("Command", ImGuiTreeNodeFlags_DefaultOpen)) {
+    actions.copy_command = ImGui::Button("Copy as command");
+    ImGui::SameLine();
+    actions.screenshot = ImGui::Button("Screenshot");
+    ImGui::SameLine();
+    actions.reset = ImGui::Button("Reset");
+    tooltip("camera and lights back to where they started");
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", status.command.c_str());
+    if (!status.message.empty()) ImGui::TextUnformatted(status.message.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  if (ImGui::CollapsingHeader("Keys and mouse")) help_section();
+  ImGui::PopItemWidth();
+  ImGui::End();
+  return actions;
+}
+
+void draw_notes(const FrameInput& frame) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  ImVec2 at(8.0f, 6.0f);
+  for (const std::string& note : frame.notes) {
+    draw->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 220), note.c_str());
+    draw->AddText(at, IM_COL32(255, 205, 80, 255), note.c_str());
+    at.y += line;
+  }
+}
+
+}  // namespace penumbra
