@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "reference/shadow_ray_tracer.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/mesh.hpp"
 #include "shadow/light_view.hpp"
@@ -50,6 +51,31 @@ void BM_PoissonSamples(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(poisson_square_samples());
 }
 BENCHMARK(BM_PoissonSamples);
+
+// Shadow rays per second of the reference tracer: the default scene's
+// ground seen from above as a 256 x 256 grid of points, towards the spot
+// light's square source (range(0) rays per point).
+void BM_ReferenceTracerRays(benchmark::State& state) {
+  const Scene scene = *builtin_scene("default");
+  const TriangleMesh mesh = build_scene_mesh(scene);
+  const ShadowRayTracer tracer(mesh);
+  SurfacePoints surfaces(256, 256);
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * 256 + x;
+      surfaces.position[i] = {-6.0f + 12.0f * x / 255.0f, 0.0f, -6.0f + 12.0f * y / 255.0f};
+      surfaces.normal[i] = {0.0f, 1.0f, 0.0f};
+      surfaces.covered[i] = 1;
+    }
+  }
+  ShadowSettings settings;
+  const ReferenceLight light =
+      make_reference_light(scene.lights[0], fit_light_view(scene.lights[0], mesh, 2048), settings);
+  const int rays = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(tracer.trace(surfaces, light, rays));
+  state.SetItemsProcessed(state.iterations() * 256 * 256 * rays);
+}
+BENCHMARK(BM_ReferenceTracerRays)->Arg(1)->Arg(16)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace penumbra
