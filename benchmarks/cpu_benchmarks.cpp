@@ -75,7 +75,7 @@ void BM_ReferenceTracerRays(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(tracer.trace(surfaces, light, rays));
   state.SetItemsProcessed(state.iterations() * 256 * 256 * rays);
 }
-BENCHMARK(BM_ReferenceTracerRays)->Arg(1)->Arg(16)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReferenceTracerRays)->Arg(1)->Arg(16)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace penumbra
