@@ -71,7 +71,8 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
-      what = "a command is required: render, view, compare, bench or report (see 'penumbra --help')";
+      what =
+          "a command is required: render, view, compare, bench or report (see 'penumbra --help')";
     }
     print_error(what);
     return 2;

@@ -166,8 +166,7 @@ int run_view_command(ViewArgs& args) {
   gl::GpuProfiler profiler(4, /*serialize=*/false);
 
   ViewerState state =
-      make_viewer_state(args.scene, std::move(loaded), start, args.render, args.shadow,
-                        args.ssao);
+      make_viewer_state(args.scene, std::move(loaded), start, args.render, args.shadow, args.ssao);
   OrbitCamera orbit(state.camera);
   MouseControls mouse(renderer.mesh().bounds().center());
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-
 namespace penumbra {
 
 using gl::GpuPass;

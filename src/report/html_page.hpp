@@ -9,7 +9,7 @@ namespace penumbra {
 std::string html_escape(const std::string& text);
 
 struct HtmlFigure {
-  std::string image;    // file name relative to the page; empty if the item failed
+  std::string image;  // file name relative to the page; empty if the item failed
   int width = 0, height = 0;
   std::string caption;  // plain text
   std::string command;  // the command that re-makes it (plain text)

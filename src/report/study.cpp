@@ -76,9 +76,13 @@ class Study {
                     ShadowSettings shadow) {
     HtmlFigure f;
     f.caption = caption;
-    f.command = shell_command(render_command_args(
-        {.scene_argument = options_.scene_argument, .render = render, .shadow = shadow, .ssao = {},
-         .original = nullptr, .edited = nullptr, .output = file}));
+    f.command = shell_command(render_command_args({.scene_argument = options_.scene_argument,
+                                                   .render = render,
+                                                   .shadow = shadow,
+                                                   .ssao = {},
+                                                   .original = nullptr,
+                                                   .edited = nullptr,
+                                                   .output = file}));
     ++items_;
     progress_.update(items_, total_items());
     try {

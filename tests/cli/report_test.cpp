@@ -54,8 +54,8 @@ class Report : public ::testing::Test {
     for (std::sregex_iterator it(html_.begin(), html_.end(), figure_re), end; it != end; ++it) {
       std::string command = (*it)[4].str();
       command = std::regex_replace(command, std::regex("&quot;"), "\"");
-      figures_.push_back({(*it)[1].str(), std::stoi((*it)[2].str()), std::stoi((*it)[3].str()),
-                          command});
+      figures_.push_back(
+          {(*it)[1].str(), std::stoi((*it)[2].str()), std::stoi((*it)[3].str()), command});
     }
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
@@ -72,9 +72,9 @@ TEST_F(Report, WritesAPageWhoseImagesExist) {
   EXPECT_NE(html_.find("</html>"), std::string::npos);
   EXPECT_EQ(html_.find("<script"), std::string::npos) << "the page must be self-contained";
   EXPECT_EQ(html_.find("http"), std::string::npos) << "the page must need no network";
-  for (const char* section : {"1. The techniques", "2. Shadow maps before and after",
-                              "3. From anti-aliased to soft", "4. The ESM exponent c",
-                              "5. Errors against", "6. GPU time per pass"}) {
+  for (const char* section :
+       {"1. The techniques", "2. Shadow maps before and after", "3. From anti-aliased to soft",
+        "4. The ESM exponent c", "5. Errors against", "6. GPU time per pass"}) {
     EXPECT_NE(html_.find(section), std::string::npos) << section;
   }
   EXPECT_EQ(html_.find("<div class=\"failed\">"), std::string::npos) << "an item failed";
@@ -122,7 +122,8 @@ TEST_F(Report, ChromiumShowsThePageWithoutConsoleErrors) {
   const std::string command =
       "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
       "--disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir=" + (dir_ / "chromium-profile").string() +
+      "--user-data-dir=" +
+      (dir_ / "chromium-profile").string() +
       " --enable-logging=stderr --v=0 --window-size=1400,2000 --screenshot=" + shot.string() +
       " file://" + fs::absolute(dir_ / "index.html").string() + " 2> " + log.string();
   EXPECT_EQ(run_shell(command), 0);
