@@ -1,0 +1,223 @@
+#include "scene/model.hpp"
+
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace penumbra {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Normals the file lacks are smoothed across edges sharper than this only
+// when the faces are nearly coplanar: a scanned model (the bunny) comes out
+// smooth, a box keeps its edges.
+constexpr float kSmoothingAngleDegrees = 80.0f;
+
+// - Triangulate: the renderer draws triangles; polygons are split, points
+//   and lines stay as they are and are skipped below.
+// - JoinIdenticalVertices: OBJ, PLY and STL readers emit one vertex per face
+//   corner; joining them shares vertices (a third of the memory) and is what
+//   lets GenSmoothNormals average across faces.
+// - GenSmoothNormals: only for meshes without normals (it leaves the file's
+//   own normals alone).
+// - PreTransformVertices: applies the node hierarchy (glTF and others place
+//   meshes with node transforms), so the model is one object-space soup.
+// - RemoveRedundantMaterials: merges identical materials, so fewer are
+//   appended to the scene.
+// - ValidateDataStructure: assimp's own consistency check, a first line of
+//   defence; the indices and positions are checked again below.
+// Not FindInvalidData: it deletes a whole mesh with one non-finite position
+// without failing, which would draw a silently incomplete model; such a
+// file is an error here.
+constexpr unsigned kPostProcess = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |
+                                  aiProcess_RemoveRedundantMaterials |
+                                  aiProcess_ValidateDataStructure;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw RuntimeError(path + ": " + what);
+}
+
+// Assimp's messages can span lines; the CLI prints one.
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\r')) text.pop_back();
+  return text;
+}
+
+// Errors assimp would report vaguely ("no suitable reader") or not at all.
+void check_readable(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) fail(path, "no such file");
+  if (fs::is_directory(status)) fail(path, "is a folder, not a model file");
+  if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot be opened for reading");
+  if (fs::file_size(path, ec) == 0 && !ec) fail(path, "the file is empty");
+}
+
+bool finite(const aiVector3D& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string describe(const aiVector3D& v) {
+  std::ostringstream out;
+  out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+  return out.str();
+}
+
+bool read_color(const aiMaterial& m, const char* key, unsigned type, unsigned index,
+                glm::vec3& out) {
+  aiColor4D c;
+  if (m.Get(key, type, index, c) != AI_SUCCESS) return false;
+  if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b)) return false;
+  out = glm::clamp(glm::vec3(c.r, c.g, c.b), glm::vec3(0.0f), glm::vec3(1.0f));
+  return true;
+}
+
+// The base colour (glTF's metallic-roughness model) or else the diffuse
+// colour (OBJ's Kd, PLY, ...), both linear; the specular colour and
+// exponent where the file has them. Textures are not read.
+Material to_material(const aiMaterial& m) {
+  Material out;
+  aiString name;
+  if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
+  if (!read_color(m, AI_MATKEY_BASE_COLOR, out.albedo)) {
+    read_color(m, AI_MATKEY_COLOR_DIFFUSE, out.albedo);
+  }
+  read_color(m, AI_MATKEY_COLOR_SPECULAR, out.specular);
+  float shininess = 0.0f;
+  // Assimp reports 0 for "not given" in some readers: keep the default then.
+  if (m.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && std::isfinite(shininess) &&
+      shininess >= 1.0f) {
+    out.shininess = std::min(shininess, 10000.0f);
+  }
+  return out;
+}
+
+// Vertices whose normal is unusable take the area-weighted mean of their
+// faces' normals; with only degenerate faces, +y.
+void repair_normals(TriangleMesh& mesh, std::uint32_t first_vertex, std::size_t first_index,
+                    const std::vector<std::uint32_t>& broken) {
+  if (broken.empty()) return;
+  std::vector<glm::vec3> sums(mesh.vertices.size() - first_vertex, glm::vec3(0.0f));
+  for (std::size_t i = first_index; i + 2 < mesh.indices.size(); i += 3) {
+    const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
+    const glm::vec3 n =
+        glm::cross(mesh.vertices[b].position - mesh.vertices[a].position,
+                   mesh.vertices[c].position - mesh.vertices[a].position);  // length: 2 x area
+    for (std::uint32_t v : {a, b, c}) sums[v - first_vertex] += n;
+  }
+  for (std::uint32_t v : broken) {
+    const glm::vec3 s = sums[v - first_vertex];
+    const float length = glm::length(s);
+    mesh.vertices[v].normal =
+        std::isfinite(length) && length > 0.0f ? s / length : glm::vec3(0.0f, 1.0f, 0.0f);
+  }
+}
+
+}  // namespace
+
+Model load_model(const std::string& path) {
+  check_readable(path);
+  Assimp::Importer importer;
+  importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, kSmoothingAngleDegrees);
+  const aiScene* scene = importer.ReadFile(path, kPostProcess);
+  if (scene == nullptr) fail(path, "cannot read the model: " + one_line(importer.GetErrorString()));
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mNumMeshes == 0) {
+    fail(path, "the file holds no triangles");
+  }
+
+  Model model;
+  model.path = path;
+  TriangleMesh& mesh = model.mesh;
+  std::size_t vertex_total = 0, face_total = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    vertex_total += scene->mMeshes[m]->mNumVertices;
+    face_total += scene->mMeshes[m]->mNumFaces;
+  }
+  if (vertex_total > std::numeric_limits<std::uint32_t>::max()) {
+    fail(path, "has " + std::to_string(vertex_total) + " vertices, more than 32-bit indices reach");
+  }
+  mesh.vertices.reserve(vertex_total);
+  mesh.indices.reserve(3 * face_total);
+
+  // The file's material index -> ours; only materials that triangles use.
+  std::vector<int> material_of(scene->mNumMaterials, -1);
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh& in = *scene->mMeshes[m];
+    if ((in.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0 || in.mVertices == nullptr) continue;
+    const std::string where = "mesh " + std::to_string(m);
+    if (in.mMaterialIndex >= scene->mNumMaterials) {
+      fail(path, where + " uses material " + std::to_string(in.mMaterialIndex) + " of " +
+                     std::to_string(scene->mNumMaterials));
+    }
+    int& material = material_of[in.mMaterialIndex];
+    if (material < 0) {
+      material = static_cast<int>(model.materials.size());
+      model.materials.push_back(to_material(*scene->mMaterials[in.mMaterialIndex]));
+    }
+
+    const std::uint32_t base = static_cast<std::uint32_t>(mesh.vertices.size());
+    const std::size_t first_index = mesh.indices.size();
+    std::vector<std::uint32_t> broken_normals;
+    for (unsigned v = 0; v < in.mNumVertices; ++v) {
+      const aiVector3D& p = in.mVertices[v];
+      if (!finite(p)) {
+        fail(path, where + ", vertex " + std::to_string(v) + ": position " + describe(p) +
+                       " is not finite");
+      }
+      glm::vec3 normal(0.0f);
+      if (in.mNormals != nullptr) normal = {in.mNormals[v].x, in.mNormals[v].y, in.mNormals[v].z};
+      const float length = glm::length(normal);
+      if (std::isfinite(length) && length > 1e-12f) {
+        normal /= length;
+      } else {
+        broken_normals.push_back(base + v);
+      }
+      mesh.vertices.push_back({{p.x, p.y, p.z}, normal, static_cast<std::uint32_t>(material)});
+      model.bounds.extend({p.x, p.y, p.z});
+    }
+    for (unsigned f = 0; f < in.mNumFaces; ++f) {
+      const aiFace& face = in.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // a point or a line: no surface to draw
+      for (unsigned k = 0; k < 3; ++k) {
+        if (face.mIndices[k] >= in.mNumVertices) {
+          fail(path, where + ", face " + std::to_string(f) + ": vertex index " +
+                         std::to_string(face.mIndices[k]) + " is out of range (the mesh has " +
+                         std::to_string(in.mNumVertices) + " vertices)");
+        }
+        mesh.indices.push_back(base + face.mIndices[k]);
+      }
+    }
+    repair_normals(mesh, base, first_index, broken_normals);
+  }
+  if (mesh.indices.empty()) fail(path, "the file holds no triangles");
+  return model;
+}
+
+void attach_model(Scene& scene, Shape& shape, const std::string& path, bool own_materials) {
+  auto model = std::make_shared<const Model>(load_model(path));
+  shape.kind = ShapeKind::Model;
+  shape.file = path;
+  shape.own_materials = own_materials;
+  if (own_materials) {
+    shape.material = static_cast<int>(scene.materials.size());
+    scene.materials.insert(scene.materials.end(), model->materials.begin(), model->materials.end());
+  }
+  shape.model = std::move(model);
+}
+
+}  // namespace penumbra
