@@ -3,9 +3,12 @@
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/DefaultLogger.hpp>
+#include <assimp/LogStream.hpp>
 
 #include <algorithm>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -37,8 +40,8 @@ constexpr float kSmoothingAngleDegrees = 80.0f;
 //   meshes with node transforms), so the model is one object-space soup.
 // - RemoveRedundantMaterials: merges identical materials, so fewer are
 //   appended to the scene.
-// - ValidateDataStructure: assimp's own consistency check, a first line of
-//   defence; the indices and positions are checked again below.
+// - ValidateDataStructure: assimp's own consistency check; the indices and
+//   positions are checked here too, before and after these steps.
 // Not FindInvalidData: it deletes a whole mesh with one non-finite position
 // without failing, which would draw a silently incomplete model; such a
 // file is an error here.
@@ -67,6 +70,52 @@ void check_readable(const std::string& path) {
   if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot be opened for reading");
   if (fs::file_size(path, ec) == 0 && !ec) fail(path, "the file is empty");
 }
+
+// Assimp's warnings while one file is read. Some readers repair bad data
+// with only a warning (glTF drops the faces whose indices are out of
+// range); such a file is an error here. Assimp has one logger per process,
+// so this holds it for the duration of one load: loads must not run
+// concurrently (scenes are loaded on one thread).
+class ImportWarnings {
+ public:
+  ImportWarnings() {
+    Assimp::DefaultLogger::create(nullptr, Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(new Stream(messages_),
+                                               Assimp::Logger::Warn | Assimp::Logger::Err);
+  }
+  ~ImportWarnings() { Assimp::DefaultLogger::kill(); }  // deletes the stream
+  ImportWarnings(const ImportWarnings&) = delete;
+  ImportWarnings& operator=(const ImportWarnings&) = delete;
+
+  // Fails on a warning that says data was out of range (and so dropped).
+  void check(const std::string& path) const {
+    for (const std::string& message : messages_) {
+      std::string lower = message;
+      for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (lower.find("out-of-range") != std::string::npos ||
+          lower.find("out of range") != std::string::npos) {
+        fail(path, one_line(message));
+      }
+    }
+  }
+
+ private:
+  class Stream : public Assimp::LogStream {
+   public:
+    explicit Stream(std::vector<std::string>& messages) : messages_(messages) {}
+    // Drops the logger's "Warn,  T0: " prefix.
+    void write(const char* message) override {
+      std::string text = message;
+      const std::size_t colon = text.find(": ");
+      if (colon != std::string::npos && text.find(',') < colon) text.erase(0, colon + 2);
+      messages_.push_back(std::move(text));
+    }
+
+   private:
+    std::vector<std::string>& messages_;
+  };
+  std::vector<std::string> messages_;
+};
 
 bool finite(const aiVector3D& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -107,6 +156,42 @@ Material to_material(const aiMaterial& m) {
   return out;
 }
 
+// The file's data as its reader gave it, before any step can hide a
+// problem (JoinIdenticalVertices merges a non-finite position into a
+// neighbour): finite positions, indices in range, and some polygon (not
+// only points and lines) to draw.
+void check_raw(const std::string& path, const aiScene& scene) {
+  bool has_polygon = false;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh* mesh = scene.mMeshes[m];
+    if (mesh == nullptr) continue;
+    const std::string where = "mesh " + std::to_string(m);
+    if (mesh->mVertices == nullptr && mesh->mNumVertices > 0)
+      fail(path, where + " has no positions");
+    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+      if (!finite(mesh->mVertices[v])) {
+        fail(path, where + ", vertex " + std::to_string(v) + ": position " +
+                       describe(mesh->mVertices[v]) + " is not finite");
+      }
+    }
+    if (mesh->mFaces == nullptr && mesh->mNumFaces > 0) fail(path, where + " has no faces");
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices >= 3) has_polygon = true;
+      if (face.mIndices == nullptr && face.mNumIndices > 0)
+        fail(path, where + " has a broken face");
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        if (face.mIndices[k] >= mesh->mNumVertices) {
+          fail(path, where + ", face " + std::to_string(f) + ": vertex index " +
+                         std::to_string(face.mIndices[k]) + " is out of range (the mesh has " +
+                         std::to_string(mesh->mNumVertices) + " vertices)");
+        }
+      }
+    }
+  }
+  if (!has_polygon) fail(path, "the file holds no triangles");
+}
+
 // Vertices whose normal is unusable take the area-weighted mean of their
 // faces' normals; with only degenerate faces, +y.
 void repair_normals(TriangleMesh& mesh, std::uint32_t first_vertex, std::size_t first_index,
@@ -132,10 +217,18 @@ void repair_normals(TriangleMesh& mesh, std::uint32_t first_vertex, std::size_t 
 
 Model load_model(const std::string& path) {
   check_readable(path);
+  const ImportWarnings warnings;
   Assimp::Importer importer;
   importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, kSmoothingAngleDegrees);
-  const aiScene* scene = importer.ReadFile(path, kPostProcess);
+  // Read, check what the reader gave, then post-process (and check again
+  // while copying below).
+  const aiScene* scene = importer.ReadFile(path, 0);
   if (scene == nullptr) fail(path, "cannot read the model: " + one_line(importer.GetErrorString()));
+  warnings.check(path);
+  check_raw(path, *scene);
+  scene = importer.ApplyPostProcessing(kPostProcess);
+  if (scene == nullptr) fail(path, "cannot read the model: " + one_line(importer.GetErrorString()));
+  warnings.check(path);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mNumMeshes == 0) {
     fail(path, "the file holds no triangles");
   }
