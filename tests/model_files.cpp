@@ -41,6 +41,26 @@ std::string red_mtl() {
   return "newmtl red\nKd 0.8 0.1 0.1\nKs 0.5 0.5 0.5\nNs 50\n";
 }
 
+std::string cube_off() {
+  return R"(OFF
+8 6 12
+-1 -1 -1
+ 1 -1 -1
+ 1  1 -1
+-1  1 -1
+-1 -1  1
+ 1 -1  1
+ 1  1  1
+-1  1  1
+4 0 3 2 1
+4 4 5 6 7
+4 0 1 5 4
+4 2 3 7 6
+4 1 2 6 5
+4 0 4 7 3
+)";
+}
+
 std::string write_grid_ply(const std::string& name, int n) {
   const int vertices = (n + 1) * (n + 1);
   const int faces = 2 * n * n;

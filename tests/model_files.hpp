@@ -18,6 +18,9 @@ std::string tetrahedron_obj(const std::string& material_file = "");
 // The MTL file it names: "red" with Kd 0.8 0.1 0.1, Ks 0.5 0.5 0.5, Ns 50.
 std::string red_mtl();
 
+// A cube of side 2 centred on the origin, six quads, as OFF text.
+std::string cube_off();
+
 // A (2n)-triangle-per-row grid of n x n quads over [0, 1] x [0, 1] in the
 // x-z plane, as a binary little-endian PLY: 2 n^2 triangles.
 std::string write_grid_ply(const std::string& name, int n);

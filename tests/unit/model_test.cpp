@@ -181,23 +181,7 @@ endsolid square
 
 TEST(Model, ReadsOffWithQuadsSplit) {
   // A cube of side 2 made of six quads: 12 triangles once triangulated.
-  const Model m = load_model(write_model_file("cube.off", R"(OFF
-8 6 12
--1 -1 -1
- 1 -1 -1
- 1  1 -1
--1  1 -1
--1 -1  1
- 1 -1  1
- 1  1  1
--1  1  1
-4 0 3 2 1
-4 4 5 6 7
-4 0 1 5 4
-4 2 3 7 6
-4 1 2 6 5
-4 0 4 7 3
-)"));
+  const Model m = load_model(write_model_file("cube.off", testing::cube_off()));
   EXPECT_EQ(m.mesh.indices.size(), 36u);
   expect_bounds(m, glm::vec3(-1.0f), glm::vec3(1.0f));
   expect_outward_normals(m);
