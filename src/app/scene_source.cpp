@@ -11,9 +11,10 @@ void add_scene_source_options(CLI::App& command, std::string& scene, std::string
           ->capture_default_str();
   command
       .add_option("--model", model,
-                  "FILE: a model (OBJ, PLY, glTF/GLB, STL, OFF, or another format assimp reads) "
-                  "standing on a ground plane, framed by the camera, lit by a spot and a "
-                  "directional light; instead of --scene")
+                  "a model file (OBJ, PLY, glTF/GLB, STL, OFF, or another format assimp reads) "
+                  "scaled to 2 units, standing on a ground plane, framed by the camera, lit by a "
+                  "spot and a directional light; instead of --scene")
+      ->type_name("FILE")
       ->excludes(scene_option);
 }
 

@@ -48,6 +48,19 @@ TEST(CommandLine, DefaultsGiveTheShortestCommand) {
   EXPECT_EQ(args, (std::vector<std::string>{"render", "--output=a.png"}));
 }
 
+TEST(CommandLine, AModelReplacesTheScene) {
+  const std::vector<std::string> args = render_command_args({.scene_argument = "spot",
+                                                             .model_argument = "models/bunny.obj",
+                                                             .render = {},
+                                                             .shadow = {},
+                                                             .ssao = {},
+                                                             .original = nullptr,
+                                                             .edited = nullptr,
+                                                             .output = "a.png"});
+  EXPECT_EQ(args,
+            (std::vector<std::string>{"render", "--model=models/bunny.obj", "--output=a.png"}));
+}
+
 TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
   const Scene original = *builtin_scene("default");
   ASSERT_GE(original.lights.size(), 2u);
