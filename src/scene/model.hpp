@@ -21,8 +21,9 @@ struct Model {
 
 // Reads a model and checks it: every index in range, every position
 // finite, at least one triangle. Normals missing from the file are
-// computed (smooth within 80 degrees); a normal that is missing,
-// non-finite or zero after that becomes the face normal.
+// computed (smooth_normals.hpp, creases above 80 degrees kept); a file's
+// normal that is non-finite or zero becomes the area-weighted mean of its
+// triangles' normals.
 // Throws RuntimeError "<path>: <what is wrong>".
 Model load_model(const std::string& path);
 
