@@ -134,5 +134,39 @@ TEST_F(GpuTest, ModelCastsItsShadowWithHardAndFilteredTechniques) {
   }
 }
 
+// A million-triangle model draws: a grid as the ground, a box's shadow on it.
+TEST_F(GpuTest, MillionTriangleModelReceivesAShadow) {
+  Scene scene = cube_model_above_plane();
+  Shape ground;
+  attach_model(scene, ground, testing::write_grid_ply("gpu-grid-1m.ply", 708),
+               /*own_materials=*/false);
+  ground.scale = glm::vec3(8.0f);  // the grid spans [0, 1] in x and z
+  ground.position = {-4.0f, 0.0f, -4.0f};
+  scene.shapes[0] = ground;
+  scene.camera.position = {0.0f, 8.0f, 4.0f};
+  Renderer renderer(scene);
+  ASSERT_EQ(renderer.mesh().indices.size() / 3, 2u * 708 * 708 + 12u);
+  RenderSettings rs;
+  rs.width = 64;
+  rs.height = 64;
+  rs.view = View::Shadow;
+  ShadowSettings shadow;
+  shadow.map_size = 512;
+  renderer.render(rs, shadow);
+  const Image image = renderer.read_view();
+  // The pixels that see the ground under the cube, and beside it.
+  const glm::mat4 to_clip =
+      renderer.camera_projection(rs.width, rs.height) * renderer.camera_view();
+  const auto value_at = [&](glm::vec3 world) {
+    const glm::vec4 clip = to_clip * glm::vec4(world, 1.0f);
+    const int x = static_cast<int>((clip.x / clip.w * 0.5f + 0.5f) * rs.width);
+    const int y = static_cast<int>((0.5f - clip.y / clip.w * 0.5f) * rs.height);
+    return image.pixel(x, y)[0];
+  };
+  EXPECT_LT(value_at({0.0f, 0.0f, 0.0f}), 0.5f);
+  EXPECT_GT(value_at({2.5f, 0.0f, 0.0f}), 0.95f);
+  EXPECT_GT(value_at({-2.5f, 0.0f, 0.5f}), 0.95f);
+}
+
 }  // namespace
 }  // namespace penumbra
