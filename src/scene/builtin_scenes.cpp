@@ -142,7 +142,8 @@ Scene framed_model_scene(const std::string& path) {
   const Bounds& b = model.model->bounds;
   const glm::vec3 extent = b.max - b.min;
   const float largest = std::max({extent.x, extent.y, extent.z});
-  if (!std::isfinite(largest) || largest <= 0.0f) {
+  if (!std::isfinite(largest)) throw RuntimeError(path + ": the model is too large to frame");
+  if (largest <= 0.0f) {
     throw RuntimeError(path + ": the model has no extent (every vertex is at one point)");
   }
   const float scale = kFramedModelSize / largest;

@@ -67,23 +67,32 @@ void check_readable(const std::string& path) {
   const fs::file_status status = fs::status(path, ec);
   if (!fs::exists(status)) fail(path, "no such file");
   if (fs::is_directory(status)) fail(path, "is a folder, not a model file");
+  // A pipe or a device could block or never end.
+  if (!fs::is_regular_file(status)) fail(path, "is not a regular file");
   if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot be opened for reading");
   if (fs::file_size(path, ec) == 0 && !ec) fail(path, "the file is empty");
 }
 
 // Assimp's warnings while one file is read. Some readers repair bad data
 // with only a warning (glTF drops the faces whose indices are out of
-// range); such a file is an error here. Assimp has one logger per process,
-// so this holds it for the duration of one load: loads must not run
-// concurrently (scenes are loaded on one thread).
+// range); such a file is an error here. Assimp has one logger per process:
+// this creates it for the duration of one load (or listens to the one the
+// program made), so loads must not run concurrently (scenes are loaded on
+// one thread).
 class ImportWarnings {
  public:
-  ImportWarnings() {
-    Assimp::DefaultLogger::create(nullptr, Assimp::Logger::NORMAL, 0);
-    Assimp::DefaultLogger::get()->attachStream(new Stream(messages_),
-                                               Assimp::Logger::Warn | Assimp::Logger::Err);
+  ImportWarnings() : own_logger_(Assimp::DefaultLogger::isNullLogger()) {
+    if (own_logger_) Assimp::DefaultLogger::create(nullptr, Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(stream_, kSeverities);
   }
-  ~ImportWarnings() { Assimp::DefaultLogger::kill(); }  // deletes the stream
+  ~ImportWarnings() {
+    if (own_logger_) {
+      Assimp::DefaultLogger::kill();  // deletes the stream
+    } else {
+      Assimp::DefaultLogger::get()->detachStream(stream_, kSeverities);
+      delete stream_;
+    }
+  }
   ImportWarnings(const ImportWarnings&) = delete;
   ImportWarnings& operator=(const ImportWarnings&) = delete;
 
@@ -114,7 +123,10 @@ class ImportWarnings {
    private:
     std::vector<std::string>& messages_;
   };
+  static constexpr unsigned kSeverities = Assimp::Logger::Warn | Assimp::Logger::Err;
   std::vector<std::string> messages_;
+  bool own_logger_;
+  Stream* stream_ = new Stream(messages_);  // owned by the logger while attached
 };
 
 bool finite(const aiVector3D& v) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <assimp/DefaultLogger.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -200,9 +201,10 @@ void expect_model_error(const std::string& path, const std::string& expected) {
   }
 }
 
-TEST(ModelErrors, MissingFileOrFolder) {
+TEST(ModelErrors, MissingFileFolderOrDevice) {
   expect_model_error(write_model_file("placeholder.txt", "") + ".missing.obj", "no such file");
   expect_model_error(std::string(PENUMBRA_TEST_OUTPUT) + "/models", "folder");
+  expect_model_error("/dev/null", "not a regular file");
 }
 
 TEST(ModelErrors, GarbageBytes) {
@@ -266,6 +268,20 @@ end_header
   expect_model_error(
       write_model_file("range.gltf", tetrahedron_gltf(kTetrahedronPositions, indices)),
       "out-of-range");
+}
+
+// A program that made assimp's logger keeps it, and the check still works.
+TEST(ModelErrors, DroppedDataIsFoundWithTheProgramsOwnLogger) {
+  Assimp::DefaultLogger::create(nullptr, Assimp::Logger::NORMAL, 0);
+  Assimp::Logger* program_logger = Assimp::DefaultLogger::get();
+  std::vector<std::uint16_t> indices = kTetrahedronIndices;
+  indices[7] = 1000;
+  expect_model_error(
+      write_model_file("range-logger.gltf", tetrahedron_gltf(kTetrahedronPositions, indices)),
+      "out-of-range");
+  EXPECT_EQ(Assimp::DefaultLogger::get(), program_logger);
+  EXPECT_FALSE(Assimp::DefaultLogger::isNullLogger());
+  Assimp::DefaultLogger::kill();
 }
 
 TEST(ModelErrors, NonFinitePositions) {
