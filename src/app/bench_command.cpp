@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "gl/gpu_profiler.hpp"
@@ -104,8 +105,7 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer) {
 }  // namespace
 
 void add_bench_command_options(CLI::App& command, BenchArgs& args) {
-  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
-      ->capture_default_str();
+  add_scene_source_options(command, args.scene, args.model);
   command
       .add_option("--frames", args.frames, "frames measured per configuration, after the warm-up")
       ->capture_default_str()
@@ -136,7 +136,7 @@ int run_bench_command(BenchArgs& args) {
   const std::vector<ShadowSettings> plan = plan_runs(args, techniques);
   for (const ShadowSettings& s : plan) validate(s);
   validate(args.render);
-  Scene scene = resolve_scene(args.scene);
+  Scene scene = resolve_scene_source(args.scene, args.model);
 
   auto context = gl::Context::create_headless();
   std::printf("penumbra bench: %s (%s, %s)\n", context->renderer().c_str(),

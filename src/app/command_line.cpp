@@ -52,7 +52,9 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   const RenderSettings render_defaults{};
   const ShadowSettings shadow_defaults{};
   std::vector<std::string> args{"render"};
-  if (command.scene_argument != "default") {
+  if (!command.model_argument.empty()) {
+    args.push_back("--model=" + command.model_argument);
+  } else if (command.scene_argument != "default") {
     args.push_back("--scene=" + command.scene_argument);
   }
   add_changed_name(args, "technique", command.shadow.technique, shadow_defaults.technique,

@@ -12,6 +12,7 @@ namespace penumbra {
 
 struct RenderCommand {
   std::string scene_argument;  // as given to --scene
+  std::string model_argument;  // as given to --model (then the scene is ignored)
   RenderSettings render;
   ShadowSettings shadow;
   SsaoSettings ssao;

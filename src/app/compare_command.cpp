@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/options.hpp"
+#include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "io/atomic_file.hpp"
@@ -172,8 +173,7 @@ std::vector<std::string> metrics_row(const Item& item, const char* reference,
 }  // namespace
 
 void add_compare_command_options(CLI::App& command, CompareArgs& args) {
-  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
-      ->capture_default_str();
+  add_scene_source_options(command, args.scene, args.model);
   command
       .add_option(
           "--techniques", args.techniques,
@@ -359,7 +359,7 @@ int run_compare_command(CompareArgs& args) {
   std::vector<Item> items = plan_items(args);
   if (!args.output_dir.empty()) check_output_dir(args.output_dir);
   if (!args.json.empty()) check_output_path(args.json);
-  const Scene scene = resolve_scene(args.scene);
+  const Scene scene = resolve_scene_source(args.scene, args.model);
   const int light_index = args.render.light_index;
   if (light_index >= static_cast<int>(scene.lights.size())) {
     throw UsageError("--light-index " + std::to_string(light_index) + ": scene '" + scene.name +

@@ -11,6 +11,7 @@ namespace penumbra {
 
 struct RenderArgs {
   std::string scene = "default";
+  std::string model;  // --model: instead of --scene
   std::string output;
   bool verbose = false;
   RenderSettings render;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "io/image.hpp"
@@ -14,8 +15,7 @@ namespace penumbra {
 namespace fs = std::filesystem;
 
 void add_report_command_options(CLI::App& command, ReportArgs& args) {
-  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
-      ->capture_default_str();
+  add_scene_source_options(command, args.scene, args.model);
   command.add_option("-o,--output", args.output, "folder for index.html and its images")
       ->required();
   command.add_flag("--quick", args.quick, "smaller images and fewer sweeps");
@@ -30,11 +30,14 @@ int run_report_command(const ReportArgs& args) {
   check_output_path(fs::is_directory(args.output, ec)
                         ? (fs::path(args.output) / "index.html").string()
                         : args.output);
-  const Scene scene = resolve_scene(args.scene);
+  const Scene scene = resolve_scene_source(args.scene, args.model);
   auto context = gl::Context::create_headless();
-  const StudyResult result = write_study(
-      scene, {.scene_argument = args.scene, .output_dir = args.output, .quick = args.quick},
-      *context);
+  const StudyResult result = write_study(scene,
+                                         {.scene_argument = args.scene,
+                                          .model_argument = args.model,
+                                          .output_dir = args.output,
+                                          .quick = args.quick},
+                                         *context);
   std::printf("%s\n", result.index_path.c_str());
   if (result.failed > 0) {
     std::fprintf(stderr,

@@ -7,6 +7,7 @@ namespace penumbra {
 
 struct ReportArgs {
   std::string scene = "default";
+  std::string model;  // --model: instead of --scene
   std::string output;
   bool quick = false;
 };

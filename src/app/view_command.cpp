@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "app/command_line.hpp"
+#include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "io/image.hpp"
@@ -106,8 +107,7 @@ void apply_key(KeyAction action, ViewerState& state, PanelActions& actions, bool
 }  // namespace
 
 void add_view_command_options(CLI::App& command, ViewArgs& args) {
-  command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
-      ->capture_default_str();
+  add_scene_source_options(command, args.scene, args.model);
   command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
   command
       .add_option("--frames", args.frames,
@@ -139,14 +139,14 @@ int run_view_command(ViewArgs& args) {
     }
     check_output_path(args.capture_window);
   }
-  Scene loaded = resolve_scene(args.scene);
+  Scene loaded = resolve_scene_source(args.scene, args.model);
   Scene start = loaded;
   apply_scene_options(args.scene_options, args.render.light_index, start);
 
   const bool scripted = args.frames > 0;
   Window window({.width = args.render.width + static_cast<int>(kPanelWidth),
                  .height = args.render.height,
-                 .title = "penumbra: " + args.scene,
+                 .title = "penumbra: " + (args.model.empty() ? args.scene : args.model),
                  .vsync = !scripted,
                  .verbose = args.verbose});
   if (epoxy_gl_version() < 45) {
@@ -167,6 +167,7 @@ int run_view_command(ViewArgs& args) {
 
   ViewerState state =
       make_viewer_state(args.scene, std::move(loaded), start, args.render, args.shadow, args.ssao);
+  state.model_argument = args.model;
   OrbitCamera orbit(state.camera);
   MouseControls mouse(renderer.mesh().bounds().center());
 

@@ -13,6 +13,7 @@ namespace penumbra {
 
 struct ViewArgs {
   std::string scene = "default";
+  std::string model;  // --model: instead of --scene
   bool verbose = false;
   RenderSettings render;  // width and height: the 3D view's start size
   ShadowSettings shadow;

@@ -77,6 +77,7 @@ class Study {
     HtmlFigure f;
     f.caption = caption;
     f.command = shell_command(render_command_args({.scene_argument = options_.scene_argument,
+                                                   .model_argument = options_.model_argument,
                                                    .render = render,
                                                    .shadow = shadow,
                                                    .ssao = {},

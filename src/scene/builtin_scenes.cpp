@@ -1,6 +1,11 @@
 #include "scene/builtin_scenes.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <glm/gtc/constants.hpp>
+
+#include "core/error.hpp"
+#include "scene/model.hpp"
 
 namespace penumbra {
 
@@ -126,6 +131,69 @@ Scene spot_scene() {
 }
 
 }  // namespace
+
+Scene framed_model_scene(const std::string& path) {
+  Scene scene;
+  scene.name = path;
+  scene.materials = standard_materials();
+  Shape model;
+  attach_model(scene, model, path, /*own_materials=*/true);
+
+  const Bounds& b = model.model->bounds;
+  const glm::vec3 extent = b.max - b.min;
+  const float largest = std::max({extent.x, extent.y, extent.z});
+  if (!std::isfinite(largest)) throw RuntimeError(path + ": the model is too large to frame");
+  if (largest <= 0.0f) {
+    throw RuntimeError(path + ": the model has no extent (every vertex is at one point)");
+  }
+  const float scale = kFramedModelSize / largest;
+  model.scale = glm::vec3(scale);
+  // Centred over the origin, its lowest point on the ground.
+  model.position = {-scale * b.center().x, -scale * b.min.y, -scale * b.center().z};
+  const float height = scale * extent.y;
+  const float radius = 0.5f * scale * glm::length(extent);  // of the bounding sphere
+  scene.shapes.push_back(model);
+
+  // Just wide enough that the camera below sees no edge of it: a
+  // directional light's map covers all of it, so every extra metre of
+  // ground costs shadow-map texels on the model.
+  Shape ground = make(ShapeKind::Plane, {0, 0, 0}, 0);
+  ground.size = {10.0f * radius, 0.0f, 10.0f * radius};
+  scene.shapes.insert(scene.shapes.begin(), ground);
+
+  // From the front, 40 degrees above the horizon (so that the top edge of
+  // a 16:9 image still meets the ground), the bounding sphere filling 80%
+  // of the image's height; the aim is a little below the middle, so that
+  // the ground and the shadow show.
+  scene.camera.fov_y_degrees = 40.0f;
+  const float distance = radius / std::sin(glm::radians(0.5f * scene.camera.fov_y_degrees)) / 0.8f;
+  const float elevation = glm::radians(40.0f);
+  scene.camera.target = {0.0f, 0.4f * height, 0.0f};
+  scene.camera.position =
+      scene.camera.target + distance * glm::vec3(0.0f, std::sin(elevation), std::cos(elevation));
+
+  // Up and to the front right, as in the default scene, far enough for a
+  // narrow cone to hold the model and its shadow behind it.
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.position = radius * glm::vec3(1.6f, 4.0f, 2.2f);
+  const glm::vec3 aim{0.0f, 0.25f * height, 0.0f};
+  spot.direction = glm::normalize(aim - spot.position);
+  spot.color = {1.0f, 0.95f, 0.85f};
+  // About the default scene's irradiance where the light meets the model.
+  spot.intensity = 0.9f * glm::dot(spot.position - aim, spot.position - aim);
+  spot.cone_degrees = 32.0f;
+  spot.inner_cone_degrees = 24.0f;
+  scene.lights.push_back(spot);
+  // The default scene's dim sky light.
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(0.7f, -1.0f, -0.25f));
+  sun.color = {0.75f, 0.82f, 1.0f};
+  sun.intensity = 0.35f;
+  scene.lights.push_back(sun);
+  return scene;
+}
 
 std::vector<std::string> builtin_scene_names() {
   return {"default", "spot"};

@@ -13,4 +13,13 @@ std::vector<std::string> builtin_scene_names();
 // The built-in scene of that name, or nullopt.
 std::optional<Scene> builtin_scene(const std::string& name);
 
+// A model file (scene/model.hpp) scaled so that its largest side is
+// kFramedModelSize, standing on the middle of a ground plane, seen whole by
+// the camera and lit like the default scene: a spot light from the front
+// right that throws its shadow on the ground behind, and a dim directional
+// light. The model keeps its file's materials. Throws RuntimeError naming
+// the file, as load_model does.
+inline constexpr float kFramedModelSize = 2.0f;
+Scene framed_model_scene(const std::string& path);
+
 }  // namespace penumbra

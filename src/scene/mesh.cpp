@@ -2,6 +2,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
+#include <stdexcept>
+
+#include "scene/model.hpp"
 
 namespace penumbra {
 
@@ -150,10 +153,48 @@ glm::mat4 shape_transform(const Shape& shape) {
   m = glm::rotate(m, glm::radians(shape.rotation_degrees.z), {0, 0, 1});
   m = glm::rotate(m, glm::radians(shape.rotation_degrees.y), {0, 1, 0});
   m = glm::rotate(m, glm::radians(shape.rotation_degrees.x), {1, 0, 0});
-  return m;
+  return glm::scale(m, shape.scale);
 }
 
+namespace {
+
+// Appends `local` transformed by the shape's placement. Vertex materials are
+// the shape's, or offsets from it for a model with its own materials.
+void append_transformed(TriangleMesh& mesh, const TriangleMesh& local, const Shape& shape,
+                        bool material_offsets) {
+  const glm::mat4 m = shape_transform(shape);
+  // Normals transform by the inverse transpose, (R S)^-T = R S^-1; with a
+  // scale of 1 this is the rotation exactly.
+  const glm::vec3 inverse_square = 1.0f / (shape.scale * shape.scale);
+  glm::mat3 normal_matrix = glm::mat3(m);
+  for (int axis = 0; axis < 3; ++axis) normal_matrix[axis] *= inverse_square[axis];
+  const std::uint32_t base = static_cast<std::uint32_t>(mesh.vertices.size());
+  const auto material = static_cast<std::uint32_t>(shape.material);
+  // Grow geometrically but at least once per shape: a million-triangle
+  // model is copied in one allocation.
+  const auto reserve = [](auto& v, std::size_t extra) {
+    if (v.capacity() < v.size() + extra) v.reserve(std::max(v.size() + extra, 2 * v.capacity()));
+  };
+  reserve(mesh.vertices, local.vertices.size());
+  reserve(mesh.indices, local.indices.size());
+  for (const Vertex& v : local.vertices) {
+    mesh.vertices.push_back({glm::vec3(m * glm::vec4(v.position, 1.0f)),
+                             glm::normalize(normal_matrix * v.normal),
+                             material_offsets ? material + v.material : material});
+  }
+  for (std::uint32_t i : local.indices) mesh.indices.push_back(base + i);
+}
+
+}  // namespace
+
 void append_shape(TriangleMesh& mesh, const Shape& shape) {
+  if (shape.kind == ShapeKind::Model) {
+    if (shape.model == nullptr) {
+      throw std::invalid_argument("model shape '" + shape.file + "' was never loaded");
+    }
+    append_transformed(mesh, shape.model->mesh, shape, shape.own_materials);
+    return;
+  }
   Builder b;
   switch (shape.kind) {
     case ShapeKind::Plane:
@@ -171,16 +212,10 @@ void append_shape(TriangleMesh& mesh, const Shape& shape) {
     case ShapeKind::Torus:
       build_torus(b, shape);
       break;
+    case ShapeKind::Model:
+      break;  // above
   }
-  const glm::mat4 m = shape_transform(shape);
-  const glm::mat3 normal_matrix = glm::mat3(m);  // rotation only: no scale to undo
-  const std::uint32_t base = static_cast<std::uint32_t>(mesh.vertices.size());
-  for (const Vertex& v : b.local.vertices) {
-    mesh.vertices.push_back({glm::vec3(m * glm::vec4(v.position, 1.0f)),
-                             glm::normalize(normal_matrix * v.normal),
-                             static_cast<std::uint32_t>(shape.material)});
-  }
-  for (std::uint32_t i : b.local.indices) mesh.indices.push_back(base + i);
+  append_transformed(mesh, b.local, shape, false);
 }
 
 TriangleMesh build_scene_mesh(const Scene& scene) {

@@ -26,13 +26,14 @@ struct TriangleMesh {
 // Tessellation of curved shapes: segments around a full circle.
 inline constexpr int kCurveSegments = 48;
 
-// Appends one shape, transformed to world space.
+// Appends one shape, transformed to world space. A model shape must have
+// been loaded (scene/model.hpp: attach_model).
 void append_shape(TriangleMesh& mesh, const Shape& shape);
 
 // All of a scene's shapes in one mesh.
 TriangleMesh build_scene_mesh(const Scene& scene);
 
-// The shape's model matrix: translate * rotate(z) * rotate(y) * rotate(x).
+// The shape's model matrix: translate * rotate(z) * rotate(y) * rotate(x) * scale.
 glm::mat4 shape_transform(const Shape& shape);
 
 }  // namespace penumbra

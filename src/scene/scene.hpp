@@ -3,6 +3,7 @@
 // lights. Shapes are described by their parameters; mesh.hpp turns them
 // into world-space triangles.
 #include <glm/glm.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,9 @@ struct Material {
   float shininess = 32.0f;    // Blinn-Phong exponent
 };
 
-enum class ShapeKind { Plane, Box, Sphere, Cylinder, Torus };
+enum class ShapeKind { Plane, Box, Sphere, Cylinder, Torus, Model };
+
+struct Model;  // a model file's triangles: scene/model.hpp
 
 struct Shape {
   ShapeKind kind = ShapeKind::Box;
@@ -24,7 +27,16 @@ struct Shape {
   float radius = 0.5f;   // sphere, cylinder; torus: ring radius
   float height = 1.0f;   // cylinder, centred on the origin along y
   float tube = 0.15f;    // torus: tube radius
-  // Placement: scale, then rotate (degrees about x, then y, then z), then translate.
+  // Model: the file, and its triangles as loaded with the scene (so that
+  // every mesh built from the scene reuses one copy). With own_materials,
+  // the model's material i is scene.materials[material + i]; without, the
+  // whole model takes `material`.
+  std::string file;
+  std::shared_ptr<const Model> model;
+  bool own_materials = false;
+  // Placement: scale (per axis, > 0), then rotate (degrees about x, then y,
+  // then z), then translate.
+  glm::vec3 scale{1.0f};
   glm::vec3 position{0.0f};
   glm::vec3 rotation_degrees{0.0f};
   int material = 0;

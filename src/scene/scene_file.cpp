@@ -1,6 +1,7 @@
 #include "scene/scene_file.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -9,12 +10,14 @@
 
 #include "core/error.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "scene/model.hpp"
 
 namespace penumbra {
 
 namespace {
 
 using nlohmann::json;
+namespace fs = std::filesystem;
 
 // Reads values from one JSON object, tracking the key path for messages
 // and rejecting keys nobody asked for.
@@ -152,18 +155,26 @@ Light read_light(Reader r) {
   return l;
 }
 
-Shape read_shape(Reader r, const std::map<std::string, int>& materials) {
+// "scale": one number for every axis, or [x, y, z].
+glm::vec3 read_scale(Reader& r) {
+  constexpr float kMin = 1e-6f, kMax = 1e6f;
+  if (r.has("scale") && r.at("scale").is_array()) return r.vec3("scale", {}, kMin, kMax);
+  return glm::vec3(r.number("scale", 1.0f, kMin, kMax));
+}
+
+// Reads one object into the scene; a model is loaded from `base_dir`.
+void read_shape(Reader r, const std::map<std::string, int>& materials, const fs::path& base_dir,
+                Scene& scene) {
   Shape s;
   std::string shape = r.string("shape", "");
-  static const std::map<std::string, ShapeKind> kinds = {{"plane", ShapeKind::Plane},
-                                                         {"box", ShapeKind::Box},
-                                                         {"sphere", ShapeKind::Sphere},
-                                                         {"cylinder", ShapeKind::Cylinder},
-                                                         {"torus", ShapeKind::Torus}};
+  static const std::map<std::string, ShapeKind> kinds = {
+      {"plane", ShapeKind::Plane},       {"box", ShapeKind::Box},     {"sphere", ShapeKind::Sphere},
+      {"cylinder", ShapeKind::Cylinder}, {"torus", ShapeKind::Torus}, {"model", ShapeKind::Model}};
   auto kind = kinds.find(shape);
   if (kind == kinds.end()) {
-    r.fail(r.child("shape"), shape.empty() ? "missing (plane, box, sphere, cylinder or torus)"
-                                           : "unknown shape \"" + shape + "\"");
+    r.fail(r.child("shape"), shape.empty()
+                                 ? "missing (plane, box, sphere, cylinder, torus or model)"
+                                 : "unknown shape \"" + shape + "\"");
   }
   s.kind = kind->second;
   switch (s.kind) {
@@ -187,7 +198,14 @@ Shape read_shape(Reader r, const std::map<std::string, int>& materials) {
       s.radius = r.number("radius", s.radius, 1e-4f, kMaxExtent);
       s.tube = r.number("tube", s.tube, 1e-4f, s.radius);
       break;
+    case ShapeKind::Model: {
+      const std::string file = r.string("file", "");
+      if (file.empty()) r.fail(r.child("file"), "missing (the model file, relative to the scene)");
+      s.file = (base_dir / file).lexically_normal().string();
+      break;
+    }
   }
+  s.scale = read_scale(r);
   s.position = r.vec3("position", s.position, -kMaxExtent, kMaxExtent);
   s.rotation_degrees = r.vec3("rotation", s.rotation_degrees, -3600.0f, 3600.0f);
   std::string material = r.string("material", "");
@@ -197,7 +215,15 @@ Shape read_shape(Reader r, const std::map<std::string, int>& materials) {
     s.material = it->second;
   }
   r.reject_unknown_keys();
-  return s;
+  if (s.kind == ShapeKind::Model) {
+    // Without "material" the model keeps the colours its file gives.
+    try {
+      attach_model(scene, s, s.file, material.empty());
+    } catch (const RuntimeError& e) {
+      r.fail(r.child("file"), e.what());
+    }
+  }
+  scene.shapes.push_back(std::move(s));
 }
 
 }  // namespace
@@ -240,9 +266,10 @@ Scene parse_scene_json(const std::string& text, const std::string& origin) {
     scene.lights.push_back(read_light(Reader(lights[i], "/lights/" + std::to_string(i), origin)));
   }
   const json& objects = read_array("objects");
+  const fs::path base_dir = fs::path(origin).parent_path();
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    scene.shapes.push_back(
-        read_shape(Reader(objects[i], "/objects/" + std::to_string(i), origin), material_index));
+    read_shape(Reader(objects[i], "/objects/" + std::to_string(i), origin), material_index,
+               base_dir, scene);
   }
   r.reject_unknown_keys();
   return scene;

@@ -7,10 +7,16 @@
 //   "lights":    [{"type": "spot"|"directional", "position": [..], "direction": [..] or
 //                  "target": [..], "color": [r,g,b], "intensity": i,
 //                  "cone": degrees, "inner_cone": degrees}, ...],      (at least one)
-//   "objects":   [{"shape": "plane"|"box"|"sphere"|"cylinder"|"torus", "size": [..],
-//                  "radius": r, "height": h, "tube": t, "position": [..],
-//                  "rotation": [x,y,z degrees], "material": "NAME"}, ...]  (at least one)
+//   "objects":   [{"shape": "plane"|"box"|"sphere"|"cylinder"|"torus"|"model",
+//                  "size": [..], "radius": r, "height": h, "tube": t,
+//                  "file": "models/x.obj", "scale": s or [x,y,z],
+//                  "position": [..], "rotation": [x,y,z degrees],
+//                  "material": "NAME"}, ...]                          (at least one)
 // }
+//
+// Every shape is scaled, then rotated (x, then y, then z), then moved. A
+// model's "file" is relative to the scene file's folder (model.hpp lists
+// the checks); without "material" it keeps the colours its file gives.
 //
 // Unknown keys and bad values are errors naming the file and the key's path
 // (e.g. "scene.json: /objects/2/radius: must be > 0").
@@ -20,7 +26,8 @@
 
 namespace penumbra {
 
-// Parses a scene from JSON text; `origin` names the source in messages.
+// Parses a scene from JSON text; `origin` names the source in messages, and
+// model files are found relative to its folder.
 // Throws RuntimeError.
 Scene parse_scene_json(const std::string& text, const std::string& origin);
 

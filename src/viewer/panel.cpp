@@ -185,8 +185,9 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
   const FrameInput* frame = status.frame;
   ImGui::TextDisabled("%s", status.renderer.c_str());
   if (frame != nullptr) {
-    ImGui::Text("%s, %d x %d", state.scene_argument.c_str(), frame->render.width,
-                frame->render.height);
+    const std::string& scene =
+        state.model_argument.empty() ? state.scene_argument : state.model_argument;
+    ImGui::Text("%s, %d x %d", scene.c_str(), frame->render.width, frame->render.height);
   }
 
   if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -192,6 +192,7 @@ std::vector<std::string> render_command_for(const ViewerState& state, const Fram
                                             const std::string& output) {
   const Scene edited = shown_scene(state, frame);
   return render_command_args({.scene_argument = state.scene_argument,
+                              .model_argument = state.model_argument,
                               .render = frame.render,
                               .shadow = frame.shadow,
                               .ssao = frame.ssao,
@@ -201,7 +202,10 @@ std::vector<std::string> render_command_for(const ViewerState& state, const Fram
 }
 
 std::string screenshot_name(const ViewerState& state, const FrameInput& frame) {
-  std::string scene = std::filesystem::path(state.scene_argument).stem().string();
+  std::string scene = std::filesystem::path(state.model_argument.empty() ? state.scene_argument
+                                                                         : state.model_argument)
+                          .stem()
+                          .string();
   if (scene.empty()) scene = "scene";
   const ShadowSettings& s = frame.shadow;
   // Appended piece by piece: GCC 12 misreports chains of operator+ on

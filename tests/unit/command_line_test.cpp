@@ -38,6 +38,7 @@ void expect_same_light(const Light& a, const Light& b) {
 TEST(CommandLine, DefaultsGiveTheShortestCommand) {
   const Scene scene = *builtin_scene("default");
   const std::vector<std::string> args = render_command_args({.scene_argument = "default",
+                                                             .model_argument = "",
                                                              .render = {},
                                                              .shadow = {},
                                                              .ssao = {},
@@ -45,6 +46,19 @@ TEST(CommandLine, DefaultsGiveTheShortestCommand) {
                                                              .edited = &scene,
                                                              .output = "a.png"});
   EXPECT_EQ(args, (std::vector<std::string>{"render", "--output=a.png"}));
+}
+
+TEST(CommandLine, AModelReplacesTheScene) {
+  const std::vector<std::string> args = render_command_args({.scene_argument = "spot",
+                                                             .model_argument = "models/bunny.obj",
+                                                             .render = {},
+                                                             .shadow = {},
+                                                             .ssao = {},
+                                                             .original = nullptr,
+                                                             .edited = nullptr,
+                                                             .output = "a.png"});
+  EXPECT_EQ(args,
+            (std::vector<std::string>{"render", "--model=models/bunny.obj", "--output=a.png"}));
 }
 
 TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
@@ -76,6 +90,7 @@ TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
   shadow.light_size = 0.1f + 0.2f;
 
   const std::vector<std::string> args = render_command_args({.scene_argument = "default",
+                                                             .model_argument = "",
                                                              .render = render,
                                                              .shadow = shadow,
                                                              .ssao = {},

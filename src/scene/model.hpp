@@ -1,0 +1,36 @@
+#pragma once
+// Triangle models read from files (OBJ, PLY, glTF 2.0, STL, OFF and the
+// other formats Open Asset Import Library reads), checked so that a bad
+// file ends in one error naming it rather than a crash or a broken image.
+#include <string>
+#include <vector>
+
+#include "scene/mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+struct Model {
+  std::string path;  // as given to load_model
+  // Object space, as the file places it (its node transforms applied).
+  // Vertex::material indexes `materials`.
+  TriangleMesh mesh;
+  std::vector<Material> materials;  // at least one
+  Bounds bounds;
+};
+
+// Reads a model and checks it: every index in range, every position
+// finite, at least one triangle. Normals missing from the file are
+// computed (smooth_normals.hpp, creases above 80 degrees kept); a file's
+// normal that is non-finite or zero becomes the area-weighted mean of its
+// triangles' normals.
+// Throws RuntimeError "<path>: <what is wrong>".
+Model load_model(const std::string& path);
+
+// Loads the model into `shape` (kind Model, file = path). With
+// `own_materials`, the model's materials are appended to the scene and
+// `shape.material` becomes the first of them; otherwise the whole model
+// takes `shape.material`. Throws as load_model does.
+void attach_model(Scene& scene, Shape& shape, const std::string& path, bool own_materials);
+
+}  // namespace penumbra
