@@ -12,6 +12,7 @@ namespace penumbra {
 
 struct RenderCommand {
   std::string scene_argument;  // as given to --scene
+  std::string light;           // as given to --light (empty: not given)
   RenderSettings render;
   ShadowSettings shadow;
   SsaoSettings ssao;

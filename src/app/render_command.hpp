@@ -11,6 +11,7 @@ namespace penumbra {
 
 struct RenderArgs {
   std::string scene = "default";
+  std::string light;  // --light: one light of this type alone (empty: the scene's lights)
   std::string output;
   bool verbose = false;
   RenderSettings render;

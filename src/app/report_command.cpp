@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/light_choice.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "io/image.hpp"
@@ -16,6 +17,7 @@ namespace fs = std::filesystem;
 void add_report_command_options(CLI::App& command, ReportArgs& args) {
   command.add_option("--scene", args.scene, "built-in scene (default, spot) or a .json scene file")
       ->capture_default_str();
+  add_light_choice_option(command, args.light);
   command.add_option("-o,--output", args.output, "folder for index.html and its images")
       ->required();
   command.add_flag("--quick", args.quick, "smaller images and fewer sweeps");
@@ -30,11 +32,15 @@ int run_report_command(const ReportArgs& args) {
   check_output_path(fs::is_directory(args.output, ec)
                         ? (fs::path(args.output) / "index.html").string()
                         : args.output);
-  const Scene scene = resolve_scene(args.scene);
+  Scene scene = resolve_scene(args.scene);
+  apply_light_choice(args.light, scene);
   auto context = gl::Context::create_headless();
-  const StudyResult result = write_study(
-      scene, {.scene_argument = args.scene, .output_dir = args.output, .quick = args.quick},
-      *context);
+  const StudyResult result = write_study(scene,
+                                         {.scene_argument = args.scene,
+                                          .light_choice = args.light,
+                                          .output_dir = args.output,
+                                          .quick = args.quick},
+                                         *context);
   std::printf("%s\n", result.index_path.c_str());
   if (result.failed > 0) {
     std::fprintf(stderr,

@@ -7,6 +7,7 @@ namespace penumbra {
 
 struct ReportArgs {
   std::string scene = "default";
+  std::string light;  // --light: one light of this type alone (empty: the scene's lights)
   std::string output;
   bool quick = false;
 };

@@ -13,6 +13,7 @@ namespace penumbra {
 
 struct ViewArgs {
   std::string scene = "default";
+  std::string light;  // --light: one light of this type alone (empty: the scene's lights)
   bool verbose = false;
   RenderSettings render;  // width and height: the 3D view's start size
   ShadowSettings shadow;

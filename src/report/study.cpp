@@ -77,6 +77,7 @@ class Study {
     HtmlFigure f;
     f.caption = caption;
     f.command = shell_command(render_command_args({.scene_argument = options_.scene_argument,
+                                                   .light = options_.light_choice,
                                                    .render = render,
                                                    .shadow = shadow,
                                                    .ssao = {},

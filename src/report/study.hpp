@@ -13,6 +13,7 @@ namespace penumbra {
 
 struct StudyOptions {
   std::string scene_argument = "default";  // as given on the command line
+  std::string light_choice;                // --light as given (empty: not given)
   std::string output_dir;
   bool quick = false;  // smaller images and fewer sweeps
 };

@@ -192,6 +192,7 @@ std::vector<std::string> render_command_for(const ViewerState& state, const Fram
                                             const std::string& output) {
   const Scene edited = shown_scene(state, frame);
   return render_command_args({.scene_argument = state.scene_argument,
+                              .light = state.light_choice,
                               .render = frame.render,
                               .shadow = frame.shadow,
                               .ssao = frame.ssao,

@@ -38,6 +38,7 @@ void expect_same_light(const Light& a, const Light& b) {
 TEST(CommandLine, DefaultsGiveTheShortestCommand) {
   const Scene scene = *builtin_scene("default");
   const std::vector<std::string> args = render_command_args({.scene_argument = "default",
+                                                             .light = {},
                                                              .render = {},
                                                              .shadow = {},
                                                              .ssao = {},
@@ -76,6 +77,7 @@ TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
   shadow.light_size = 0.1f + 0.2f;
 
   const std::vector<std::string> args = render_command_args({.scene_argument = "default",
+                                                             .light = {},
                                                              .render = render,
                                                              .shadow = shadow,
                                                              .ssao = {},

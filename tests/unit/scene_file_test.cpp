@@ -40,7 +40,7 @@ TEST(SceneFile, ErrorsNameTheKeyPath) {
       {R"({"lights": [{"type": "spot"}], "objects": [{"shape": "sphere", "radius": -1}]})",
        "bad.json: /objects/0/radius: must be between"},
       {R"({"lights": [{"type": "lamp"}], "objects": [{"shape": "box"}]})",
-       "bad.json: /lights/0/type: must be \"spot\" or \"directional\""},
+       "bad.json: /lights/0/type: must be \"spot\", \"directional\" or \"point\""},
       {R"({"lights": [{"type": "spot"}], "objects": [{"shape": "box", "size": [1, 2]}]})",
        "bad.json: /objects/0/size: expected an array of 3 numbers"},
       {R"({"lights": [{"type": "spot"}], "objects": [{"shape": "box", "size": [1, "x", 2]}]})",
