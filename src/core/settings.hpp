@@ -91,8 +91,9 @@ struct ShadowSettings {
   float filter_slope_bias = 0.25f;
   // Normal offset: the lookup moves this many texels along the surface normal.
   float normal_offset = 0.5f;
-  // Width of a spot light's source in world units (0: a point light, hard
-  // shadows), for pcss, --soft and the area-light reference.
+  // Width of a spot light's source in world units (0: a point, hard
+  // shadows), for pcss, --soft and the area-light reference; the diameter
+  // of a point light's spherical source.
   float light_size = 0.5f;
   // Angular diameter of a directional light's source in degrees (the sun
   // is about 0.53), for the same.
@@ -239,8 +240,9 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloa
     {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
      &ShadowSettings::normal_offset},
     {"light-size",
-     "width of a spot light's source in world units (0: point light), for pcss, --soft and "
-     "the area-light reference (a square facing the light's direction)",
+     "width of a spot light's source in world units (0: a point), for pcss, --soft and "
+     "the area-light reference (a square facing the light's direction); a point light's "
+     "source is a sphere of this diameter",
      0.0f, 100.0f, &ShadowSettings::light_size},
     {"sun-angle",
      "angular diameter of a directional light's source in degrees (0: a point); the reference "

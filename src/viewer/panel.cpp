@@ -207,6 +207,10 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
       if (ImGui::Checkbox(label.c_str(), &value)) set_flag(state, p.name, value);
       tooltip(p.help);
     }
+    for (const auto& p : kShadowSwitchParams) {
+      choice_combo(state, std::string(p.name).c_str(), state.shadow.*(p.field), kOnOffNames,
+                   p.help);
+    }
     int_sliders(state, state.shadow, kShadowIntParams, status.max_texture_size, false);
     float_sliders(state, state.shadow, kShadowFloatParams);
   }

@@ -16,6 +16,22 @@ const char* kValid = R"({
               {"shape": "sphere", "radius": 1, "position": [0, 1, 0], "material": "red"}]
 })";
 
+TEST(SceneFile, ParsesAPointLight) {
+  Scene s = parse_scene_json(R"({"lights": [{"type": "point", "position": [1, 2, 3],
+                                            "intensity": 5}],
+                                 "objects": [{"shape": "plane", "size": [4, 0, 4]}]})",
+                             "point.json");
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.lights[0].type, LightType::Point);
+  EXPECT_EQ(s.lights[0].position, glm::vec3(1.0f, 2.0f, 3.0f));
+  EXPECT_FLOAT_EQ(s.lights[0].intensity, 5.0f);
+  // A point light shines every way: a direction is an unknown key.
+  EXPECT_THROW(parse_scene_json(R"({"lights": [{"type": "point", "direction": [0, -1, 0]}],
+                                    "objects": []})",
+                                "point.json"),
+               RuntimeError);
+}
+
 TEST(SceneFile, ParsesEveryKind) {
   Scene s = parse_scene_json(kValid, "test.json");
   ASSERT_EQ(s.lights.size(), 2u);
