@@ -39,7 +39,13 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   program_.use();
+  // The albedo target is sRGB8: with GL_FRAMEBUFFER_SRGB on, the linear
+  // albedo the shader writes is encoded on the way in, and sampling decodes
+  // it back (OpenGL 4.5, section 17.3.7). Off, the linear value would be
+  // stored as if encoded and read back as albedo^2.2.
+  glEnable(GL_FRAMEBUFFER_SRGB);
   scene.draw();
+  glDisable(GL_FRAMEBUFFER_SRGB);
   glPopDebugGroup();
 }
 
