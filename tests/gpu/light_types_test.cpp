@@ -114,6 +114,48 @@ TEST_P(LightTypeTest, ShadowUnderTheCasterIsDarkerThanTheOpenGround) {
   }
 }
 
+// A point light's irradiance falls off as I / d^2: the light it adds to a
+// matte ground (the image with the light on minus the one with it off) is
+// albedo * I * cos(theta) / d^2 at every pixel (to the 8-bit sRGB storage of
+// the albedo 0.7: 1e-4).
+TEST_F(GpuTest, PointLightFallsOffWithTheInverseSquareOfTheDistance) {
+  Scene scene = box_above_ground(LightType::Point);
+  scene.shapes.pop_back();  // the ground alone
+  const float albedo = scene.materials[0].albedo.r;
+  const Light light = scene.lights[0];
+  Renderer renderer(scene);
+  RenderSettings rs;
+  rs.width = 96;
+  rs.height = 96;
+  ShadowSettings shadow;
+  shadow.technique = Technique::None;
+  SsaoSettings ssao;
+  ssao.enabled = false;
+  renderer.render(rs, shadow, ssao);
+  const Image lit = renderer.read_view();
+  const SurfacePoints surfaces = renderer.read_surfaces();
+  Light off = light;
+  off.intensity = 0.0f;
+  renderer.set_lights({off});
+  renderer.render(rs, shadow, ssao);
+  const Image unlit = renderer.read_view();
+  double worst = 0.0;
+  int pixels = 0;
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    if (!surfaces.covered[i]) continue;
+    const glm::vec3 d = light.position - surfaces.position[i];
+    const double cos_theta = glm::normalize(d).y;
+    const double expected = albedo * light.intensity * cos_theta / glm::dot(d, d);
+    const double added = double(lit.rgba[4 * i]) - unlit.rgba[4 * i];
+    worst = std::max(worst, std::abs(added - expected) / expected);
+    ++pixels;
+  }
+  std::printf("inverse-square fall-off: largest relative error %.2e over %d pixels\n", worst,
+              pixels);
+  ASSERT_GT(pixels, rs.width * rs.height / 2);
+  EXPECT_LT(worst, 1e-3);
+}
+
 std::vector<Combination> combinations() {
   std::vector<Combination> all;
   for (LightType light : {LightType::Point, LightType::Directional}) {
