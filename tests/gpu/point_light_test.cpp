@@ -231,5 +231,47 @@ TEST_F(GpuTest, PointLightShadowIsContinuousAcrossCubeFaceEdges) {
   }
 }
 
+// The shadow-map view of a point light: its six faces tiled three to a
+// row, +x -x +y on top, -y +z -z below, each tile the face's map as it is.
+TEST_F(GpuTest, ShadowMapViewTilesTheCubeFaces) {
+  Renderer renderer(room_with_caster(cube_face_axis(3)));
+  RenderSettings rs;
+  rs.width = 64;
+  rs.height = 64;
+  rs.view = View::ShadowMap;
+  ShadowSettings shadow;
+  shadow.map_size = 48;
+  renderer.render(rs, shadow);
+  const Image tiled = renderer.read_view();
+  const int n = shadow.map_size;
+  ASSERT_EQ(tiled.width, 3 * n);
+  ASSERT_EQ(tiled.height, 2 * n);
+  for (int face = 0; face < kCubeFaces; ++face) {
+    const Image map = renderer.read_shadow_view(renderer.first_view(0) + face);
+    const int x0 = (face % 3) * n, y0 = (face / 3) * n;
+    float worst = 0.0f;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        worst = std::max(worst, std::abs(tiled.pixel(x0 + x, y0 + y)[0] - map.pixel(x, y)[0]));
+    EXPECT_EQ(worst, 0.0f) << "face " << face;
+  }
+  // The caster sits in the -y face: only that tile holds depths nearer
+  // than the walls (every wall is at least kRoom away; the caster's
+  // nearest point kCasterAt - kCasterHalf).
+  for (int face = 0; face < kCubeFaces; ++face) {
+    const int x0 = (face % 3) * n, y0 = (face / 3) * n;
+    float nearest = 1.0f;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) nearest = std::min(nearest, tiled.pixel(x0 + x, y0 + y)[0]);
+    const LightView& v = renderer.shadow_views(0).views[static_cast<std::size_t>(face)];
+    const float nearest_distance = v.z0 + nearest * (v.z1 - v.z0);
+    if (face == 3) {
+      EXPECT_NEAR(nearest_distance, kCasterAt - kCasterHalf, 0.1f) << "the caster, in -y";
+    } else {
+      EXPECT_GT(nearest_distance, kRoom - 0.1f) << "face " << face << " sees only walls";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace penumbra
