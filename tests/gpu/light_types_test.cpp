@@ -50,8 +50,9 @@ Scene box_above_ground(LightType type) {
 // Whether the segment from p towards the light passes through the box
 // grown by `grow`.
 bool behind_box(const Light& light, const glm::vec3& p, float grow) {
-  const glm::vec3 to_light =
-      light.type == LightType::Point ? light.position - p : -8.0f * glm::normalize(light.direction);
+  const glm::vec3 to_light = light.type != LightType::Directional
+                                 ? light.position - p
+                                 : -8.0f * glm::normalize(light.direction);
   const glm::vec3 lo = kBoxCenter - (kBoxHalf + grow), hi = kBoxCenter + (kBoxHalf + grow);
   float enter = 0.0f, leave = 1.0f;
   for (int a = 0; a < 3; ++a) {
@@ -154,6 +155,68 @@ TEST_F(GpuTest, PointLightFallsOffWithTheInverseSquareOfTheDistance) {
               pixels);
   ASSERT_GT(pixels, rs.width * rs.height / 2);
   EXPECT_LT(worst, 1e-3);
+}
+
+// Several lights of different types: each reads its own views (a point
+// light's six, a sun's cascades, a spot light's one, numbered across the
+// lights), and its shadow falls where its own geometry puts it.
+TEST_F(GpuTest, SeveralLightsEachReadTheirOwnViews) {
+  Scene scene = box_above_ground(LightType::Point);
+  Light sun = scene.lights[0];
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, 0.2f));
+  Light spot = scene.lights[0];
+  spot.type = LightType::Spot;
+  spot.position = {-1.0f, 5.0f, -1.5f};
+  spot.direction = glm::normalize(glm::vec3(0.0f) - spot.position);
+  spot.cone_degrees = 50.0f;
+  scene.lights.push_back(sun);
+  scene.lights.push_back(spot);
+  Renderer renderer(scene);
+  ShadowSettings shadow;
+  shadow.technique = Technique::Pcf;
+  shadow.map_size = 256;
+  shadow.cascades = 2;
+  RenderSettings rs;
+  rs.width = 128;
+  rs.height = 128;
+  rs.view = View::Final;
+  renderer.render(rs, shadow);
+  EXPECT_EQ(renderer.first_view(0), 0);
+  EXPECT_EQ(renderer.first_view(1), 6);
+  EXPECT_EQ(renderer.first_view(2), 8);
+  EXPECT_EQ(renderer.shadow_views(2).views.size(), 1u);
+  rs.view = View::Shadow;
+  for (int i = 0; i < 3; ++i) {
+    rs.light_index = i;
+    renderer.render(rs, shadow);
+    const Image image = renderer.read_view();
+    const SurfacePoints surfaces = renderer.read_surfaces();
+    const Light& light = scene.lights[static_cast<std::size_t>(i)];
+    int umbra = 0, umbra_dark = 0, lit = 0, lit_dark = 0;
+    for (std::size_t p = 0; p < surfaces.size(); ++p) {
+      if (!surfaces.covered[p] || surfaces.position[p].y > 1e-3f) continue;
+      const glm::vec3 q = surfaces.position[p];
+      if (light.type == LightType::Spot &&
+          glm::dot(glm::normalize(q - light.position), light.direction) <
+              std::cos(glm::radians(light.cone_degrees))) {
+        continue;  // outside the spot's cone: no shadow map there
+      }
+      const float value = image.rgba[4 * p];
+      if (behind_box(light, q, -0.2f)) {
+        ++umbra;
+        umbra_dark += value < 0.5f;
+      } else if (!behind_box(light, q, 0.6f)) {
+        ++lit;
+        lit_dark += value < 0.9f;
+      }
+    }
+    std::printf("light %d: umbra %d/%d dark, open ground %d/%d dark\n", i, umbra_dark, umbra,
+                lit_dark, lit);
+    EXPECT_GT(umbra, 20) << "light " << i;
+    EXPECT_EQ(umbra_dark, umbra) << "light " << i;
+    EXPECT_LE(lit_dark, lit / 1000) << "light " << i;
+  }
 }
 
 std::vector<Combination> combinations() {
