@@ -6,7 +6,8 @@
 //
 // Defines: AXIS (0: along x, 1: along y), RADIUS (W), IMAGE_FORMAT.
 // Coordinates clamp to the border texel: nothing from outside the map is
-// mixed in.
+// mixed in. Each layer of the array (one shadow view) is filtered on its
+// own: workgroup z is the layer, so no view bleeds into another.
 #include "../shared/bindings.h"
 
 #define TILE_ALONG 64
@@ -19,8 +20,8 @@ layout(local_size_x = TILE_ALONG, local_size_y = TILE_ACROSS) in;
 layout(local_size_x = TILE_ACROSS, local_size_y = TILE_ALONG) in;
 #endif
 
-layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2D source;
-layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2D target;
+layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray source;
+layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2DArray target;
 layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer Weights {
   float weights[];  // 2 RADIUS + 1 of them, summing to 1
 };
@@ -29,7 +30,8 @@ layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer Weights {
 shared vec4 tile[TILE_ACROSS][APRON];
 
 void main() {
-  const ivec2 size = textureSize(source, 0);
+  const ivec2 size = textureSize(source, 0).xy;
+  const int layer = int(gl_WorkGroupID.z);
 #if AXIS == 0
   const ivec2 local = ivec2(gl_LocalInvocationID.xy);     // (along, across)
   const ivec2 group = ivec2(gl_WorkGroupID.xy) * ivec2(TILE_ALONG, TILE_ACROSS);
@@ -46,9 +48,9 @@ void main() {
   for (int i = local.x; i < APRON; i += TILE_ALONG) {
     int a = clamp(group.x + i - RADIUS, 0, along_size - 1);
 #if AXIS == 0
-    tile[local.y][i] = texelFetch(source, ivec2(a, across), 0);
+    tile[local.y][i] = texelFetch(source, ivec3(a, across, layer), 0);
 #else
-    tile[local.y][i] = texelFetch(source, ivec2(across, a), 0);
+    tile[local.y][i] = texelFetch(source, ivec3(across, a, layer), 0);
 #endif
   }
   barrier();
@@ -58,8 +60,8 @@ void main() {
   vec4 sum = vec4(0.0);
   for (int k = 0; k <= 2 * RADIUS; ++k) sum += weights[k] * tile[local.y][local.x + k];
 #if AXIS == 0
-  imageStore(target, ivec2(along, across), sum);
+  imageStore(target, ivec3(along, across, layer), sum);
 #else
-  imageStore(target, ivec2(across, along), sum);
+  imageStore(target, ivec3(across, along, layer), sum);
 #endif
 }

@@ -2,15 +2,16 @@
 // representation. REPRESENTATION is the TECHNIQUE_* of vsm, esm, msm or
 // msm16; MSM_QUANTIZED (0/1) whether the moments are stored in the
 // quantization basis (see uses_quantized_moments()); IMAGE_FORMAT the
-// matching image format.
+// matching image format. Every layer of the depth-map array (one per
+// shadow view) at once: workgroup z is the layer.
 #include "../shared/bindings.h"
 #include "../shadow/esm.glsl"
 #include "../shadow/msm.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2D depth_map;
-layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2D representation;
+layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray depth_map;
+layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2DArray representation;
 layout(location = 0) uniform float u_esm_c;
 
 vec4 represent(float z) {
@@ -30,7 +31,7 @@ vec4 represent(float z) {
 }
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, textureSize(depth_map, 0)))) return;
+  ivec3 p = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(p.xy, textureSize(depth_map, 0).xy))) return;
   imageStore(representation, p, represent(texelFetch(depth_map, p, 0).r));
 }

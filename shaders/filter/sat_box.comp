@@ -6,13 +6,13 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(binding = UNIT_COMPUTE_INPUT) uniform usampler2D table;
-layout(rgba32f, binding = IMAGE_OUTPUT) uniform writeonly image2D averages;
+layout(binding = UNIT_COMPUTE_INPUT) uniform usampler2DArray table;
+layout(rgba32f, binding = IMAGE_OUTPUT) uniform writeonly image2DArray averages;
 layout(location = 0) uniform int u_radius;
 layout(location = 1) uniform float u_scale;
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, textureSize(table, 0)))) return;
-  imageStore(averages, p, sat_box_average(table, p, u_radius, u_scale));
+  ivec3 p = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(p.xy, textureSize(table, 0).xy))) return;
+  imageStore(averages, p, sat_box_average(table, p.z, p.xy, u_radius, u_scale));
 }

@@ -8,6 +8,7 @@
 // SOFT_SHADOWS (0/1: penumbra-sized filters from the summed-area table).
 #include "../common/uniforms.glsl"
 #include "../shadow/lookup.glsl"
+#include "../shadow/view_select.glsl"
 #include "../shadow/hard.glsl"
 #include "../shadow/vsm.glsl"
 #include "../shadow/esm.glsl"
@@ -25,15 +26,17 @@ layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gbuffer_albedo;
 layout(binding = UNIT_GBUFFER_SPECULAR) uniform sampler2D gbuffer_specular;
 // Read only when frame.options.w is 1 (SSAO on).
 layout(binding = UNIT_AMBIENT_OCCLUSION) uniform sampler2D ambient_occlusion;
-layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2D shadow_depth[MAX_LIGHTS];
+// Every shadow view's map is one layer of these arrays (the layer is the
+// view's index in the shadow-views block).
+layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2DArray shadow_depth;
 // The same depth maps through a comparison sampler: the hardware's 2x2
 // bilinear percentage-closer test.
-layout(binding = UNIT_SHADOW_COMPARE) uniform sampler2DShadow shadow_compare[MAX_LIGHTS];
+layout(binding = UNIT_SHADOW_COMPARE) uniform sampler2DArrayShadow shadow_compare;
 #if SHADOW_FILTER == FILTER_SAT
-layout(binding = UNIT_SHADOW_FILTERED) uniform usampler2D shadow_sat[MAX_LIGHTS];
+layout(binding = UNIT_SHADOW_FILTERED) uniform usampler2DArray shadow_sat;
 #else
 // The technique's representation, filtered or not; sampled bilinearly.
-layout(binding = UNIT_SHADOW_FILTERED) uniform sampler2D shadow_filtered[MAX_LIGHTS];
+layout(binding = UNIT_SHADOW_FILTERED) uniform sampler2DArray shadow_filtered;
 #endif
 
 in vec2 v_uv;
@@ -46,14 +49,14 @@ vec3 world_position(ivec2 pixel, float depth) {
 }
 
 #if SHADOW_TECHNIQUE >= TECHNIQUE_VSM
-// The light's filtered representation at the lookup point.
-vec4 filtered_map(int i, vec2 uv) {
+// View v's filtered representation at the lookup point.
+vec4 filtered_map(int v, vec2 uv) {
 #if SHADOW_FILTER == FILTER_SAT
-  ivec2 size = textureSize(shadow_sat[i], 0);
+  ivec2 size = textureSize(shadow_sat, 0).xy;
   ivec2 center = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
-  return sat_box_average(shadow_sat[i], center, shadow_params.blur_radius, shadow_params.sat_scale);
+  return sat_box_average(shadow_sat, v, center, shadow_params.blur_radius, shadow_params.sat_scale);
 #else
-  return texture(shadow_filtered[i], uv);
+  return texture(shadow_filtered, vec3(uv, float(v)));
 #endif
 }
 
@@ -87,11 +90,11 @@ float filtered_mean_depth(vec4 m) {
 #if SHADOW_TECHNIQUE >= TECHNIQUE_VSM && SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
 // Box average of radius r (fractional: the two neighbouring integer boxes,
 // blended, so the width varies smoothly) from the summed-area table.
-vec4 sat_box_fractional(int i, ivec2 center, float r) {
+vec4 sat_box_fractional(int v, ivec2 center, float r) {
   float lo = floor(r);
-  vec4 a = sat_box_average(shadow_sat[i], center, int(lo), shadow_params.sat_scale);
+  vec4 a = sat_box_average(shadow_sat, v, center, int(lo), shadow_params.sat_scale);
   if (r == lo) return a;
-  vec4 b = sat_box_average(shadow_sat[i], center, int(lo) + 1, shadow_params.sat_scale);
+  vec4 b = sat_box_average(shadow_sat, v, center, int(lo) + 1, shadow_params.sat_scale);
   return mix(a, b, r - lo);
 }
 
@@ -104,22 +107,22 @@ vec4 sat_box_fractional(int i, ivec2 center, float r) {
 // z_blocker = (mean - (1 - G) z) / G. Its penumbra sets the filter radius
 // (at least the fixed --blur), read with a constant 8 fetches however
 // wide it is.
-float soft_moment_shadow(int i, ShadowLookup s, float z) {
-  GpuLight light = lights[i];
-  ivec2 size = textureSize(shadow_sat[i], 0);
+float soft_moment_shadow(int v, ShadowLookup s, float z) {
+  GpuShadowView view = shadow_views[v];
+  ivec2 size = textureSize(shadow_sat, 0).xy;
   ivec2 center = clamp(ivec2(s.uv * vec2(size)), ivec2(0), size - 1);
-  float d_receiver = linear_depth_of(light, s.depth);
+  float d_receiver = linear_depth_of(view, s.depth);
   float fixed_radius = float(shadow_params.blur_radius);
-  float search_radius = min(max(0.5 * blocker_search_width(light, d_receiver), fixed_radius),
+  float search_radius = min(max(0.5 * blocker_search_width(view, d_receiver), fixed_radius),
                             float(MAX_SOFT_RADIUS));
-  vec4 region = sat_box_fractional(i, center, search_radius);
+  vec4 region = sat_box_fractional(v, center, search_radius);
   float occluded = 1.0 - filtered_lit_fraction(region, z);
   if (occluded <= 0.0) return 1.0;  // no blockers: lit
   float z_blocker = clamp((filtered_mean_depth(region) - (1.0 - occluded) * z) / occluded, 0.0, z);
-  float penumbra = penumbra_world_width(light, d_receiver, linear_depth_of(light, z_blocker)) /
-                   shadow_texel_world(light, d_receiver);
+  float penumbra = penumbra_world_width(view, d_receiver, linear_depth_of(view, z_blocker)) /
+                   shadow_texel_world(view, d_receiver);
   float radius = min(max(0.5 * penumbra, fixed_radius), float(MAX_SOFT_RADIUS));
-  return filtered_lit_fraction(sat_box_fractional(i, center, radius), z);
+  return filtered_lit_fraction(sat_box_fractional(v, center, radius), z);
 }
 #endif
 
@@ -141,23 +144,24 @@ struct ReceiverPlane {
   float bias;
 };
 
-// The biased test of one texel against the receiver's plane there.
-float depth_test(int i, ivec2 texel, ReceiverPlane plane) {
-  vec2 uv = (vec2(texel) + 0.5) / vec2(textureSize(shadow_depth[i], 0));
-  float z = receiver_plane_depth(lights[i], plane.world, plane.normal, uv, plane.depth) - plane.bias;
-  return z <= texelFetch(shadow_depth[i], texel, 0).r ? 1.0 : 0.0;
+// The biased test of one texel of view v against the receiver's plane there.
+float depth_test(int v, ivec2 texel, ReceiverPlane plane) {
+  vec2 uv = (vec2(texel) + 0.5) / vec2(textureSize(shadow_depth, 0).xy);
+  float z =
+      receiver_plane_depth(shadow_views[v], plane.world, plane.normal, uv, plane.depth) - plane.bias;
+  return z <= texelFetch(shadow_depth, ivec3(texel, v), 0).r ? 1.0 : 0.0;
 }
 
-float filtered_hard_reference(int i, vec2 uv, ReceiverPlane z) {
+float filtered_hard_reference(int v, vec2 uv, ReceiverPlane z) {
   const int r = shadow_params.blur_radius;
-  ivec2 size = textureSize(shadow_depth[i], 0);
+  ivec2 size = textureSize(shadow_depth, 0).xy;
 #if SHADOW_FILTER == FILTER_SAT
   // The box of sat_box_average(): centred on the texel under uv, cropped.
   ivec2 center = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
   ivec2 lo = max(center - r, ivec2(0)), hi = min(center + r, size - 1);
   float sum = 0.0;
   for (int y = lo.y; y <= hi.y; ++y)
-    for (int x = lo.x; x <= hi.x; ++x) sum += depth_test(i, ivec2(x, y), z);
+    for (int x = lo.x; x <= hi.x; ++x) sum += depth_test(v, ivec2(x, y), z);
   return sum / float((hi.x - lo.x + 1) * (hi.y - lo.y + 1));
 #else
   // The blurred map (edges clamped), read bilinearly at uv.
@@ -171,7 +175,7 @@ float filtered_hard_reference(int i, vec2 uv, ReceiverPlane z) {
     for (int y = -r; y <= r; ++y)
       for (int x = -r; x <= r; ++x)
         sum += reference_weights[x + r] * reference_weights[y + r] *
-               depth_test(i, clamp(center + ivec2(x, y), ivec2(0), size - 1), z);
+               depth_test(v, clamp(center + ivec2(x, y), ivec2(0), size - 1), z);
     corners[c] = sum;
   }
   return mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
@@ -181,80 +185,111 @@ float filtered_hard_reference(int i, vec2 uv, ReceiverPlane z) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
 // PCF, or for one sample the hardware's 2x2 bilinear compare; width 0 is
 // the plain test.
-float pcf_lit_fraction(int i, ShadowLookup s, float z, vec2 gradient, float width, int samples,
+float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, float width, int samples,
                        vec2 rotation) {
-  if (width <= 0.0) return shadow_hard(shadow_depth[i], s.uv, z, 0.0);
-  if (samples == 1) return texture(shadow_compare[i], vec3(s.uv, z));
-  return shadow_pcf(shadow_depth[i], s.uv, z, gradient, width, samples, rotation);
+  if (width <= 0.0) return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
+  if (samples == 1) return texture(shadow_compare, vec4(s.uv, float(v), z));
+  return shadow_pcf(shadow_depth, v, s.uv, z, gradient, width, samples, rotation);
 }
 #endif
 
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCSS
 // PCSS (Fernando 2005): blocker search, penumbra estimate, PCF over it.
-float pcss_lit_fraction(int i, ShadowLookup s, float z, vec2 gradient, vec2 rotation) {
-  GpuLight light = lights[i];
-  ivec2 size = textureSize(shadow_depth[i], 0);
+float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, vec2 rotation) {
+  GpuShadowView view = shadow_views[v];
+  ivec2 size = textureSize(shadow_depth, 0).xy;
   vec2 center = s.uv * vec2(size);
-  float d_receiver = linear_depth_of(light, s.depth);
-  float search = min(blocker_search_width(light, d_receiver), float(MAX_PCF_WIDTH));
+  float d_receiver = linear_depth_of(view, s.depth);
+  float search = min(blocker_search_width(view, d_receiver), float(MAX_PCF_WIDTH));
   float blockers = 0.0, blocker_depth = 0.0;
   for (int k = 0; k < shadow_params.pcss_blocker_samples; ++k) {
     vec2 offset = rotated_poisson(k, rotation) * (0.5 * search);
     ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);
-    float occluder = texelFetch(shadow_depth[i], texel, 0).r;
+    float occluder = texelFetch(shadow_depth, ivec3(texel, v), 0).r;
     if (occluder < z + dot(gradient, offset)) {
       blockers += 1.0;
       blocker_depth += occluder;
     }
   }
   if (blockers == 0.0) return 1.0;  // nothing between the receiver and the light
-  float d_blocker = linear_depth_of(light, blocker_depth / blockers);
-  float width = penumbra_world_width(light, d_receiver, d_blocker) /
-                shadow_texel_world(light, d_receiver);
-  return pcf_lit_fraction(i, s, z, gradient, min(width, float(MAX_PCF_WIDTH)),
+  float d_blocker = linear_depth_of(view, blocker_depth / blockers);
+  float width =
+      penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver);
+  return pcf_lit_fraction(v, s, z, gradient, min(width, float(MAX_PCF_WIDTH)),
                           shadow_params.pcss_filter_samples, rotation);
 }
 #endif
 
-// Fraction of light i's light that reaches the point (1 = lit). `rotation`
-// is the pixel's (cos, sin) rotation of the sample set.
-float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotation) {
-#if SHADOW_TECHNIQUE == TECHNIQUE_NONE
-  return 1.0;
-#else
-  GpuLight light = lights[i];
-  ShadowLookup s = shadow_lookup(light, world, normal, shadow_params.normal_offset);
+// Fraction of light i's light that reaches the point (1 = lit) according
+// to shadow view v. `rotation` is the pixel's (cos, sin) rotation of the
+// sample set.
+float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool reference,
+                         vec2 rotation) {
+  GpuShadowView view = shadow_views[v];
+  ShadowLookup s = shadow_lookup(view, world, normal, shadow_params.normal_offset);
   if (!s.inside) return 1.0;
-  float bias = shadow_bias(light, shadow_params, s, normal, direction_to_light(light, world),
+  float bias = shadow_bias(view, shadow_params, s, normal, direction_to_light(light, world),
                            SHADOW_TECHNIQUE >= TECHNIQUE_VSM && !reference
                                ? shadow_params.blur_radius : 0);
   if (reference) {
-    return filtered_hard_reference(i, s.uv, ReceiverPlane(s.position, normal, s.depth, bias));
+    return filtered_hard_reference(v, s.uv, ReceiverPlane(s.position, normal, s.depth, bias));
   }
   float z = s.depth - bias;
 #if SHADOW_TECHNIQUE == TECHNIQUE_HARD
-  return shadow_hard(shadow_depth[i], s.uv, z, 0.0);
+  return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
-  vec2 gradient = receiver_depth_gradient(light, s, normal, shadow_params.max_slope);
+  vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCF
-  return pcf_lit_fraction(i, s, z, gradient, shadow_params.pcf_width, shadow_params.pcf_samples,
+  return pcf_lit_fraction(v, s, z, gradient, shadow_params.pcf_width, shadow_params.pcf_samples,
                           rotation);
 #else
-  return pcss_lit_fraction(i, s, z, gradient, rotation);
+  return pcss_lit_fraction(v, s, z, gradient, rotation);
 #endif
-#else
+#elif SHADOW_TECHNIQUE >= TECHNIQUE_VSM
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
-  float lit = soft_moment_shadow(i, s, z);
+  float lit = soft_moment_shadow(v, s, z);
 #else
-  float lit = filtered_lit_fraction(filtered_map(i, s.uv), z);
+  float lit = filtered_lit_fraction(filtered_map(v, s.uv), z);
 #endif
 #if SHADOW_TECHNIQUE == TECHNIQUE_ESM
   return lit;
 #else
   return reduce_light_bleeding(lit, shadow_params.bleed_reduction);
 #endif
+#else
+  return 1.0;
 #endif
+}
+
+// The point's depth along the camera's view direction (selects cascades).
+float camera_depth(vec3 world) {
+  return -(frame.view * vec4(world, 1.0)).z;
+}
+
+// Fraction of light i's light that reaches the point (1 = lit): from the
+// shadow view the point falls in, blended with the next cascade near the
+// end of a directional light's cascade.
+float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotation) {
+#if SHADOW_TECHNIQUE == TECHNIQUE_NONE
+  return 1.0;
+#else
+  GpuLight light = lights[i];
+  ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
+  float lit = view_shadow_factor(selected.view, light, world, normal, reference, rotation);
+  if (selected.blend > 0.0) {
+    float next = view_shadow_factor(selected.next, light, world, normal, reference, rotation);
+    lit = mix(lit, next, selected.blend);
+  }
+  return lit;
 #endif
+}
+
+// Distinct colours for the shadow views of one light (the cascades view).
+vec3 view_colour(int k) {
+  const vec3 palette[MAX_CASCADES + 2] =
+      vec3[](vec3(0.9, 0.25, 0.2), vec3(0.25, 0.8, 0.25), vec3(0.2, 0.4, 0.95),
+             vec3(0.95, 0.85, 0.2), vec3(0.8, 0.3, 0.85), vec3(0.2, 0.85, 0.85));
+  return palette[clamp(k, 0, MAX_CASCADES + 1)];
 }
 
 // Light arriving from light i (irradiance on a surface facing it), and the
@@ -269,6 +304,8 @@ vec3 incident_light(int i, vec3 world, out vec3 to_light) {
   vec3 d = light.position_type.xyz - world;
   float distance2 = max(dot(d, d), 1e-8);
   to_light = d * inversesqrt(distance2);
+  // Inverse-square fall-off of a point source's intensity.
+  if (int(light.position_type.w) == LIGHT_POINT) return radiance / distance2;
   float cos_axis = dot(-to_light, light.direction_cos_outer.xyz);
   float cone = smoothstep(light.direction_cos_outer.w, light.radiance_cos_inner.w, cos_axis);
   return radiance * cone / distance2;
@@ -302,6 +339,20 @@ void main() {
   float ao = frame.options.w != 0 ? texelFetch(ambient_occlusion, pixel, 0).r : 1.0;
   if (view == VIEW_AO) {
     out_color = vec4(vec3(ao), 1.0);
+    return;
+  }
+  if (view == VIEW_CASCADES) {
+    // The shadow view (cascade or cube face) the shadow of the chosen light
+    // reads here, as a colour; the blend band towards the next cascade
+    // mixes in its colour.
+    GpuLight light = lights[frame.options.z];
+    ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
+    vec3 colour = mix(view_colour(selected.view - light.views.x),
+                      view_colour(selected.next - light.views.x), selected.blend);
+    // Black where the point lies outside the view it selected: no shadow
+    // map covers it there.
+    bool inside = shadow_lookup(shadow_views[selected.view], world, n, 0.0).inside;
+    out_color = vec4(inside ? colour : vec3(0.0), 1.0);
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {

@@ -1,44 +1,58 @@
-// Where a world-space point falls in a light's shadow map, and how much
-// bias its depth comparison needs.
+// Where a world-space point falls in a shadow view's map, and how much
+// bias its depth comparison needs. A light's views (src/shadow/
+// shadow_views.hpp) are layers of the shadow-map arrays; everything here
+// works on one view.
+#pragma once
 
 struct ShadowLookup {
   vec3 position;  // the looked-up point: the surface point moved by the normal offset
   vec2 uv;        // shadow-map coordinates, in [0, 1] inside the map
-  float depth;  // receiver's relative depth z-bar
-  float texel;  // world size of one shadow-map texel at the receiver
-  bool inside;  // false outside the light's frustum: treated as lit
+  float depth;    // receiver's relative depth z-bar
+  float texel;    // world size of one shadow-map texel at the receiver
+  bool inside;    // false outside the view's frustum: treated as lit
 };
 
-float light_linear_depth(GpuLight light, vec3 world) {
-  return -(light.view * vec4(world, 1.0)).z;
+// The view's depth z of a view-space point: the distance along -z, or the
+// distance from the eye for radial depth (point lights).
+float view_space_depth(GpuShadowView view, vec3 view_position) {
+  return view.radial_depth != 0 ? length(view_position) : -view_position.z;
+}
+
+float light_linear_depth(GpuShadowView view, vec3 world) {
+  return view_space_depth(view, (view.view * vec4(world, 1.0)).xyz);
+}
+
+float relative_depth_of(GpuShadowView view, float z) {
+  return (z - view.depth_range.x) / (view.depth_range.y - view.depth_range.x);
 }
 
 // World size of one texel where the point is: grows with depth for a
-// perspective (spot) light, constant for an orthographic (directional) one.
-float shadow_texel_world(GpuLight light, float linear_depth) {
-  return int(light.position_type.w) == LIGHT_SPOT ? light.depth_range.z * linear_depth
-                                                  : light.depth_range.z;
+// perspective view (for radial depth the distance bounds the axial depth
+// from above, so the size is not underestimated), constant for an
+// orthographic one.
+float shadow_texel_world(GpuShadowView view, float linear_depth) {
+  return view.perspective != 0 ? view.depth_range.z * linear_depth : view.depth_range.z;
 }
 
 // Unit direction from the point towards the light.
 vec3 direction_to_light(GpuLight light, vec3 world) {
-  return int(light.position_type.w) == LIGHT_SPOT ? normalize(light.position_type.xyz - world)
-                                                  : -light.direction_cos_outer.xyz;
+  return int(light.position_type.w) == LIGHT_DIRECTIONAL ? -light.direction_cos_outer.xyz
+                                                         : normalize(light.position_type.xyz - world);
 }
 
 // Projects the point after moving it `normal_offset` texels along its
 // normal (normal-offset shadows: the shift scales with the texel size, so
 // it does not depend on the map's resolution).
-ShadowLookup shadow_lookup(GpuLight light, vec3 world, vec3 normal, float normal_offset) {
-  float texel = shadow_texel_world(light, light_linear_depth(light, world));
+ShadowLookup shadow_lookup(GpuShadowView view, vec3 world, vec3 normal, float normal_offset) {
+  float texel = shadow_texel_world(view, light_linear_depth(view, world));
   vec3 p = world + normal * (normal_offset * texel);
-  vec4 clip = light.view_projection * vec4(p, 1.0);
+  vec4 clip = view.view_projection * vec4(p, 1.0);
   ShadowLookup s;
   s.position = p;
   s.uv = clip.xy / clip.w * 0.5 + 0.5;
-  float z = light_linear_depth(light, p);
-  s.depth = (z - light.depth_range.x) / (light.depth_range.y - light.depth_range.x);
-  s.texel = shadow_texel_world(light, z);
+  float z = light_linear_depth(view, p);
+  s.depth = relative_depth_of(view, z);
+  s.texel = shadow_texel_world(view, z);
   s.inside = clip.w > 0.0 && all(greaterThanEqual(s.uv, vec2(0.0))) &&
              all(lessThanEqual(s.uv, vec2(1.0)));
   return s;
@@ -52,11 +66,11 @@ ShadowLookup shadow_lookup(GpuLight light, vec3 world, vec3 normal, float normal
 // +-W texels of that slope; the filtered techniques compare against the
 // whole spread, so their slope term grows by filter_slope_bias per texel
 // of radius (W = 0 for the techniques that test single texels).
-float shadow_bias(GpuLight light, GpuShadow params, ShadowLookup s, vec3 normal, vec3 to_light,
-                  int filter_radius) {
+float shadow_bias(GpuShadowView view, GpuShadow params, ShadowLookup s, vec3 normal,
+                  vec3 to_light, int filter_radius) {
   float cos_theta = clamp(abs(dot(normal, to_light)), 1e-4, 1.0);
   float tan_theta = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, params.max_slope);
-  float depth_span = light.depth_range.y - light.depth_range.x;
+  float depth_span = view.depth_range.y - view.depth_range.x;
   float slope_texels = params.slope_bias + params.filter_slope_bias * float(filter_radius);
   return params.constant_bias + slope_texels * tan_theta * s.texel / depth_span;
 }
@@ -66,16 +80,14 @@ float shadow_bias(GpuLight light, GpuShadow params, ShadowLookup s, vec3 normal,
 // over a filter window compare each texel with this depth rather than the
 // centre's, so a sloped receiver does not shadow itself (receiver-plane
 // depth, after Isidoro 2006, evaluated exactly by ray-plane intersection).
-float receiver_plane_depth(GpuLight light, vec3 world, vec3 normal, vec2 uv, float fallback) {
-  vec4 near_h = light.inverse_view_projection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
-  vec4 far_h = light.inverse_view_projection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
+float receiver_plane_depth(GpuShadowView view, vec3 world, vec3 normal, vec2 uv, float fallback) {
+  vec4 near_h = view.inverse_view_projection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
+  vec4 far_h = view.inverse_view_projection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
   vec3 origin = near_h.xyz / near_h.w;
   vec3 direction = far_h.xyz / far_h.w - origin;
   float denominator = dot(normal, direction);
   if (abs(denominator) < 1e-8) return fallback;  // ray along the plane
   float t = dot(normal, world - origin) / denominator;
   if (t <= 0.0) return fallback;
-  vec3 hit = origin + t * direction;
-  float z = light_linear_depth(light, hit);
-  return (z - light.depth_range.x) / (light.depth_range.y - light.depth_range.x);
+  return relative_depth_of(view, light_linear_depth(view, origin + t * direction));
 }

@@ -9,26 +9,26 @@
 // z-bar gradient of the receiver's plane per texel of the map, from two
 // exact ray-plane intersections one texel away; capped at the slope the
 // slope-scaled bias follows, so grazing receivers stay finite.
-vec2 receiver_depth_gradient(GpuLight light, ShadowLookup s, vec3 normal, float max_slope) {
-  vec2 texel_uv = vec2(1.0 / light.depth_range.w);
-  float dx = receiver_plane_depth(light, s.position, normal, s.uv + vec2(texel_uv.x, 0.0), s.depth);
-  float dy = receiver_plane_depth(light, s.position, normal, s.uv + vec2(0.0, texel_uv.y), s.depth);
-  float limit = max_slope * s.texel / (light.depth_range.y - light.depth_range.x);
+vec2 receiver_depth_gradient(GpuShadowView view, ShadowLookup s, vec3 normal, float max_slope) {
+  vec2 texel_uv = vec2(1.0 / view.depth_range.w);
+  float dx = receiver_plane_depth(view, s.position, normal, s.uv + vec2(texel_uv.x, 0.0), s.depth);
+  float dy = receiver_plane_depth(view, s.position, normal, s.uv + vec2(0.0, texel_uv.y), s.depth);
+  float limit = max_slope * s.texel / (view.depth_range.y - view.depth_range.x);
   return clamp(vec2(dx, dy) - s.depth, vec2(-limit), vec2(limit));
 }
 
-// Lit fraction over a window `width` texels wide (samples >= 1).
-// `depth` is the biased receiver depth at the window's centre.
-float shadow_pcf(sampler2D depth_map, vec2 uv, float depth, vec2 gradient, float width,
-                 int samples, vec2 rotation) {
-  ivec2 size = textureSize(depth_map, 0);
+// Lit fraction over a window `width` texels wide (samples >= 1) of layer
+// `layer`. `depth` is the biased receiver depth at the window's centre.
+float shadow_pcf(sampler2DArray depth_maps, int layer, vec2 uv, float depth, vec2 gradient,
+                 float width, int samples, vec2 rotation) {
+  ivec2 size = textureSize(depth_maps, 0).xy;
   vec2 center = uv * vec2(size);
   float lit = 0.0;
   for (int i = 0; i < samples; ++i) {
     vec2 offset = rotated_poisson(i, rotation) * (0.5 * width);  // texels
     ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);
     float receiver = depth + dot(gradient, offset);
-    lit += receiver <= texelFetch(depth_map, texel, 0).r ? 1.0 : 0.0;
+    lit += receiver <= texelFetch(depth_maps, ivec3(texel, layer), 0).r ? 1.0 : 0.0;
   }
   return lit / float(samples);
 }

@@ -1,32 +1,31 @@
 // Penumbra geometry of an area light (Fernando, "Percentage-Closer Soft
 // Shadows", SIGGRAPH 2005 sketch): similar triangles between the light's
 // source, the blocker and the receiver. Depths are linear light-space
-// depths; light.source.x is the source's width (see GpuLight).
+// depths; view.source_width is the source's width (see GpuShadowView).
 
-float linear_depth_of(GpuLight light, float z_bar) {
-  return light.depth_range.x + z_bar * (light.depth_range.y - light.depth_range.x);
+float linear_depth_of(GpuShadowView view, float z_bar) {
+  return view.depth_range.x + z_bar * (view.depth_range.y - view.depth_range.x);
 }
 
 // World width of the penumbra on a receiver at depth d_receiver cast by a
 // blocker at depth d_blocker: w_penumbra = (d_r - d_b) w_light / d_b
 // (Fernando 2005, eq. 1); for a directional light, whose source width is
 // given per unit of distance, (d_r - d_b) w_light.
-float penumbra_world_width(GpuLight light, float d_receiver, float d_blocker) {
+float penumbra_world_width(GpuShadowView view, float d_receiver, float d_blocker) {
   float gap = max(d_receiver - d_blocker, 0.0);
-  return int(light.position_type.w) == LIGHT_SPOT
-             ? gap * light.source.x / max(d_blocker, 1e-6)
-             : gap * light.source.x;
+  return view.perspective != 0 ? gap * view.source_width / max(d_blocker, 1e-6)
+                               : gap * view.source_width;
 }
 
 // Width, in texels, of the map region where blockers of the receiver can
 // appear: the cone from the receiver to the light's source, widest at the
 // nearest geometry z0 (Fernando's search over the light's extent on the
 // near plane).
-float blocker_search_width(GpuLight light, float d_receiver) {
-  float z0 = light.depth_range.x;
-  if (int(light.position_type.w) == LIGHT_SPOT) {
-    float world = light.source.x * max(d_receiver - z0, 0.0) / max(d_receiver, 1e-6);
-    return world / (z0 * light.depth_range.z);
+float blocker_search_width(GpuShadowView view, float d_receiver) {
+  float z0 = view.depth_range.x;
+  if (view.perspective != 0) {
+    float world = view.source_width * max(d_receiver - z0, 0.0) / max(d_receiver, 1e-6);
+    return world / (z0 * view.depth_range.z);
   }
-  return light.source.x * max(d_receiver - z0, 0.0) / light.depth_range.z;
+  return view.source_width * max(d_receiver - z0, 0.0) / view.depth_range.z;
 }

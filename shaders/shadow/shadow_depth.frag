@@ -1,15 +1,20 @@
-// Writes relative depth z-bar = (z - z0) / (z1 - z0), linear in light-space
-// depth for spot and directional lights alike, so every technique stores
-// and compares the same quantity (the hardware depth of a perspective
-// projection would be non-linear).
+// Writes relative depth z-bar = (z - z0) / (z1 - z0), where z is the depth
+// along the view's axis (spot, directional) or the distance from the light
+// (point lights: the same quantity on every face of the cube, so the
+// shadow is continuous across faces). Linear in light-space distance for
+// every light, so every technique stores and compares the same quantity
+// (the hardware depth of a perspective projection would be non-linear).
+// Along any ray from the light both orders agree, so the depth test keeps
+// the nearest surface either way.
 #include "../common/uniforms.glsl"
+#include "lookup.glsl"
 
-layout(location = 0) uniform int u_light;
+layout(location = 0) uniform int u_view;
 
-in float v_light_depth;
+in vec3 v_view_position;
 layout(depth_any) out float gl_FragDepth;
 
 void main() {
-  vec4 range = lights[u_light].depth_range;
-  gl_FragDepth = clamp((v_light_depth - range.x) / (range.y - range.x), 0.0, 1.0);
+  GpuShadowView view = shadow_views[u_view];
+  gl_FragDepth = clamp(relative_depth_of(view, view_space_depth(view, v_view_position)), 0.0, 1.0);
 }

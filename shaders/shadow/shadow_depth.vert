@@ -1,14 +1,14 @@
-// Shadow pass: the scene seen from one light.
+// Shadow pass: the scene seen from one shadow view.
 #include "../common/uniforms.glsl"
 #include "../scene/vertex_input.glsl"
 
-layout(location = 0) uniform int u_light;
+layout(location = 0) uniform int u_view;
 
-out float v_light_depth;  // linear light-space depth
+out vec3 v_view_position;  // view-space position: interpolated exactly (it is affine in world)
 
 void main() {
-  GpuLight light = lights[u_light];
+  GpuShadowView view = shadow_views[u_view];
   vec4 world = vec4(in_position, 1.0);
-  v_light_depth = -(light.view * world).z;
-  gl_Position = light.view_projection * world;
+  v_view_position = (view.view * world).xyz;
+  gl_Position = view.view_projection * world;
 }

@@ -9,6 +9,7 @@
 #define BINDING_SHADOW_UBO 2
 #define BINDING_PASS_UBO 3
 #define BINDING_SSAO_UBO 4
+#define BINDING_SHADOW_VIEWS_UBO 5
 
 // Storage buffers
 #define BINDING_MATERIALS_SSBO 0
@@ -21,9 +22,10 @@
 #define UNIT_GBUFFER_ALBEDO 2
 #define UNIT_GBUFFER_SPECULAR 3
 #define UNIT_AMBIENT_OCCLUSION 4  // the AO texture: read by the lighting pass and the SSAO blur
-#define UNIT_SHADOW_DEPTH 8       // MAX_LIGHTS units: each light's z-bar depth map
-#define UNIT_SHADOW_FILTERED 12   // MAX_LIGHTS units: each light's filtered representation
-#define UNIT_SHADOW_COMPARE 16    // MAX_LIGHTS units: the depth maps with a comparison sampler
+// The shadow maps of every light's views, one array layer per view:
+#define UNIT_SHADOW_DEPTH 8     // z-bar depth maps
+#define UNIT_SHADOW_FILTERED 9  // the filtered representations (or summed-area tables)
+#define UNIT_SHADOW_COMPARE 10  // the depth maps with a comparison sampler
 #define UNIT_COMPUTE_INPUT 0
 #define UNIT_PRESENT_SOURCE 0
 
@@ -32,6 +34,10 @@
 #define IMAGE_OUTPUT_2 1
 
 #define MAX_LIGHTS 4
+// Shadow views of all lights together: six per light, a point light's cube.
+#define MAX_SHADOW_VIEWS 24
+// Cascades of a directional light.
+#define MAX_CASCADES 4
 
 // Widest PCF / PCSS window, in texels.
 #define MAX_PCF_WIDTH 128
@@ -44,6 +50,7 @@
 // Light types (GpuLight::position_type.w)
 #define LIGHT_SPOT 0
 #define LIGHT_DIRECTIONAL 1
+#define LIGHT_POINT 2
 
 // Views written by the lighting pass (GpuFrame::options.y)
 #define VIEW_FINAL 0
@@ -52,6 +59,7 @@
 #define VIEW_ALBEDO 3
 #define VIEW_SHADOW_REFERENCE 4
 #define VIEW_AO 5
+#define VIEW_CASCADES 6  // the cascade (or cube face) each pixel reads, as a colour
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 // (the filterable ones, from TECHNIQUE_VSM on, last)

@@ -14,21 +14,41 @@ using ivec4 = glm::ivec4;
 using mat4 = glm::mat4;
 #endif
 
+// One shadow view: a 2D map that is one layer of the shadow-map arrays. A
+// spot light has one, a point light six (the faces of a cube), a
+// directional light one per cascade (see src/shadow/shadow_views.hpp).
+struct GpuShadowView {
+  mat4 view;                     // world -> view space (the view looks down -z)
+  mat4 view_projection;          // world -> clip space
+  mat4 inverse_view_projection;  // clip space -> world
+  // x: z0, y: z1 (the view's depth range mapped to z-bar = (z - z0)/(z1 - z0),
+  //    where z is the distance along -z, or from the eye for radial depth);
+  // z: world size of one texel at unit depth (perspective) or anywhere
+  //    (orthographic); w: map size in texels
+  vec4 depth_range;
+  // Width of the light's source: world units at the light (spot, point), or
+  // per unit of distance, 2 tan(angular radius) (directional).
+  float source_width;
+  int perspective;   // 1: perspective projection, 0: orthographic
+  int radial_depth;  // 1: z is the distance from the eye (point lights), 0: depth along -z
+  int unused;
+};
+
 // One light as the shaders see it (one entry of the lights block).
 struct GpuLight {
-  mat4 view;                     // world -> light view (light looks down -z)
-  mat4 view_projection;          // world -> light clip space
-  mat4 inverse_view_projection;  // light clip space -> world
-  vec4 position_type;            // xyz: position (spot); w: LIGHT_SPOT or LIGHT_DIRECTIONAL
-  vec4 direction_cos_outer;      // xyz: unit direction the light shines along; w: cos(outer cone)
-  vec4 radiance_cos_inner;       // rgb: colour * intensity; w: cos(inner cone)
-  // x: z0, y: z1 (light-space depth range mapped to z-bar = (z - z0)/(z1 - z0));
-  // z: world size of one shadow-map texel at unit depth (spot) or anywhere
-  //    (directional); w: shadow-map size in texels
-  vec4 depth_range;
-  // x: width of the light's source: world units at the light (spot), or per
-  //    unit of distance, 2 tan(angular radius) (directional); yzw: unused
-  vec4 source;
+  vec4 position_type;        // xyz: position (spot, point); w: LIGHT_SPOT, _DIRECTIONAL or _POINT
+  vec4 direction_cos_outer;  // xyz: unit direction the light shines along; w: cos(outer cone)
+  vec4 radiance_cos_inner;   // rgb: colour * intensity; w: cos(inner cone)
+  // x: index of the light's first view in the shadow-views block; y: its
+  // view count (1 spot, 6 point, the cascade count directional); zw: unused
+  ivec4 views;
+  // Directional lights: the camera view depth where cascade i ends (the
+  // last one covers everything the camera sees).
+  vec4 cascade_end;
+  // x: fraction of each cascade, at its far end, over which it blends into
+  //    the next one; y: the camera's near plane (where the first starts);
+  //    zw: unused
+  vec4 cascade_blend;
 };
 
 // Per-frame camera data.

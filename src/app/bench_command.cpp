@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "app/light_choice.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
@@ -106,6 +107,7 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer) {
 
 void add_bench_command_options(CLI::App& command, BenchArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
+  add_light_choice_option(command, args.light);
   command
       .add_option("--frames", args.frames, "frames measured per configuration, after the warm-up")
       ->capture_default_str()
@@ -137,6 +139,7 @@ int run_bench_command(BenchArgs& args) {
   for (const ShadowSettings& s : plan) validate(s);
   validate(args.render);
   Scene scene = resolve_scene_source(args.scene, args.model);
+  apply_light_choice(args.light, scene);
 
   auto context = gl::Context::create_headless();
   std::printf("penumbra bench: %s (%s, %s)\n", context->renderer().c_str(),

@@ -57,6 +57,7 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   } else if (command.scene_argument != "default") {
     args.push_back("--scene=" + command.scene_argument);
   }
+  if (!command.light.empty()) args.push_back("--light=" + command.light);
   add_changed_name(args, "technique", command.shadow.technique, shadow_defaults.technique,
                    kTechniqueNames);
   add_changed_name(args, "filter", command.shadow.filter, shadow_defaults.filter, kFilterNames);
@@ -69,6 +70,10 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
                    SsaoSettings{}.half_resolution, kOnOffNames);
   add_changed(args, command.ssao, kSsaoIntParams);
   add_changed(args, command.ssao, kSsaoFloatParams);
+  for (const auto& p : kShadowSwitchParams) {
+    add_changed_name(args, p.name, command.shadow.*(p.field), shadow_defaults.*(p.field),
+                     kOnOffNames);
+  }
   for (const auto& p : kShadowFlagParams) {
     const bool value = command.shadow.*(p.field);
     if (value != shadow_defaults.*(p.field)) args.push_back(flag(p.name) + (value ? "" : "=false"));

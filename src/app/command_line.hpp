@@ -13,6 +13,7 @@ namespace penumbra {
 struct RenderCommand {
   std::string scene_argument;  // as given to --scene
   std::string model_argument;  // as given to --model (then the scene is ignored)
+  std::string light;           // as given to --light (empty: not given)
   RenderSettings render;
   ShadowSettings shadow;
   SsaoSettings ssao;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/light_choice.hpp"
 #include "app/options.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
@@ -174,6 +175,7 @@ std::vector<std::string> metrics_row(const Item& item, const char* reference,
 
 void add_compare_command_options(CLI::App& command, CompareArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
+  add_light_choice_option(command, args.light);
   command
       .add_option(
           "--techniques", args.techniques,
@@ -262,8 +264,8 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
   }
 }
 
-const char* light_type_name(LightType type) {
-  return type == LightType::Spot ? "spot" : "directional";
+std::string light_type_name(LightType type) {
+  return std::string(enum_name<LightType>(kLightTypeNames, type));
 }
 
 void print_report(const CompareArgs& args, const Scene& scene, const TracedReference& reference,
@@ -271,11 +273,14 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
   const int light_index = args.render.light_index;
   std::printf("scene %s, light %d (%s), %dx%d pixels, %d^2 shadow maps\n", scene.name.c_str(),
               light_index,
-              light_type_name(scene.lights[static_cast<std::size_t>(light_index)].type),
+              light_type_name(scene.lights[static_cast<std::size_t>(light_index)].type).c_str(),
               args.render.width, args.render.height, args.shadow.map_size);
   const ReferenceLight& light = reference.light;
   if (light.size > 0.0f && light.type == LightType::Spot) {
     std::printf("traced reference: square light %g wide, %d rays per pixel", light.size,
+                reference.rays);
+  } else if (light.size > 0.0f && light.type == LightType::Point) {
+    std::printf("traced reference: spherical light %g in diameter, %d rays per pixel", light.size,
                 reference.rays);
   } else if (light.size > 0.0f) {
     std::printf("traced reference: sun %g degrees wide, %d rays per pixel", args.shadow.sun_angle,
@@ -359,7 +364,8 @@ int run_compare_command(CompareArgs& args) {
   std::vector<Item> items = plan_items(args);
   if (!args.output_dir.empty()) check_output_dir(args.output_dir);
   if (!args.json.empty()) check_output_path(args.json);
-  const Scene scene = resolve_scene_source(args.scene, args.model);
+  Scene scene = resolve_scene_source(args.scene, args.model);
+  apply_light_choice(args.light, scene);
   const int light_index = args.render.light_index;
   if (light_index >= static_cast<int>(scene.lights.size())) {
     throw UsageError("--light-index " + std::to_string(light_index) + ": scene '" + scene.name +

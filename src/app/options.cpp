@@ -112,6 +112,15 @@ void add_shadow_parameters(CLI::App& app, ShadowSettings& settings) {
   for (const auto& p : kShadowFlagParams) {
     app.add_flag("--" + std::string(p.name), settings.*(p.field), std::string(p.help));
   }
+  for (const auto& p : kShadowSwitchParams) {
+    bool* field = &(settings.*(p.field));
+    app.add_option_function<std::string>(
+           "--" + std::string(p.name),
+           [field](const std::string& value) { *field = *parse_enum<bool>(kOnOffNames, value); },
+           std::string(p.help) + ": " + choices(kOnOffNames))
+        ->check(CLI::IsMember({"on", "off"}))
+        ->default_str(std::string(enum_name<bool>(kOnOffNames, settings.*(p.field))));
+  }
   add_params(app, settings, kShadowIntParams);
   add_params(app, settings, kShadowFloatParams);
 }
@@ -133,9 +142,13 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
              "shadow-reference: what a filtered technique "
              "approximates, the unfiltered map's depth tests averaged with the same "
              "filter kernel; shadow-map: the light's relative "
-             "depth z-bar; moments, moments-filtered: the technique's map before and "
-             "after the filter, as colour; for esm, log(map)/c + 1, in depth units; ao: "
-             "the ambient-occlusion buffer, 1 = unoccluded)")
+             "depth z-bar, a light with several views (the six cube faces of a point light, "
+             "the cascades of a directional one) shown tiled; moments, moments-filtered: the "
+             "technique's map before and after the filter, as colour, tiled the same way; for "
+             "esm, log(map)/c + 1, in depth units; ao: the ambient-occlusion buffer, 1 = "
+             "unoccluded; cascades: the cascade or cube face whose map each pixel reads, as a "
+             "colour: red, green, blue, yellow, magenta, cyan for views 0-5, black where no "
+             "map covers the point)")
       ->capture_default_str();
   add_render_parameters(app, settings);
 }

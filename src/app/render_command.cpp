@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "app/light_choice.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
@@ -14,6 +15,7 @@ namespace penumbra {
 
 void add_render_command_options(CLI::App& command, RenderArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
+  add_light_choice_option(command, args.light);
   command
       .add_option("-o,--output", args.output, "output image: .png, or .exr for raw 32-bit floats")
       ->required();
@@ -32,6 +34,7 @@ int run_render_command(RenderArgs& args) {
   image_format_for(args.output);
   check_output_path(args.output);
   Scene scene = resolve_scene_source(args.scene, args.model);
+  apply_light_choice(args.light, scene);
   apply_scene_options(args.scene_options, args.render.light_index, scene);
 
   auto context = gl::Context::create_headless({.debug = true, .verbose = args.verbose});

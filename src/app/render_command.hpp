@@ -12,6 +12,7 @@ namespace penumbra {
 struct RenderArgs {
   std::string scene = "default";
   std::string model;  // --model: instead of --scene
+  std::string light;  // --light: one light of this type alone (empty: the scene's lights)
   std::string output;
   bool verbose = false;
   RenderSettings render;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/light_choice.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
@@ -16,6 +17,7 @@ namespace fs = std::filesystem;
 
 void add_report_command_options(CLI::App& command, ReportArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
+  add_light_choice_option(command, args.light);
   command.add_option("-o,--output", args.output, "folder for index.html and its images")
       ->required();
   command.add_flag("--quick", args.quick, "smaller images and fewer sweeps");
@@ -30,11 +32,13 @@ int run_report_command(const ReportArgs& args) {
   check_output_path(fs::is_directory(args.output, ec)
                         ? (fs::path(args.output) / "index.html").string()
                         : args.output);
-  const Scene scene = resolve_scene_source(args.scene, args.model);
+  Scene scene = resolve_scene_source(args.scene, args.model);
+  apply_light_choice(args.light, scene);
   auto context = gl::Context::create_headless();
   const StudyResult result = write_study(scene,
                                          {.scene_argument = args.scene,
                                           .model_argument = args.model,
+                                          .light_choice = args.light,
                                           .output_dir = args.output,
                                           .quick = args.quick},
                                          *context);

@@ -8,6 +8,7 @@ namespace penumbra {
 struct ReportArgs {
   std::string scene = "default";
   std::string model;  // --model: instead of --scene
+  std::string light;  // --light: one light of this type alone (empty: the scene's lights)
   std::string output;
   bool quick = false;
 };

@@ -51,8 +51,8 @@ float parse_scalar(std::string_view name, std::string_view text, float min, floa
 }
 
 // "[I:]VALUE" -> the light it names and its value.
-Light& target_light(std::string_view name, std::string_view& text, int light_index, bool spot_only,
-                    Scene& scene) {
+Light& target_light(std::string_view name, std::string_view& text, int light_index,
+                    LightScope scope, Scene& scene) {
   int index = light_index;
   const std::size_t colon = text.find(':');
   if (colon != std::string_view::npos) {
@@ -70,9 +70,10 @@ Light& target_light(std::string_view name, std::string_view& text, int light_ind
                      ")");
   }
   Light& light = scene.lights[static_cast<std::size_t>(index)];
-  if (spot_only && light.type != LightType::Spot) {
-    throw UsageError(flag(name) + ": light " + std::to_string(index) +
-                     " is directional; only spot lights have it");
+  if (!applies_to(scope, light.type)) {
+    throw UsageError(flag(name) + ": light " + std::to_string(index) + " is a " +
+                     std::string(enum_name<LightType>(kLightTypeNames, light.type)) +
+                     " light, which has no such value");
   }
   return light;
 }
@@ -133,7 +134,7 @@ void apply_scene_options(const SceneOptions& options, int light_index, Scene& sc
     const auto& p = kLightVectorParams[i];
     for (const std::string& value : options.light_vectors[i]) {
       std::string_view text = value;
-      Light& light = target_light(p.name, text, light_index, p.spot_only, scene);
+      Light& light = target_light(p.name, text, light_index, p.scope, scene);
       const glm::vec3 v = parse_vector(p.name, text);
       if (p.field == &Light::direction && v == glm::vec3(0.0f)) {
         throw UsageError(flag(p.name) + ": a direction cannot be 0,0,0");
@@ -149,7 +150,7 @@ void apply_scene_options(const SceneOptions& options, int light_index, Scene& sc
     const auto& p = kLightScalarParams[i];
     for (const std::string& value : options.light_scalars[i]) {
       std::string_view text = value;
-      Light& light = target_light(p.name, text, light_index, p.spot_only, scene);
+      Light& light = target_light(p.name, text, light_index, p.scope, scene);
       light.*(p.field) = parse_scalar(p.name, text, p.min, p.max);
     }
   }
@@ -172,16 +173,15 @@ std::vector<std::string> scene_option_args(const Scene& original, const Scene& e
   for (std::size_t i = 0; i < lights; ++i) {
     const Light& before = original.lights[i];
     const Light& after = edited.lights[i];
-    const bool spot = after.type == LightType::Spot;
     const std::string prefix =
         static_cast<int>(i) == light_index ? std::string() : std::to_string(i) + ":";
     for (const auto& p : kLightVectorParams) {
-      if ((spot || !p.spot_only) && before.*(p.field) != after.*(p.field)) {
+      if (applies_to(p.scope, after.type) && before.*(p.field) != after.*(p.field)) {
         args.push_back(flag(p.name) + "=" + prefix + vector_text(after.*(p.field)));
       }
     }
     for (const auto& p : kLightScalarParams) {
-      if ((spot || !p.spot_only) && before.*(p.field) != after.*(p.field)) {
+      if (applies_to(p.scope, after.type) && before.*(p.field) != after.*(p.field)) {
         args.push_back(flag(p.name) + "=" + prefix + format_float(after.*(p.field)));
       }
     }

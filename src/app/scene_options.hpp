@@ -13,12 +13,33 @@
 
 namespace penumbra {
 
+// Which lights have a light parameter.
+enum class LightScope {
+  All,
+  Positional,  // spot and point lights (a position)
+  Directed,    // spot and directional lights (a direction)
+  Spot,        // spot lights only (a cone)
+};
+
+constexpr bool applies_to(LightScope scope, LightType type) {
+  switch (scope) {
+    case LightScope::Positional:
+      return type != LightType::Directional;
+    case LightScope::Directed:
+      return type != LightType::Point;
+    case LightScope::Spot:
+      return type == LightType::Spot;
+    default:
+      return true;
+  }
+}
+
 template <class Object>
 struct VectorParam {
   std::string_view name;
   std::string_view help;
   glm::vec3 Object::*field;
-  bool spot_only = false;  // lights: directional lights have no such value
+  LightScope scope = LightScope::All;  // lights: which have the value
 };
 
 template <class Object>
@@ -28,7 +49,7 @@ struct ScalarParam {
   float min;
   float max;
   float Object::*field;
-  bool spot_only = false;
+  LightScope scope = LightScope::All;
 };
 
 inline constexpr std::array<VectorParam<Camera>, 2> kCameraVectorParams{{
@@ -44,19 +65,21 @@ inline constexpr std::array<ScalarParam<Camera>, 1> kCameraScalarParams{{
 // Light flags take "[I:]VALUE": light I's value, or --light-index's light
 // without "I:". They may be repeated for several lights.
 inline constexpr std::array<VectorParam<Light>, 3> kLightVectorParams{{
-    {"light-position", "[I:]X,Y,Z: a spot light's position", &Light::position, true},
-    {"light-direction", "[I:]X,Y,Z: the direction a light shines in (any length but 0)",
-     &Light::direction},
+    {"light-position", "[I:]X,Y,Z: a spot or point light's position", &Light::position,
+     LightScope::Positional},
+    {"light-direction",
+     "[I:]X,Y,Z: the direction a spot or directional light shines in (any length but 0)",
+     &Light::direction, LightScope::Directed},
     {"light-color", "[I:]R,G,B: a light's linear colour", &Light::color},
 }};
 
 inline constexpr std::array<ScalarParam<Light>, 2> kLightScalarParams{{
     {"light-intensity",
-     "[I:]V: a spot light's radiant intensity (irradiance at 1 m), a directional light's "
-     "irradiance",
+     "[I:]V: a spot or point light's radiant intensity (irradiance at 1 m, falling off as "
+     "1/d^2), a directional light's irradiance",
      0.0f, 1e6f, &Light::intensity},
     {"light-cone", "[I:]DEGREES: a spot light's cone half-angle, where its light ends", 0.1f, 89.9f,
-     &Light::cone_degrees, true},
+     &Light::cone_degrees, LightScope::Spot},
 }};
 
 // The flags' values as given, parsed by apply_scene_options().
@@ -72,7 +95,8 @@ void add_scene_options(CLI::App& app, SceneOptions& options);
 // Applies the options to the scene's camera and lights; a light value
 // without "I:" goes to light `light_index`. Throws UsageError naming the
 // flag for a malformed or out-of-range value, a light the scene lacks, a
-// position or cone given to a directional light, or a camera whose
+// value the light does not have (a directional light's position, a point
+// light's direction or cone, ...), or a camera whose
 // position is its target.
 void apply_scene_options(const SceneOptions& options, int light_index, Scene& scene);
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "app/command_line.hpp"
+#include "app/light_choice.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/gpu_profiler.hpp"
@@ -108,6 +109,7 @@ void apply_key(KeyAction action, ViewerState& state, PanelActions& actions, bool
 
 void add_view_command_options(CLI::App& command, ViewArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
+  add_light_choice_option(command, args.light);
   command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
   command
       .add_option("--frames", args.frames,
@@ -140,6 +142,7 @@ int run_view_command(ViewArgs& args) {
     check_output_path(args.capture_window);
   }
   Scene loaded = resolve_scene_source(args.scene, args.model);
+  apply_light_choice(args.light, loaded);
   Scene start = loaded;
   apply_scene_options(args.scene_options, args.render.light_index, start);
 
@@ -168,6 +171,7 @@ int run_view_command(ViewArgs& args) {
   ViewerState state =
       make_viewer_state(args.scene, std::move(loaded), start, args.render, args.shadow, args.ssao);
   state.model_argument = args.model;
+  state.light_choice = args.light;
   OrbitCamera orbit(state.camera);
   MouseControls mouse(renderer.mesh().bounds().center());
 

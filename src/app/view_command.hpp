@@ -14,6 +14,7 @@ namespace penumbra {
 struct ViewArgs {
   std::string scene = "default";
   std::string model;  // --model: instead of --scene
+  std::string light;  // --light: one light of this type alone (empty: the scene's lights)
   bool verbose = false;
   RenderSettings render;  // width and height: the 3D view's start size
   ShadowSettings shadow;

@@ -46,10 +46,11 @@ enum class View {
   MomentsFiltered,
   Normals,
   Albedo,
-  Ao
+  Ao,
+  Cascades
 };
 
-inline constexpr std::array<std::pair<View, std::string_view>, 9> kViewNames{{
+inline constexpr std::array<std::pair<View, std::string_view>, 10> kViewNames{{
     {View::Final, "final"},
     {View::Shadow, "shadow"},
     {View::ShadowReference, "shadow-reference"},
@@ -59,6 +60,7 @@ inline constexpr std::array<std::pair<View, std::string_view>, 9> kViewNames{{
     {View::Normals, "normals"},
     {View::Albedo, "albedo"},
     {View::Ao, "ao"},
+    {View::Cascades, "cascades"},
 }};
 
 // Names of on/off switches on the command line.
@@ -89,8 +91,9 @@ struct ShadowSettings {
   float filter_slope_bias = 0.25f;
   // Normal offset: the lookup moves this many texels along the surface normal.
   float normal_offset = 0.5f;
-  // Width of a spot light's source in world units (0: a point light, hard
-  // shadows), for pcss, --soft and the area-light reference.
+  // Width of a spot light's source in world units (0: a point, hard
+  // shadows), for pcss, --soft and the area-light reference; the diameter
+  // of a point light's spherical source.
   float light_size = 0.5f;
   // Angular diameter of a directional light's source in degrees (the sun
   // is about 0.53), for the same.
@@ -126,6 +129,19 @@ struct ShadowSettings {
   // Light-bleeding reduction for vsm and msm: lit fractions below this
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
+
+  // Directional lights: shadow cascades along the camera's view (1-4).
+  int cascades = 3;
+  // Split scheme of the cascades: the blend lambda log + (1 - lambda)
+  // uniform of Zhang et al.'s practical split scheme (2006).
+  float cascade_lambda = 0.75f;
+  // Fraction of each cascade, at its far end, over which it blends into the
+  // next one.
+  float cascade_blend = 0.1f;
+  // Point lights: widen each cube face's frustum beyond 90 degrees by the
+  // filter's reach plus a margin, in texels, so a filter near a face's edge
+  // reads the scene from its own face (no seams between faces).
+  bool guard_band = true;
 };
 
 // Screen-space ambient obscurance (seed 003, Task 6) over the G-buffer: k
@@ -212,7 +228,7 @@ inline constexpr float kEsmMaxC = 87.0f;
 inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
 inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
 
-inline constexpr std::array<NumericParam<ShadowSettings, float>, 13> kShadowFloatParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloatParams{{
     {"constant-bias", "constant depth bias, in relative light depth z-bar", 0.0f, 0.1f,
      &ShadowSettings::constant_bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
@@ -224,8 +240,9 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 13> kShadowFloa
     {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
      &ShadowSettings::normal_offset},
     {"light-size",
-     "width of a spot light's source in world units (0: point light), for pcss, --soft and "
-     "the area-light reference (a square facing the light's direction)",
+     "width of a spot light's source in world units (0: a point), for pcss, --soft and "
+     "the area-light reference (a square facing the light's direction); a point light's "
+     "source is a sphere of this diameter",
      0.0f, 100.0f, &ShadowSettings::light_size},
     {"sun-angle",
      "angular diameter of a directional light's source in degrees (0: a point); the reference "
@@ -241,9 +258,16 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 13> kShadowFloa
      &ShadowSettings::vsm_min_variance},
     {"bleed-reduction", "light-bleeding reduction for vsm and msm (0: off)", 0.0f, 0.99f,
      &ShadowSettings::bleed_reduction},
+    {"cascade-lambda",
+     "directional lights: cascade split scheme, lambda * logarithmic + (1 - lambda) * uniform "
+     "(Zhang et al. 2006)",
+     0.0f, 1.0f, &ShadowSettings::cascade_lambda},
+    {"cascade-blend",
+     "directional lights: fraction of each cascade, at its far end, blended into the next", 0.0f,
+     0.5f, &ShadowSettings::cascade_blend},
 }};
 
-inline constexpr std::array<NumericParam<ShadowSettings, int>, 5> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowSettings::map_size},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
@@ -254,6 +278,8 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 5> kShadowIntPara
      &ShadowSettings::pcss_blocker_samples},
     {"pcss-filter-samples", "PCSS filter samples over the penumbra", 1, kMaxShadowSamples,
      &ShadowSettings::pcss_filter_samples},
+    {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
+     &ShadowSettings::cascades},
 }};
 
 inline constexpr int kMaxSsaoSamples = 64;  // SSAO_MAX_SAMPLES in shaders/shared/bindings.h
@@ -294,6 +320,22 @@ inline constexpr std::array<NumericParam<ReferenceSettings, int>, 1> kReferenceI
      "traced reference: shadow rays per pixel towards an area light (--light-size or "
      "--sun-angle > 0)",
      1, kMaxReferenceSamples, &ReferenceSettings::samples},
+}};
+
+// An on/off parameter given as "--name on|off": name (without "--"), help,
+// and where it lives.
+template <class Settings>
+struct SwitchParam {
+  std::string_view name;
+  std::string_view help;
+  bool Settings::*field;
+};
+
+inline constexpr std::array<SwitchParam<ShadowSettings>, 1> kShadowSwitchParams{{
+    {"guard-band",
+     "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
+     "filters near a face's edge read their own face (no seams)",
+     &ShadowSettings::guard_band},
 }};
 
 // Throws UsageError naming the first parameter outside its range.

@@ -20,9 +20,13 @@ GLuint groups(int size, int tile) {
 
 void ensure(gl::Texture& texture, const gl::Texture& like, const char* label) {
   if (!texture || texture.width() != like.width() || texture.height() != like.height() ||
-      texture.format() != like.format()) {
-    texture = gl::Texture(gl::TextureInfo{
-        .format = like.format(), .width = like.width(), .height = like.height(), .label = label});
+      texture.layers() != like.layers() || texture.format() != like.format()) {
+    texture = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                          .format = like.format(),
+                                          .width = like.width(),
+                                          .height = like.height(),
+                                          .layers = like.layers(),
+                                          .label = label});
   }
 }
 
@@ -48,26 +52,24 @@ void GaussianBlurPass::dispatch(const gl::Program& program, const gl::Texture& f
   program.use();
   glBindTextureUnit(UNIT_COMPUTE_INPUT, from.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
-  glBindImageTexture(IMAGE_OUTPUT, to.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, to.format());
+  glBindImageTexture(IMAGE_OUTPUT, to.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, to.format());
+  const auto layers = static_cast<GLuint>(from.layers());
   if (axis == 0) {
-    glDispatchCompute(groups(from.width(), kTileAlong), groups(from.height(), kTileAcross), 1);
+    glDispatchCompute(groups(from.width(), kTileAlong), groups(from.height(), kTileAcross), layers);
   } else {
-    glDispatchCompute(groups(from.width(), kTileAcross), groups(from.height(), kTileAlong), 1);
+    glDispatchCompute(groups(from.width(), kTileAcross), groups(from.height(), kTileAlong), layers);
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-void GaussianBlurPass::execute(int light, const gl::Texture& source, int radius,
-                               gl::GpuProfiler* profiler) {
+void GaussianBlurPass::execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler) {
   if (radius != weights_radius_) {
     std::vector<float> weights = gaussian_weights(radius);
     weights_.update(weights.data(), weights.size() * sizeof(float));
     weights_radius_ = radius;
   }
-  const std::size_t index = static_cast<std::size_t>(light);
-  if (outputs_.size() <= index) outputs_.resize(index + 1);
   ensure(intermediate_, source, "blur intermediate");
-  ensure(outputs_[index], source, "blurred shadow map");
+  ensure(output_, source, "blurred shadow maps");
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "gaussian blur");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, weights_.id());
@@ -77,7 +79,7 @@ void GaussianBlurPass::execute(int light, const gl::Texture& source, int radius,
   }
   {
     gl::GpuPassScope timed(profiler, gl::GpuPass::FilterVertical);
-    dispatch(program(source.format(), 1, radius), intermediate_, outputs_[index], 1);
+    dispatch(program(source.format(), 1, radius), intermediate_, output_, 1);
   }
   glPopDebugGroup();
 }

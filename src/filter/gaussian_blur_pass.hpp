@@ -1,10 +1,10 @@
 #pragma once
 // Separable Gaussian blur in compute: horizontal into an intermediate
 // texture, then vertical into the output, each pass staging its tile in
-// shared memory (shaders/filter/gaussian_blur.comp).
+// shared memory (shaders/filter/gaussian_blur.comp). Works on 2D array
+// textures: each layer (one shadow view) is filtered on its own.
 #include <map>
 #include <tuple>
-#include <vector>
 
 #include "gl/gpu_profiler.hpp"
 #include "gl/program.hpp"
@@ -16,13 +16,12 @@ class GaussianBlurPass {
  public:
   GaussianBlurPass();
 
-  // Blurs `source` with 2 radius + 1 taps per direction into light
-  // `light`'s output (same size and format as the source). radius >= 1.
-  void execute(int light, const gl::Texture& source, int radius,
-               gl::GpuProfiler* profiler = nullptr);
+  // Blurs every layer of the 2D array `source` with 2 radius + 1 taps per
+  // direction into output() (same size, layers and format). radius >= 1.
+  void execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler = nullptr);
 
-  // Valid after execute() for that light.
-  [[nodiscard]] const gl::Texture& output(int light) const { return outputs_.at(light); }
+  // Valid after execute().
+  [[nodiscard]] const gl::Texture& output() const { return output_; }
 
  private:
   const gl::Program& program(GLenum format, int axis, int radius);
@@ -32,8 +31,8 @@ class GaussianBlurPass {
   std::map<std::tuple<GLenum, int, int>, gl::Program> programs_;
   gl::Buffer weights_;
   int weights_radius_ = -1;
-  gl::Texture intermediate_;  // shared by every light: they are blurred one after another
-  std::vector<gl::Texture> outputs_;
+  gl::Texture intermediate_;
+  gl::Texture output_;
 };
 
 }  // namespace penumbra

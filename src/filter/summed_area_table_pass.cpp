@@ -28,18 +28,19 @@ const gl::Program& SummedAreaTablePass::program(const char* path, GLenum format)
   return it->second;
 }
 
-void SummedAreaTablePass::execute(int light, const gl::Texture& source, gl::GpuProfiler* profiler) {
+void SummedAreaTablePass::execute(const gl::Texture& source, gl::GpuProfiler* profiler) {
   const GLenum format = integer_format_with_channels_of(source.format());
-  const std::size_t index = static_cast<std::size_t>(light);
-  if (tables_.size() <= index) tables_.resize(index + 1);
-  gl::Texture& table = tables_[index];
+  gl::Texture& table = table_;
   if (!table || table.width() != source.width() || table.height() != source.height() ||
-      table.format() != format) {
-    table = gl::Texture(gl::TextureInfo{.format = format,
+      table.layers() != source.layers() || table.format() != format) {
+    table = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                        .format = format,
                                         .width = source.width(),
                                         .height = source.height(),
-                                        .label = "summed-area table"});
+                                        .layers = source.layers(),
+                                        .label = "summed-area tables"});
   }
+  const auto layers = static_cast<GLuint>(source.layers());
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "summed-area table");
   {
@@ -49,27 +50,29 @@ void SummedAreaTablePass::execute(int light, const gl::Texture& source, gl::GpuP
     glProgramUniform1f(rows.id(), 0, static_cast<float>(sat_fixed_point_scale()));
     glBindTextureUnit(UNIT_COMPUTE_INPUT, source.id());
     glBindSampler(UNIT_COMPUTE_INPUT, 0);
-    glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-    glDispatchCompute(groups(source.height(), 64), 1, 1);
+    glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    glDispatchCompute(groups(source.height(), 64), layers, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
   {
     gl::GpuPassScope timed(profiler, gl::GpuPass::SatColumns);
     program("filter/sat_columns.comp", format).use();
-    glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_FALSE, 0, GL_READ_WRITE, format);
-    glDispatchCompute(groups(source.width(), 64), 1, 1);
+    glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
+    glDispatchCompute(groups(source.width(), 64), layers, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
   glPopDebugGroup();
 }
 
-const gl::Texture& SummedAreaTablePass::box_filtered(int light, int radius) {
-  const gl::Texture& sat = table(light);
+const gl::Texture& SummedAreaTablePass::box_filtered(int radius) {
+  const gl::Texture& sat = table_;
   if (!box_filtered_ || box_filtered_.width() != sat.width() ||
-      box_filtered_.height() != sat.height()) {
-    box_filtered_ = gl::Texture(gl::TextureInfo{.format = GL_RGBA32F,
+      box_filtered_.height() != sat.height() || box_filtered_.layers() != sat.layers()) {
+    box_filtered_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                                .format = GL_RGBA32F,
                                                 .width = sat.width(),
                                                 .height = sat.height(),
+                                                .layers = sat.layers(),
                                                 .label = "SAT box averages"});
   }
   const gl::Program& box = program("filter/sat_box.comp", GL_RGBA32F);
@@ -78,8 +81,9 @@ const gl::Texture& SummedAreaTablePass::box_filtered(int light, int radius) {
   glProgramUniform1f(box.id(), 1, static_cast<float>(sat_fixed_point_scale()));
   glBindTextureUnit(UNIT_COMPUTE_INPUT, sat.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
-  glBindImageTexture(IMAGE_OUTPUT, box_filtered_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glDispatchCompute(groups(sat.width(), 16), groups(sat.height(), 16), 1);
+  glBindImageTexture(IMAGE_OUTPUT, box_filtered_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glDispatchCompute(groups(sat.width(), 16), groups(sat.height(), 16),
+                    static_cast<GLuint>(sat.layers()));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   return box_filtered_;
 }

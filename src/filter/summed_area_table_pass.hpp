@@ -1,8 +1,8 @@
 #pragma once
 // Summed-area table of a light's map, in 32-bit fixed point with
-// wrap-around sums (shaders/filter/sat*.glsl): rows, then columns.
+// wrap-around sums (shaders/filter/sat*.glsl): rows, then columns. Works on
+// 2D array textures, one table per layer (shadow view).
 #include <map>
-#include <vector>
 
 #include "core/settings.hpp"
 #include "gl/gpu_profiler.hpp"
@@ -20,21 +20,21 @@ double sat_fixed_point_scale();
 
 class SummedAreaTablePass {
  public:
-  // Builds light `light`'s table from `source` (values in [0, 1]).
-  void execute(int light, const gl::Texture& source, gl::GpuProfiler* profiler = nullptr);
+  // Builds the table of every layer of the 2D array `source` (values in [0, 1]).
+  void execute(const gl::Texture& source, gl::GpuProfiler* profiler = nullptr);
 
-  // Valid after execute() for that light: an unsigned-integer texture.
-  [[nodiscard]] const gl::Texture& table(int light) const { return tables_.at(light); }
+  // Valid after execute(): an unsigned-integer 2D array.
+  [[nodiscard]] const gl::Texture& table() const { return table_; }
 
   // Box averages of every texel, (2 radius + 1)^2 boxes cropped to the map,
-  // read from light `light`'s table: RGBA32F. For views and tests.
-  const gl::Texture& box_filtered(int light, int radius);
+  // read from the table: an RGBA32F 2D array. For views and tests.
+  const gl::Texture& box_filtered(int radius);
 
  private:
   const gl::Program& program(const char* path, GLenum format);
 
   std::map<std::pair<std::string, GLenum>, gl::Program> programs_;
-  std::vector<gl::Texture> tables_;
+  gl::Texture table_;
   gl::Texture box_filtered_;
 };
 

@@ -16,16 +16,21 @@ void TextureCopyPass::execute(const gl::Texture& source) {
              .first;
   }
   if (!output_ || output_.width() != source.width() || output_.height() != source.height() ||
-      output_.format() != format) {
-    output_ = gl::Texture(gl::TextureInfo{
-        .format = format, .width = source.width(), .height = source.height(), .label = "copy"});
+      output_.layers() != source.layers() || output_.format() != format) {
+    output_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                          .format = format,
+                                          .width = source.width(),
+                                          .height = source.height(),
+                                          .layers = source.layers(),
+                                          .label = "copy"});
   }
   it->second.use();
   glBindTextureUnit(UNIT_COMPUTE_INPUT, source.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
-  glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+  glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
   glDispatchCompute(static_cast<GLuint>((source.width() + 15) / 16),
-                    static_cast<GLuint>((source.height() + 15) / 16), 1);
+                    static_cast<GLuint>((source.height() + 15) / 16),
+                    static_cast<GLuint>(source.layers()));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 

@@ -2,6 +2,7 @@
 // A compute copy of a texture (shaders/filter/copy.comp): one read and one
 // write per texel, the bandwidth yardstick the filter passes are measured
 // against. Depth maps are copied into R32F (the same bytes per texel).
+// Copies every layer of a 2D array.
 #include <map>
 
 #include "gl/program.hpp"

@@ -30,7 +30,7 @@ void Buffer::update(const void* data, std::size_t size, std::size_t offset) {
 }
 
 Texture::Texture(const TextureInfo& info)
-    : width_(info.width), height_(info.height), format_(info.format) {
+    : width_(info.width), height_(info.height), layers_(info.layers), format_(info.format) {
   GLuint id = 0;
   glCreateTextures(info.target, 1, &id);
   handle_ = Handle<detail::delete_texture>(id);
@@ -74,6 +74,10 @@ void Framebuffer::attach_color(int index, const Texture& texture, int level) {
 
 void Framebuffer::attach_depth(const Texture& texture, int level) {
   glNamedFramebufferTexture(handle_.id(), GL_DEPTH_ATTACHMENT, texture.id(), level);
+}
+
+void Framebuffer::attach_depth_layer(const Texture& texture, int layer, int level) {
+  glNamedFramebufferTextureLayer(handle_.id(), GL_DEPTH_ATTACHMENT, texture.id(), level, layer);
 }
 
 void Framebuffer::set_draw_buffers(int count) {

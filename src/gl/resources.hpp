@@ -71,6 +71,7 @@ class Texture {
   [[nodiscard]] GLuint id() const { return handle_.id(); }
   [[nodiscard]] int width() const { return width_; }
   [[nodiscard]] int height() const { return height_; }
+  [[nodiscard]] int layers() const { return layers_; }
   [[nodiscard]] GLenum format() const { return format_; }
   [[nodiscard]] explicit operator bool() const { return static_cast<bool>(handle_); }
 
@@ -78,6 +79,7 @@ class Texture {
   Handle<detail::delete_texture> handle_;
   int width_ = 0;
   int height_ = 0;
+  int layers_ = 0;
   GLenum format_ = 0;
 };
 
@@ -88,6 +90,8 @@ class Framebuffer {
 
   void attach_color(int index, const Texture& texture, int level = 0);
   void attach_depth(const Texture& texture, int level = 0);
+  // One layer of an array texture as the depth attachment.
+  void attach_depth_layer(const Texture& texture, int layer, int level = 0);
   // Selects which color attachments fragment outputs 0..n-1 write to.
   void set_draw_buffers(int count);
   // Throws RuntimeError naming the framebuffer if it is incomplete.

@@ -39,6 +39,24 @@ std::uint32_t hash_pixel(std::uint32_t x) {
   return x;
 }
 
+// A point of the unit disk from a point of the unit square, area-uniform
+// and keeping strata apart (Shirley & Chiu, "A Low Distortion Map Between
+// Disk and Square", JGT 1997: concentric squares to concentric circles).
+glm::vec2 concentric_disk(glm::vec2 u) {
+  const glm::vec2 a = 2.0f * u - 1.0f;
+  if (a.x == 0.0f && a.y == 0.0f) return glm::vec2(0.0f);
+  const float quarter_pi = 0.78539816f;
+  float r = 0.0f, phi = 0.0f;
+  if (std::abs(a.x) > std::abs(a.y)) {
+    r = a.x;
+    phi = quarter_pi * (a.y / a.x);
+  } else {
+    r = a.y;
+    phi = 2.0f * quarter_pi - quarter_pi * (a.x / a.y);
+  }
+  return r * glm::vec2(std::cos(phi), std::sin(phi));
+}
+
 bool occluded(RTCScene scene, const glm::vec3& origin, const glm::vec3& direction, float tfar) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -71,8 +89,9 @@ ReferenceLight make_reference_light(const Light& light, const LightView& view,
   // space.
   r.axis_u = glm::normalize(glm::vec3(view.view[0][0], view.view[1][0], view.view[2][0]));
   r.axis_v = glm::normalize(glm::vec3(view.view[0][1], view.view[1][1], view.view[2][1]));
-  r.size = light.type == LightType::Spot ? settings.light_size
-                                         : 2.0f * std::tan(glm::radians(0.5f * settings.sun_angle));
+  r.size = light.type != LightType::Directional
+               ? settings.light_size
+               : 2.0f * std::tan(glm::radians(0.5f * settings.sun_angle));
   r.cos_cone = light.type == LightType::Spot ? std::cos(glm::radians(light.cone_degrees)) : -1.0f;
   return r;
 }
@@ -132,6 +151,8 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
   const int width = surfaces.width, height = surfaces.height;
   Image image(width, height);
   const bool spot = light.type == LightType::Spot;
+  const bool positional = light.type != LightType::Directional;
+  const bool sphere = light.type == LightType::Point;
   const bool area = light.size > 0.0f;
   const auto count = static_cast<std::uint32_t>(area ? std::max(samples, 1) : 1);
   const float infinity = std::numeric_limits<float>::infinity();
@@ -140,14 +161,28 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
   // Visible fraction of the light from point p with normal n.
   auto visibility = [&](const glm::vec3& p, const glm::vec3& n, std::uint32_t pattern) {
     const glm::vec3 origin = p + ray_offset_ * n;
+    // A sphere seen from p is a disk facing p: sample that disk (its
+    // projected solid angle differs from the disk's by O((r/d)^2)).
+    glm::vec3 axis_u = light.axis_u, axis_v = light.axis_v;
+    if (sphere) {
+      const glm::vec3 w = glm::normalize(light.position - p);
+      const glm::vec3 helper =
+          std::abs(w.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+      axis_u = glm::normalize(glm::cross(w, helper));
+      axis_v = glm::cross(w, axis_u);
+    }
     std::uint32_t visible = 0;
     for (std::uint32_t s = 0; s < count; ++s) {
       glm::vec2 offset(0.0f);
-      if (area) offset = (cmj_sample(s, count, pattern) - 0.5f) * light.size;
-      const glm::vec3 across = offset.x * light.axis_u + offset.y * light.axis_v;
+      if (area && sphere) {
+        offset = concentric_disk(cmj_sample(s, count, pattern)) * (0.5f * light.size);
+      } else if (area) {
+        offset = (cmj_sample(s, count, pattern) - 0.5f) * light.size;
+      }
+      const glm::vec3 across = offset.x * axis_u + offset.y * axis_v;
       glm::vec3 to_light;
       float distance = infinity;
-      if (spot) {
+      if (positional) {
         to_light = light.position + across - p;
         distance = glm::length(to_light);
         to_light /= distance;
@@ -156,7 +191,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       }
       // The surface hides the part of the light below its tangent plane.
       if (glm::dot(n, to_light) <= 0.0f) continue;
-      if (spot) distance = glm::length(light.position + across - origin);
+      if (positional) distance = glm::length(light.position + across - origin);
       if (!occluded(scene_, origin, to_light, distance)) ++visible;
     }
     return static_cast<float>(visible) / static_cast<float>(count);

@@ -29,14 +29,15 @@ namespace penumbra {
 // A light as the tracer samples it.
 struct ReferenceLight {
   LightType type = LightType::Spot;
-  glm::vec3 position{0.0f};                // spot: the centre of the light
+  glm::vec3 position{0.0f};                // spot, point: the centre of the light
   glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit: the way the light shines
   // Unit axes of the light's square, perpendicular to `direction`: the
   // shadow map's x and y, so the square lines up with the map's texels.
   glm::vec3 axis_u{1.0f, 0.0f, 0.0f};
   glm::vec3 axis_v{0.0f, 0.0f, 1.0f};
-  // Spot: the square's width in world units. Directional: the square of
-  // directions' width at unit distance (2 tan(angular width / 2)). 0: a point.
+  // Spot: the square's width in world units. Point: the diameter of a
+  // spherical source. Directional: the square of directions' width at unit
+  // distance (2 tan(angular width / 2)). 0: a point.
   float size = 0.0f;
   // Spot: cos of the cone's half-angle; points outside the cone receive no
   // light, so their shadow is not judged (alpha 0). -1: no cone.
@@ -45,7 +46,8 @@ struct ReferenceLight {
 
 // The scene's light with the source size the techniques give it (as PCSS
 // models it, shaders/shadow/penumbra.glsl): a spot light's square is
-// `light_size` wide; a directional light's square of directions is
+// `light_size` wide, a point light's sphere `light_size` in diameter; a
+// directional light's square of directions is
 // 2 tan(sun_angle / 2) wide at unit distance. Oriented like its fitted
 // shadow map.
 ReferenceLight make_reference_light(const Light& light, const LightView& view,

@@ -38,13 +38,12 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
-  // The albedo target is sRGB-encoded (8 bits where the eye needs them);
-  // with GL_FRAMEBUFFER_SRGB the linear albedo the shader writes is encoded
-  // on the way in, as sampling decodes it on the way out. Without it the
-  // linear value would be stored as if it were encoded, and read back as
-  // albedo^2.2.
-  glEnable(GL_FRAMEBUFFER_SRGB);
   program_.use();
+  // The albedo target is sRGB8: with GL_FRAMEBUFFER_SRGB on, the linear
+  // albedo the shader writes is encoded on the way in, and sampling decodes
+  // it back (OpenGL 4.5, section 17.3.7). Off, the linear value would be
+  // stored as if encoded and read back as albedo^2.2.
+  glEnable(GL_FRAMEBUFFER_SRGB);
   scene.draw();
   glDisable(GL_FRAMEBUFFER_SRGB);
   glPopDebugGroup();

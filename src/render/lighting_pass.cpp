@@ -33,11 +33,9 @@ const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
   return it->second;
 }
 
-void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shadows,
-                           const std::array<GLuint, 4>& filtered_maps, int light_count,
-                           const ShadowSettings& settings, GLuint ambient_occlusion, int width,
-                           int height) {
-  static_assert(MAX_LIGHTS == 4);
+void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_maps,
+                           GLuint filtered_maps, const ShadowSettings& settings,
+                           GLuint ambient_occlusion, int width, int height) {
   if (width != width_ || height != height_) {
     output_ = gl::Texture(gl::TextureInfo{
         .format = GL_RGBA32F, .width = width, .height = height, .label = "lighting output"});
@@ -62,23 +60,16 @@ void LightingPass::execute(const GBufferPass& gbuffer, const ShadowMapPass& shad
   for (int unit = UNIT_GBUFFER_DEPTH; unit <= UNIT_AMBIENT_OCCLUSION; ++unit) {
     glBindSampler(static_cast<GLuint>(unit), nearest_.id());
   }
-  // Lights beyond the maps rendered (none for Technique::None) are never
-  // read; their units get map 0 or nothing.
-  const int maps = std::min(shadows.map_count(), light_count);
-  for (int i = 0; i < MAX_LIGHTS; ++i) {
-    const GLuint unit = static_cast<GLuint>(UNIT_SHADOW_DEPTH + i);
-    glBindTextureUnit(unit, maps > 0 ? shadows.depth_map(i < maps ? i : 0).id() : 0);
-    glBindSampler(unit, nearest_.id());
-    const GLuint compare_unit = static_cast<GLuint>(UNIT_SHADOW_COMPARE + i);
-    glBindTextureUnit(compare_unit, maps > 0 ? shadows.depth_map(i < maps ? i : 0).id() : 0);
-    glBindSampler(compare_unit, compare_.id());
-    // Filtered maps are sampled bilinearly (linear filters commute with
-    // the moments' linearity); integer tables are read with texelFetch.
-    const GLuint filtered_unit = static_cast<GLuint>(UNIT_SHADOW_FILTERED + i);
-    glBindTextureUnit(filtered_unit,
-                      filtered_maps[static_cast<std::size_t>(i < light_count ? i : 0)]);
-    glBindSampler(filtered_unit, filter_define(settings) == FILTER_SAT ? 0 : bilinear_.id());
-  }
+  // Without shadow maps (Technique::None) the shadow units are never read.
+  const GLuint depth = depth_maps != nullptr ? depth_maps->id() : 0;
+  glBindTextureUnit(UNIT_SHADOW_DEPTH, depth);
+  glBindSampler(UNIT_SHADOW_DEPTH, nearest_.id());
+  glBindTextureUnit(UNIT_SHADOW_COMPARE, depth);
+  glBindSampler(UNIT_SHADOW_COMPARE, compare_.id());
+  // Filtered maps are sampled bilinearly (linear filters commute with the
+  // moments' linearity); integer tables are read with texelFetch.
+  glBindTextureUnit(UNIT_SHADOW_FILTERED, filtered_maps);
+  glBindSampler(UNIT_SHADOW_FILTERED, filter_define(settings) == FILTER_SAT ? 0 : bilinear_.id());
   glBindVertexArray(empty_vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glPopDebugGroup();

@@ -1,7 +1,6 @@
 #pragma once
 // Full-screen deferred lighting into a 32-bit float target: the final
 // linear colour, or one of the debug views.
-#include <array>
 #include <map>
 #include <tuple>
 
@@ -9,7 +8,6 @@
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
 #include "render/gbuffer_pass.hpp"
-#include "shadow/shadow_map_pass.hpp"
 
 namespace penumbra {
 
@@ -17,13 +15,14 @@ class LightingPass {
  public:
   LightingPass();
 
-  // The frame, lights and shadow blocks must be bound. `filtered_maps[i]`
-  // is light i's filtered representation (a summed-area table for the sat
-  // filter), or 0 for techniques that read the depth map.
-  // `ambient_occlusion` is the AO texture at the G-buffer's size, read when
-  // the frame block's options.w is 1; 0 when there is none.
-  void execute(const GBufferPass& gbuffer, const ShadowMapPass& shadows,
-               const std::array<GLuint, 4>& filtered_maps, int light_count,
+  // The frame, lights, shadow-views and shadow blocks must be bound.
+  // `depth_maps` is the z-bar array of every shadow view (null when no
+  // shadow was rendered); `filtered_maps` their filtered representations
+  // (a summed-area-table array for the sat filter), or 0 for techniques
+  // that read the depth maps. `ambient_occlusion` is the AO texture at the
+  // G-buffer's size, read when the frame block's options.w is 1; 0 when
+  // there is none.
+  void execute(const GBufferPass& gbuffer, const gl::Texture* depth_maps, GLuint filtered_maps,
                const ShadowSettings& settings, GLuint ambient_occlusion, int width, int height);
 
   // RGBA32F: rgb as the view defines, alpha 1 where geometry was seen.

@@ -28,7 +28,7 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
     renderer.render(render, shadow, {}, &profiler);
     {
       gl::GpuPassScope timed(&profiler, GpuPass::BandwidthCopy);
-      copy.execute(renderer.shadow_map_texture(0));
+      copy.execute(renderer.shadow_maps());
     }
     profiler.end_frame();
     // Waiting here keeps frames from overlapping, so each pass is timed

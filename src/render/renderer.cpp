@@ -17,39 +17,65 @@
 
 namespace penumbra {
 
-static_assert(sizeof(gpu::GpuLight) == 3 * 64 + 5 * 16, "GpuLight must match std140");
+static_assert(sizeof(gpu::GpuLight) == 6 * 16, "GpuLight must match std140");
+static_assert(sizeof(gpu::GpuShadowView) == 3 * 64 + 2 * 16, "GpuShadowView must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
 static_assert(sizeof(gpu::GpuShadow) == 64, "GpuShadow must match std140");
 
 namespace {
 
-gpu::GpuLight to_gpu(const Light& light, const LightView& view, const ShadowSettings& shadow) {
+int light_type_define(LightType type) {
+  switch (type) {
+    case LightType::Spot:
+      return LIGHT_SPOT;
+    case LightType::Directional:
+      return LIGHT_DIRECTIONAL;
+    case LightType::Point:
+      return LIGHT_POINT;
+  }
+  return LIGHT_SPOT;
+}
+
+gpu::GpuLight to_gpu(const Light& light, const LightShadowViews& views, int first_view,
+                     const ShadowSettings& shadow) {
   gpu::GpuLight g{};
-  g.view = view.view;
-  g.view_projection = view.view_projection;
-  g.inverse_view_projection = glm::inverse(view.view_projection);
-  const bool spot = light.type == LightType::Spot;
-  g.position_type = glm::vec4(light.position, spot ? LIGHT_SPOT : LIGHT_DIRECTIONAL);
+  g.position_type = glm::vec4(light.position, light_type_define(light.type));
   g.direction_cos_outer =
       glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.cone_degrees)));
   const float inner = std::min(light.inner_cone_degrees, light.cone_degrees - 0.01f);
   g.radiance_cos_inner = glm::vec4(light.color * light.intensity, std::cos(glm::radians(inner)));
-  g.depth_range =
-      glm::vec4(view.z0, view.z1, view.texel_world, static_cast<float>(shadow.map_size));
-  const float source =
-      spot ? shadow.light_size : 2.0f * std::tan(glm::radians(0.5f * shadow.sun_angle));
-  g.source = glm::vec4(source, 0.0f, 0.0f, 0.0f);
+  g.views = glm::ivec4(first_view, static_cast<int>(views.views.size()), 0, 0);
+  for (std::size_t c = 0; c < views.cascade_end.size() && c < MAX_CASCADES; ++c) {
+    g.cascade_end[static_cast<int>(c)] = views.cascade_end[c];
+  }
+  g.cascade_blend = glm::vec4(shadow.cascade_blend, views.cascade_start, 0.0f, 0.0f);
   return g;
 }
 
-Image read_texture(GLuint texture, int width, int height, GLenum format) {
+gpu::GpuShadowView to_gpu(const Light& light, const LightView& view, const ShadowSettings& shadow) {
+  gpu::GpuShadowView g{};
+  g.view = view.view;
+  g.view_projection = view.view_projection;
+  g.inverse_view_projection = glm::inverse(view.view_projection);
+  g.depth_range =
+      glm::vec4(view.z0, view.z1, view.texel_world, static_cast<float>(shadow.map_size));
+  g.source_width = light.type == LightType::Directional
+                       ? 2.0f * std::tan(glm::radians(0.5f * shadow.sun_angle))
+                       : shadow.light_size;
+  g.perspective = view.perspective ? 1 : 0;
+  g.radial_depth = view.radial ? 1 : 0;
+  return g;
+}
+
+// One layer (0 for a 2D texture) of a texture as an image.
+Image read_texture(GLuint texture, int width, int height, GLenum format, int layer = 0) {
   Image image(width, height);
   std::vector<float> raw(static_cast<std::size_t>(width) * height * 4);
   const GLenum component = format == GL_DEPTH_COMPONENT ? GL_DEPTH_COMPONENT : GL_RGBA;
   const std::size_t channels = component == GL_DEPTH_COMPONENT ? 1 : 4;
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(texture, 0, component, GL_FLOAT,
-                    static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
+  glGetTextureSubImage(texture, 0, 0, 0, layer, width, height, 1, component, GL_FLOAT,
+                       static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
   // GL rows run bottom to top; images run top to bottom.
   for (int y = 0; y < height; ++y) {
     const float* src = raw.data() + static_cast<std::size_t>(height - 1 - y) * width * channels;
@@ -78,6 +104,8 @@ int view_define(View view) {
       return VIEW_ALBEDO;
     case View::Ao:
       return VIEW_AO;
+    case View::Cascades:
+      return VIEW_CASCADES;
     default:
       return VIEW_FINAL;
   }
@@ -97,6 +125,8 @@ Renderer::Renderer(const Scene& scene)
       frame_ubo_(sizeof(gpu::GpuFrame), nullptr, true, "frame block"),
       lights_ubo_(sizeof(gpu::GpuLight) * MAX_LIGHTS, nullptr, true, "lights block"),
       shadow_ubo_(sizeof(gpu::GpuShadow), nullptr, true, "shadow block"),
+      views_ubo_(sizeof(gpu::GpuShadowView) * MAX_SHADOW_VIEWS, nullptr, true,
+                 "shadow views block"),
       reference_weights_(sizeof(float) * (2 * kMaxBlur + 1), nullptr, true,
                          "reference filter weights"),
       poisson_(gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
@@ -116,7 +146,8 @@ glm::mat4 Renderer::camera_view() const {
   return glm::lookAt(scene_.camera.position, scene_.camera.target, scene_.camera.up);
 }
 
-glm::mat4 Renderer::camera_projection(int width, int height) const {
+void Renderer::camera_depth_range(int width, int height, float& near_plane,
+                                  float& far_plane) const {
   // Near and far planes hug the geometry inside the view frustum, so depth
   // precision is not wasted: the nearest bounding-box corner is often
   // behind the camera, and a near plane at 1e-4 of the far one put the
@@ -131,9 +162,25 @@ glm::mat4 Renderer::camera_projection(int width, int height) const {
     zmin = 0.1f;  // nothing in view
     zmax = 1.0f;
   }
-  const float far_plane = std::max(zmax * 1.01f, 1e-2f);
-  const float near_plane = std::max(zmin * 0.99f, far_plane * 1e-4f);
-  return glm::perspective(fov_y, aspect, near_plane, far_plane);
+  far_plane = std::max(zmax * 1.01f, 1e-2f);
+  near_plane = std::max(zmin * 0.99f, far_plane * 1e-4f);
+}
+
+glm::mat4 Renderer::camera_projection(int width, int height) const {
+  float near_plane = 0.0f, far_plane = 0.0f;
+  camera_depth_range(width, height, near_plane, far_plane);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  return glm::perspective(glm::radians(scene_.camera.fov_y_degrees), aspect, near_plane, far_plane);
+}
+
+CameraFrustum Renderer::camera_frustum(int width, int height) const {
+  CameraFrustum c;
+  c.position = scene_.camera.position;
+  c.forward = glm::normalize(scene_.camera.target - scene_.camera.position);
+  c.fov_y = glm::radians(scene_.camera.fov_y_degrees);
+  c.aspect = static_cast<float>(width) / static_cast<float>(height);
+  camera_depth_range(width, height, c.near_plane, c.far_plane);
+  return c;
 }
 
 void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow,
@@ -172,19 +219,33 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   last_render_ = render;
   last_shadow_ = shadow;
 
-  // Per-frame blocks.
+  // Per-frame blocks: each light's shadow views, fitted to the scene (and
+  // a directional light's cascades to the camera), numbered across lights.
+  const CameraFrustum camera = camera_frustum(render.width, render.height);
   gpu::GpuLight lights[MAX_LIGHTS] = {};
+  gpu::GpuShadowView views[MAX_SHADOW_VIEWS] = {};
   light_views_.clear();
+  first_views_.clear();
+  view_count_ = 0;
   for (int i = 0; i < light_count; ++i) {
     const Light& light = scene_.lights[static_cast<std::size_t>(i)];
-    light_views_.push_back(fit_light_view(light, mesh_, shadow.map_size));
-    lights[i] = to_gpu(light, light_views_.back(), shadow);
+    light_views_.push_back(fit_shadow_views(light, mesh_, camera, shadow));
+    const LightShadowViews& fitted = light_views_.back();
+    first_views_.push_back(view_count_);
+    lights[i] = to_gpu(light, fitted, view_count_, shadow);
+    for (const LightView& view : fitted.views) {
+      if (view_count_ >= MAX_SHADOW_VIEWS) throw std::logic_error("too many shadow views");
+      views[view_count_++] = to_gpu(light, view, shadow);
+    }
   }
   lights_ubo_.update(lights, sizeof lights);
+  views_ubo_.update(views, sizeof views);
 
   gpu::GpuFrame frame{};
   frame.view = camera_view();
-  frame.projection = camera_projection(render.width, render.height);
+  // camera_projection(), from the planes camera_frustum() already fitted.
+  frame.projection =
+      glm::perspective(camera.fov_y, camera.aspect, camera.near_plane, camera.far_plane);
   frame.inverse_view_projection = glm::inverse(frame.projection * frame.view);
   frame.camera_position = glm::vec4(scene_.camera.position, 1.0f);
   frame.viewport = glm::vec4(render.width, render.height, 1.0f / static_cast<float>(render.width),
@@ -218,31 +279,45 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_LIGHTS_UBO, lights_ubo_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_UBO, shadow_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_VIEWS_UBO, views_ubo_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, poisson_.id());
 
-  if (shadow.technique != Technique::None || is_map_view(render.view)) {
+  const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
+  if (shadows) {
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
-    shadow_pass_.execute(gpu_scene_, light_count, shadow.map_size);
+    shadow_pass_.execute(gpu_scene_, view_count_, shadow.map_size);
   }
-  std::array<GLuint, MAX_LIGHTS> filtered{};
+  GLuint filtered = 0;
   if (is_filterable(shadow.technique)) {
-    const int filter = filter_define(shadow);
-    for (int i = 0; i < light_count; ++i) {
-      {
-        gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
-        resolve_pass_.execute(i, shadow_pass_.depth_map(i), shadow);
-      }
-      const gl::Texture& representation = resolve_pass_.representation(i);
-      GLuint map = representation.id();
-      if (filter == FILTER_GAUSSIAN) {
-        blur_pass_.execute(i, representation, shadow.blur, profiler);
-        map = blur_pass_.output(i).id();
-      } else if (filter == FILTER_SAT) {
-        sat_pass_.execute(i, representation, profiler);
-        map = sat_pass_.table(i).id();
-      }
-      filtered[static_cast<std::size_t>(i)] = map;
+    {
+      gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
+      resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
     }
+    const gl::Texture& representation = resolve_pass_.representation();
+    filtered = representation.id();
+    const int filter = filter_define(shadow);
+    if (filter == FILTER_GAUSSIAN) {
+      blur_pass_.execute(representation, shadow.blur, profiler);
+      filtered = blur_pass_.output().id();
+    } else if (filter == FILTER_SAT) {
+      sat_pass_.execute(representation, profiler);
+      filtered = sat_pass_.table().id();
+    }
+  }
+  if (is_map_view(render.view)) {
+    const gl::Texture* maps = &shadow_pass_.depth_maps();
+    if (render.view != View::ShadowMap) {
+      maps = &resolve_pass_.representation();
+      const int filter = filter_define(shadow);
+      if (render.view == View::MomentsFiltered && filter == FILTER_GAUSSIAN) {
+        maps = &blur_pass_.output();
+      } else if (render.view == View::MomentsFiltered && filter == FILTER_SAT) {
+        maps = &sat_pass_.box_filtered(shadow.blur);
+      }
+    }
+    const auto light = static_cast<std::size_t>(render.light_index);
+    tiling_pass_.execute(*maps, first_views_[light],
+                         static_cast<int>(light_views_[light].views.size()));
   }
   if (render.view == View::ShadowReference) {
     // The kernel the filter applies, as 1D weights for the reference's
@@ -270,27 +345,19 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       ao = ssao_pass_.output().id();
     }
     gl::GpuPassScope timed(profiler, gl::GpuPass::Lighting);
-    lighting_pass_.execute(gbuffer_pass_, shadow_pass_, filtered, light_count, shadow, ao,
-                           render.width, render.height);
+    lighting_pass_.execute(gbuffer_pass_, shadows ? &shadow_pass_.depth_maps() : nullptr, filtered,
+                           shadow, ao, render.width, render.height);
   }
 }
 
 ViewSource Renderer::view_source() {
-  const int light = last_render_.light_index;
   const View view = last_render_.view;
-  if (view == View::ShadowMap) return {&shadow_pass_.depth_map(light), ViewEncoding::Depth};
+  if (view == View::ShadowMap) return {&tiling_pass_.output(), ViewEncoding::Depth};
   if (view == View::Moments || view == View::MomentsFiltered) {
-    const gl::Texture* map = &resolve_pass_.representation(light);
-    const int filter = filter_define(last_shadow_);
-    if (view == View::MomentsFiltered && filter == FILTER_GAUSSIAN) {
-      map = &blur_pass_.output(light);
-    } else if (view == View::MomentsFiltered && filter == FILTER_SAT) {
-      map = &sat_pass_.box_filtered(light, last_shadow_.blur);
-    }
     if (last_shadow_.technique == Technique::Esm) {
-      return {map, ViewEncoding::EsmLog, last_shadow_.esm_c};
+      return {&tiling_pass_.output(), ViewEncoding::EsmLog, last_shadow_.esm_c};
     }
-    return {map, ViewEncoding::Data};
+    return {&tiling_pass_.output(), ViewEncoding::Data};
   }
   return {&lighting_pass_.output(),
           view == View::Final ? ViewEncoding::LinearColor : ViewEncoding::Data};
@@ -299,10 +366,14 @@ ViewSource Renderer::view_source() {
 Image Renderer::read_view() {
   const ViewSource source = view_source();
   const gl::Texture& map = *source.texture;
-  if (source.encoding == ViewEncoding::Depth) {
-    return read_texture(map.id(), map.width(), map.height(), GL_DEPTH_COMPONENT);
-  }
   Image image = read_texture(map.id(), map.width(), map.height(), GL_RGBA);
+  if (source.encoding == ViewEncoding::Depth) {
+    // The tiled depth maps hold z-bar in red: grey, as a depth texture reads.
+    for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
+      image.rgba[p + 1] = image.rgba[p + 2] = image.rgba[p];
+      image.rgba[p + 3] = 1.0f;
+    }
+  }
   if (source.encoding == ViewEncoding::EsmLog) {
     // log(map) / c + 1 is the occluder depth for an unfiltered map; after
     // the blur it is log(blur(exp(c z))) / c + 1, which is not blur(z).
@@ -341,14 +412,15 @@ SurfacePoints Renderer::read_surfaces() const {
   return surfaces;
 }
 
-const gl::Texture& Renderer::shadow_map_texture(int light) const {
-  return is_filterable(last_shadow_.technique) ? resolve_pass_.representation(light)
-                                               : shadow_pass_.depth_map(light);
+const gl::Texture& Renderer::shadow_maps() const {
+  return is_filterable(last_shadow_.technique) ? resolve_pass_.representation()
+                                               : shadow_pass_.depth_maps();
 }
 
-Image Renderer::read_shadow_map(int light) const {
-  const gl::Texture& map = shadow_pass_.depth_map(light);
-  return read_texture(map.id(), map.width(), map.height(), GL_DEPTH_COMPONENT);
+Image Renderer::read_shadow_view(int view) const {
+  const gl::Texture& maps = shadow_pass_.depth_maps();
+  if (view < 0 || view >= maps.layers()) throw std::out_of_range("no such shadow view");
+  return read_texture(maps.id(), maps.width(), maps.height(), GL_DEPTH_COMPONENT, view);
 }
 
 }  // namespace penumbra

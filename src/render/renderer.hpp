@@ -16,11 +16,13 @@
 #include "render/lighting_pass.hpp"
 #include "render/ssao_pass.hpp"
 #include "render/surface_points.hpp"
+#include "render/view_tiling_pass.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 #include "shadow/light_view.hpp"
 #include "shadow/moment_resolve_pass.hpp"
 #include "shadow/shadow_map_pass.hpp"
+#include "shadow/shadow_views.hpp"
 #include "shared/bindings.h"
 
 namespace penumbra {
@@ -59,24 +61,27 @@ class Renderer {
               const SsaoSettings& ssao = {}, gl::GpuProfiler* profiler = nullptr);
 
   // The view chosen in the last render(): the lighting pass's output for
-  // camera views; for map views, the light's z-bar map (shadow-map) or its
-  // representation before or after the filter (moments,
-  // moments-filtered; for esm shown as log(map)/c + 1, in depth units).
+  // camera views; for map views, the light's z-bar maps (shadow-map) or
+  // their representation before or after the filter (moments,
+  // moments-filtered; for esm shown as log(map)/c + 1, in depth units),
+  // the light's shadow views tiled three to a row (ViewTilingPass).
   // The ao view is the AO texture as the lighting pass reads it.
   [[nodiscard]] Image read_view();
   // The texture read_view() reads, left on the GPU (a window shows it),
   // and how its values are encoded. Valid until the next render().
   [[nodiscard]] ViewSource view_source();
-  // Light i's shadow map (z-bar in every channel), as last rendered.
-  [[nodiscard]] Image read_shadow_map(int light) const;
+  // Shadow view v's map (z-bar in every channel; v indexes all lights'
+  // views, see first_view()), as last rendered.
+  [[nodiscard]] Image read_shadow_view(int view) const;
   // The world positions and normals the last render()'s camera view shaded,
   // rebuilt from the G-buffer depth (through the inverse view-projection,
   // in double) and normals. Throws std::logic_error after a map view.
   [[nodiscard]] SurfacePoints read_surfaces() const;
 
-  // Light i's map as the filters see it: the technique's representation
-  // for vsm/esm/msm/msm16, the z-bar depth map otherwise. As last rendered.
-  [[nodiscard]] const gl::Texture& shadow_map_texture(int light) const;
+  // Every shadow view's map as the filters see it, one layer per view: the
+  // technique's representation for vsm/esm/msm/msm16, the z-bar depth maps
+  // otherwise. As last rendered.
+  [[nodiscard]] const gl::Texture& shadow_maps() const;
 
   // The camera and the lights may change between frames (the viewer moves
   // them); the geometry is fixed at construction. set_lights throws
@@ -88,9 +93,22 @@ class Renderer {
   [[nodiscard]] const TriangleMesh& mesh() const { return mesh_; }
   // The camera's G-buffer, as last rendered.
   [[nodiscard]] const GBufferPass& gbuffer() const { return gbuffer_pass_; }
-  [[nodiscard]] const LightView& light_view(int light) const { return light_views_.at(light); }
+  // Light i's shadow views as last fitted, and the index of its first one
+  // among all lights' views (its layer in the shadow-map arrays).
+  [[nodiscard]] const LightShadowViews& shadow_views(int light) const {
+    return light_views_.at(light);
+  }
+  [[nodiscard]] int first_view(int light) const { return first_views_.at(light); }
+  // Light i's first shadow view (its only one for a spot light).
+  [[nodiscard]] const LightView& light_view(int light) const {
+    return light_views_.at(light).views.front();
+  }
+  // The camera as the cascades follow it, for an image of this size.
+  [[nodiscard]] CameraFrustum camera_frustum(int width, int height) const;
   [[nodiscard]] glm::mat4 camera_view() const;
   [[nodiscard]] glm::mat4 camera_projection(int width, int height) const;
+  // Near and far planes of camera_projection().
+  void camera_depth_range(int width, int height, float& near_plane, float& far_plane) const;
 
  private:
   Scene scene_;
@@ -104,10 +122,13 @@ class Renderer {
   GBufferPass gbuffer_pass_;
   SsaoPass ssao_pass_;
   LightingPass lighting_pass_;
-  gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_;
+  ViewTilingPass tiling_pass_;
+  gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_, views_ubo_;
   gl::Buffer reference_weights_;
   gl::Buffer poisson_;  // the PCF/PCSS sample set (std430 vec2 array)
-  std::vector<LightView> light_views_;
+  std::vector<LightShadowViews> light_views_;
+  std::vector<int> first_views_;
+  int view_count_ = 0;
   RenderSettings last_render_;
   ShadowSettings last_shadow_;
   glm::mat4 last_view_projection_{1.0f};

@@ -78,6 +78,7 @@ class Study {
     f.caption = caption;
     f.command = shell_command(render_command_args({.scene_argument = options_.scene_argument,
                                                    .model_argument = options_.model_argument,
+                                                   .light = options_.light_choice,
                                                    .render = render,
                                                    .shadow = shadow,
                                                    .ssao = {},

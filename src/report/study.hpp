@@ -14,6 +14,7 @@ namespace penumbra {
 struct StudyOptions {
   std::string scene_argument = "default";  // as given on the command line
   std::string model_argument;              // --model as given, instead of the scene
+  std::string light_choice;                // --light as given (empty: not given)
   std::string output_dir;
   bool quick = false;  // smaller images and fewer sweeps
 };

@@ -2,10 +2,15 @@
 // A static scene: materials, shapes placed with transforms, a camera and
 // lights. Shapes are described by their parameters; mesh.hpp turns them
 // into world-space triangles.
+#include <array>
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <utility>
+
 #include <vector>
+#include "core/enum_names.hpp"
 
 namespace penumbra {
 
@@ -49,14 +54,22 @@ struct Camera {
   float fov_y_degrees = 45.0f;
 };
 
-enum class LightType { Spot, Directional };
+enum class LightType { Spot, Directional, Point };
+
+inline constexpr std::array<std::pair<LightType, std::string_view>, 3> kLightTypeNames{{
+    {LightType::Spot, "spot"},
+    {LightType::Directional, "directional"},
+    {LightType::Point, "point"},
+}};
 
 struct Light {
   LightType type = LightType::Spot;
-  glm::vec3 position{0.0f, 10.0f, 0.0f};   // spot only
-  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way the light shines
+  glm::vec3 position{0.0f, 10.0f, 0.0f};   // spot and point
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // spot and directional: the way the light shines
   glm::vec3 color{1.0f};                   // linear RGB
-  float intensity = 1.0f;  // spot: radiant intensity (irradiance at 1 m); directional: irradiance
+  // spot, point: radiant intensity (irradiance at 1 m, falling off as 1 / d^2);
+  // directional: irradiance
+  float intensity = 1.0f;
   float cone_degrees = 35.0f;        // spot: half-angle where the light ends
   float inner_cone_degrees = 28.0f;  // spot: half-angle where the fall-off starts
 };

@@ -127,10 +127,13 @@ Light read_light(Reader r) {
     l.type = LightType::Spot;
   } else if (type == "directional") {
     l.type = LightType::Directional;
+  } else if (type == "point") {
+    l.type = LightType::Point;
   } else {
-    r.fail(r.child("type"), "must be \"spot\" or \"directional\" (got \"" + type + "\")");
+    r.fail(r.child("type"),
+           "must be \"spot\", \"directional\" or \"point\" (got \"" + type + "\")");
   }
-  if (l.type == LightType::Spot) l.position = r.vec3("position", l.position);
+  if (l.type != LightType::Directional) l.position = r.vec3("position", l.position);
   if (r.has("target") && r.has("direction"))
     r.fail(r.child("target"), "give either \"target\" or \"direction\", not both");
   if (r.has("target")) {
@@ -139,7 +142,7 @@ Light read_light(Reader r) {
     if (glm::length(target - l.position) < 1e-6f)
       r.fail(r.child("target"), "must differ from the position");
     l.direction = glm::normalize(target - l.position);
-  } else {
+  } else if (l.type != LightType::Point) {  // a point light shines every way
     glm::vec3 d = r.vec3("direction", l.direction);
     if (glm::length(d) < 1e-6f) r.fail(r.child("direction"), "must not be zero");
     l.direction = glm::normalize(d);

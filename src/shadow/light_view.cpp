@@ -61,9 +61,13 @@ bool frustum_depth_range(const glm::mat4& view, float kx, float ky,
   return any;
 }
 
+float LightView::depth(const glm::vec3& world) const {
+  const glm::vec3 p = glm::vec3(view * glm::vec4(world, 1.0f));
+  return radial ? glm::length(p) : -p.z;
+}
+
 float LightView::relative_depth(const glm::vec3& world) const {
-  const float z = -(view * glm::vec4(world, 1.0f)).z;
-  return (z - z0) / (z1 - z0);
+  return (depth(world) - z0) / (z1 - z0);
 }
 
 LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,

@@ -16,6 +16,9 @@ struct LightView {
   glm::mat4 projection{1.0f};  // light view -> clip space
   glm::mat4 view_projection{1.0f};
   bool perspective = true;
+  // Depth z is the distance from the eye (a point light's cube faces, so
+  // that z-bar agrees across faces) rather than the depth along -z.
+  bool radial = false;
   float z0 = 0.0f;  // nearest light-space depth of the scene
   float z1 = 1.0f;  // farthest light-space depth of the scene
   // World size of one shadow-map texel: at unit depth for a perspective
@@ -24,6 +27,8 @@ struct LightView {
 
   // Relative depth z-bar of a world-space point.
   [[nodiscard]] float relative_depth(const glm::vec3& world) const;
+  // The depth z of a world-space point (see `radial`).
+  [[nodiscard]] float depth(const glm::vec3& world) const;
 };
 
 // Fits the light's shadow frustum to the scene's triangles: a spot light's

@@ -13,8 +13,7 @@ GLuint groups(int size, int local) {
 }
 }  // namespace
 
-void MomentResolvePass::execute(int light, const gl::Texture& depth_map,
-                                const ShadowSettings& settings) {
+void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);
   const auto key = std::make_pair(technique, uses_quantized_moments(settings));
@@ -25,23 +24,24 @@ void MomentResolvePass::execute(int light, const gl::Texture& depth_map,
                            {"IMAGE_FORMAT", image_format_qualifier(format)}};
     it = programs_.emplace(key, gl::Program::compute("filter/resolve.comp", defines)).first;
   }
-  const std::size_t index = static_cast<std::size_t>(light);
-  if (maps_.size() <= index) maps_.resize(index + 1);
-  gl::Texture& map = maps_[index];
-  if (!map || map.width() != depth_map.width() || map.format() != format) {
-    map = gl::Texture(gl::TextureInfo{.format = format,
-                                      .width = depth_map.width(),
-                                      .height = depth_map.height(),
-                                      .label = "shadow representation"});
+  if (!maps_ || maps_.width() != depth_maps.width() || maps_.height() != depth_maps.height() ||
+      maps_.layers() != depth_maps.layers() || maps_.format() != format) {
+    maps_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                        .format = format,
+                                        .width = depth_maps.width(),
+                                        .height = depth_maps.height(),
+                                        .layers = depth_maps.layers(),
+                                        .label = "shadow representations"});
   }
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve");
   it->second.use();
   glProgramUniform1f(it->second.id(), 0, settings.esm_c);
-  glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_map.id());
+  glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
-  glBindImageTexture(IMAGE_OUTPUT, map.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-  glDispatchCompute(groups(map.width(), 16), groups(map.height(), 16), 1);
+  glBindImageTexture(IMAGE_OUTPUT, maps_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+  glDispatchCompute(groups(maps_.width(), 16), groups(maps_.height(), 16),
+                    static_cast<GLuint>(maps_.layers()));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glPopDebugGroup();
 }

@@ -1,8 +1,7 @@
 #pragma once
-// Resolve (compute): a light's z-bar depth map -> the technique's filterable
-// representation (see representation.hpp).
+// Resolve (compute): the z-bar depth-map array -> the technique's filterable
+// representation (see representation.hpp), every layer (shadow view) at once.
 #include <map>
-#include <vector>
 
 #include "core/settings.hpp"
 #include "gl/program.hpp"
@@ -12,16 +11,16 @@ namespace penumbra {
 
 class MomentResolvePass {
  public:
-  // Writes light `light`'s representation. Textures are reallocated only
-  // when the size or format changes.
-  void execute(int light, const gl::Texture& depth_map, const ShadowSettings& settings);
+  // Writes the representation of every layer of `depth_maps`. The array is
+  // reallocated only when its size, layer count or format changes.
+  void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
 
-  // Valid after execute() for that light.
-  [[nodiscard]] const gl::Texture& representation(int light) const { return maps_.at(light); }
+  // A 2D array like the depth maps. Valid after execute().
+  [[nodiscard]] const gl::Texture& representation() const { return maps_; }
 
  private:
   std::map<std::pair<Technique, bool>, gl::Program> programs_;  // (technique, quantized)
-  std::vector<gl::Texture> maps_;
+  gl::Texture maps_;
 };
 
 }  // namespace penumbra

@@ -1,5 +1,7 @@
 #pragma once
-// Renders each light's relative depth z-bar into its own depth texture.
+// Renders the relative depth z-bar of every shadow view (the views of all
+// lights: see shadow/shadow_views.hpp) into the layers of one depth-texture
+// array.
 #include <vector>
 
 #include "gl/program.hpp"
@@ -12,19 +14,21 @@ class ShadowMapPass {
  public:
   ShadowMapPass();
 
-  // Draws the scene from lights 0..light_count-1 (the lights block must be
-  // bound). Maps are reallocated only when the count or size changes.
-  void execute(const GpuScene& scene, int light_count, int map_size);
+  // Draws the scene from views 0..view_count-1 of the shadow-views block
+  // (which must be bound), view i into layer i. The array is reallocated
+  // only when the view count or the size changes.
+  void execute(const GpuScene& scene, int view_count, int map_size);
 
-  // Light i's map: DEPTH_COMPONENT32F holding z-bar. Valid after execute().
-  [[nodiscard]] const gl::Texture& depth_map(int light) const { return maps_.at(light); }
+  // DEPTH_COMPONENT32F 2D array holding z-bar, one layer per view. Valid
+  // after execute().
+  [[nodiscard]] const gl::Texture& depth_maps() const { return maps_; }
   [[nodiscard]] int map_size() const { return size_; }
-  [[nodiscard]] int map_count() const { return static_cast<int>(maps_.size()); }
+  [[nodiscard]] int view_count() const { return static_cast<int>(framebuffers_.size()); }
 
  private:
   gl::Program program_;
-  std::vector<gl::Texture> maps_;
-  std::vector<gl::Framebuffer> framebuffers_;
+  gl::Texture maps_;
+  std::vector<gl::Framebuffer> framebuffers_;  // one per layer
   int size_ = 0;
 };
 

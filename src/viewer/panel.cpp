@@ -92,11 +92,11 @@ void light_section(ViewerState& state) {
   const int index =
       std::clamp(state.render.light_index, 0, static_cast<int>(state.lights.size()) - 1);
   Light light = state.lights[static_cast<std::size_t>(index)];
-  const bool spot = light.type == LightType::Spot;
-  ImGui::Text("light %d: %s", index, spot ? "spot" : "directional");
+  ImGui::Text("light %d: %s", index,
+              std::string(enum_name<LightType>(kLightTypeNames, light.type)).c_str());
   bool changed = false;
   for (const auto& p : kLightVectorParams) {
-    if (p.spot_only && !spot) continue;
+    if (!applies_to(p.scope, light.type)) continue;
     const std::string label(p.name);
     glm::vec3& v = light.*(p.field);
     if (p.field == &Light::color) {
@@ -107,7 +107,7 @@ void light_section(ViewerState& state) {
     tooltip(p.help);
   }
   for (const auto& p : kLightScalarParams) {
-    if (p.spot_only && !spot) continue;
+    if (!applies_to(p.scope, light.type)) continue;
     const std::string label(p.name);
     changed |= ImGui::SliderFloat(label.c_str(), &(light.*(p.field)), p.min,
                                   p.field == &Light::intensity ? 1000.0f : p.max, "%.4g",
@@ -207,6 +207,10 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
       const std::string label(p.name);
       if (ImGui::Checkbox(label.c_str(), &value)) set_flag(state, p.name, value);
       tooltip(p.help);
+    }
+    for (const auto& p : kShadowSwitchParams) {
+      choice_combo(state, std::string(p.name).c_str(), state.shadow.*(p.field), kOnOffNames,
+                   p.help);
     }
     int_sliders(state, state.shadow, kShadowIntParams, status.max_texture_size, false);
     float_sliders(state, state.shadow, kShadowFloatParams);

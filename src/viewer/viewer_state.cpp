@@ -102,6 +102,9 @@ bool set_choice(ViewerState& state, std::string_view name, std::string_view valu
   if (name == "filter") return set_from_table(state.shadow.filter, kFilterNames, value);
   if (name == "view") return set_from_table(state.render.view, kViewNames, value);
   if (name == "ssao") return set_from_table(state.ssao.enabled, kOnOffNames, value);
+  for (const auto& p : kShadowSwitchParams) {
+    if (p.name == name) return set_from_table(state.shadow.*(p.field), kOnOffNames, value);
+  }
   if (name == "ssao-half-resolution") {
     return set_from_table(state.ssao.half_resolution, kOnOffNames, value);
   }
@@ -193,6 +196,7 @@ std::vector<std::string> render_command_for(const ViewerState& state, const Fram
   const Scene edited = shown_scene(state, frame);
   return render_command_args({.scene_argument = state.scene_argument,
                               .model_argument = state.model_argument,
+                              .light = state.light_choice,
                               .render = frame.render,
                               .shadow = frame.shadow,
                               .ssao = frame.ssao,

@@ -209,14 +209,42 @@ TEST(Cli, BadSceneFiles) {
   expect_error("render --scene " + (dir / "badkey.json").string(), 1, "/objects/0/szie", out);
 }
 
+TEST(Cli, LightTypeUsageErrors) {
+  const std::string out = out_path("lights.png");
+  expect_error("render --light lamp", 2, "lamp", out);
+  expect_error("render --cascades 0", 2, "--cascades", out);
+  expect_error("render --cascades 5", 2, "--cascades", out);
+  expect_error("render --cascade-lambda 1.5", 2, "--cascade-lambda", out);
+  expect_error("render --cascade-blend -0.1", 2, "--cascade-blend", out);
+  expect_error("render --guard-band maybe", 2, "--guard-band", out);
+  expect_error("render --light point --light-direction 0,-1,0", 2, "--light-direction", out);
+  expect_error("render --light directional --light-position 0,1,0", 2, "--light-position", out);
+  expect_error("render --light point --view shadow --light-index 1", 2, "--light-index", out);
+}
+
+TEST(Cli, RendersEveryLightType) {
+  for (const char* light : {"spot", "directional", "point"}) {
+    for (const char* view : {"final", "shadow-map", "cascades"}) {
+      const std::string png = out_path(std::string(light) + "-" + view + ".png");
+      Result r = run(std::string("render --width 48 --height 32 --shadow-map-size 64 --light ") +
+                     light + " --view " + view + " --guard-band off --cascades 2 -o " + png);
+      EXPECT_EQ(r.status, 0) << light << " " << view << ": " << r.err;
+      EXPECT_TRUE(fs::exists(png)) << light << " " << view;
+    }
+  }
+}
+
 TEST(Cli, HelpListsEveryOptionWithItsDefault) {
   Result r = run("render --help");
   EXPECT_EQ(r.status, 0);
-  for (const char* option :
-       {"--scene", "--technique", "--view", "--width", "--height", "--shadow-map-size",
-        "--constant-bias", "--slope-bias", "--normal-offset", "--light-size", "--output", "--ssao",
-        "--ssao-samples", "--ssao-radius", "--ssao-bias", "--ssao-range", "--ssao-blur",
-        "--ssao-half-resolution"}) {
+  for (const char* option : {"--scene",         "--technique",   "--view",
+                             "--width",         "--height",      "--shadow-map-size",
+                             "--constant-bias", "--slope-bias",  "--normal-offset",
+                             "--light-size",    "--output",      "--ssao",
+                             "--ssao-samples",  "--ssao-radius", "--ssao-bias",
+                             "--ssao-range",    "--ssao-blur",   "--ssao-half-resolution",
+                             "--light",         "--cascades",    "--cascade-lambda",
+                             "--cascade-blend", "--guard-band"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from --help";
   }
   EXPECT_NE(r.out.find("2048"), std::string::npos) << "shadow-map-size default not shown";

@@ -68,6 +68,7 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       {"render/ssao.comp", {{}}},
       {"render/ssao_blur.comp", {{{"AXIS", "0"}}, {{"AXIS", "1"}}}},
       {"render/ssao_upsample.comp", {{}}},
+      {"render/tile_views.comp", {{}}},
   };
   for (const gl::EmbeddedFile& file : gl::embedded_shader_files()) {
     const std::string path(file.path);

@@ -47,23 +47,35 @@ GLenum float_format(int channels) {
   return channels == 1 ? GL_R32F : channels == 2 ? GL_RG32F : GL_RGBA32F;
 }
 
-gl::Texture upload(const HostMap& m) {
-  gl::Texture t(gl::TextureInfo{.format = float_format(m.channels),
+// The maps as the layers of a 2D array (the filters work on arrays, one
+// layer per shadow view); all the same size and channel count.
+gl::Texture upload(const std::vector<HostMap>& maps) {
+  const HostMap& m = maps.front();
+  gl::Texture t(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                .format = float_format(m.channels),
                                 .width = m.width,
                                 .height = m.height,
-                                .label = "test map"});
+                                .layers = static_cast<int>(maps.size()),
+                                .label = "test maps"});
   const GLenum layout = m.channels == 1 ? GL_RED : m.channels == 2 ? GL_RG : GL_RGBA;
-  glTextureSubImage2D(t.id(), 0, 0, 0, m.width, m.height, layout, GL_FLOAT, m.values.data());
+  for (std::size_t layer = 0; layer < maps.size(); ++layer) {
+    glTextureSubImage3D(t.id(), 0, 0, 0, static_cast<GLint>(layer), m.width, m.height, 1, layout,
+                        GL_FLOAT, maps[layer].values.data());
+  }
   return t;
 }
 
-HostMap download(const gl::Texture& t, int channels) {
+gl::Texture upload(const HostMap& m) {
+  return upload(std::vector<HostMap>{m});
+}
+
+HostMap download(const gl::Texture& t, int channels, int layer = 0) {
   HostMap m{t.width(), t.height(), channels, {}};
   m.values.resize(static_cast<std::size_t>(t.width()) * t.height() * channels);
   const GLenum layout = channels == 1 ? GL_RED : channels == 2 ? GL_RG : GL_RGBA;
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(t.id(), 0, layout, GL_FLOAT, static_cast<GLsizei>(m.values.size() * 4),
-                    m.values.data());
+  glGetTextureSubImage(t.id(), 0, 0, 0, layer, t.width(), t.height(), 1, layout, GL_FLOAT,
+                       static_cast<GLsizei>(m.values.size() * 4), m.values.data());
   return m;
 }
 
@@ -91,8 +103,8 @@ TEST_F(GpuTest, GaussianBlurMatchesDirectConvolution) {
     HostMap map = random_map(k.width, k.height, k.channels, 7);
     gl::Texture source = upload(map);
     GaussianBlurPass blur;
-    blur.execute(0, source, k.radius);
-    HostMap out = download(blur.output(0), k.channels);
+    blur.execute(source, k.radius);
+    HostMap out = download(blur.output(), k.channels);
     const std::vector<float> w = gaussian_weights(k.radius);
     double worst = 0.0;
     for (int y = 0; y < k.height; ++y)
@@ -134,11 +146,11 @@ double worst_sat_error(int width, int height, int channels, const std::vector<in
   HostMap map = random_map(width, height, channels, 11);
   gl::Texture source = upload(map);
   SummedAreaTablePass sat;
-  sat.execute(0, source);
+  sat.execute(source);
   ReferenceSat reference(map);
   double worst = 0.0;
   for (int radius : radii) {
-    HostMap out = download(sat.box_filtered(0, radius), 4);
+    HostMap out = download(sat.box_filtered(radius), 4);
     for (int y = 0; y < height; y += stride)
       for (int x = 0; x < width; x += stride)
         for (int c = 0; c < channels; ++c)
@@ -164,6 +176,38 @@ TEST_F(GpuTest, SummedAreaTableOf2048MapKeepsItsPrecision) {
   const double worst = worst_sat_error(2048, 2048, 4, {2, 16, 64}, 7);
   std::printf("SAT box filter 2048x2048: max abs error %.2e\n", worst);
   EXPECT_LE(worst, 4e-6);
+}
+
+TEST_F(GpuTest, FiltersKeepArrayLayersApart) {
+  // Three different maps as the layers of one array (as a point light's
+  // cube faces are): each layer's result is that of its map alone, nothing
+  // mixed in from the neighbouring layers.
+  const int width = 45, height = 38, radius = 6;
+  std::vector<HostMap> maps;
+  for (unsigned seed : {3u, 5u, 9u}) maps.push_back(random_map(width, height, 4, seed));
+  gl::Texture layered = upload(maps);
+  GaussianBlurPass blur;
+  blur.execute(layered, radius);
+  SummedAreaTablePass sat;
+  sat.execute(layered);
+  const std::vector<float> w = gaussian_weights(radius);
+  for (int layer = 0; layer < 3; ++layer) {
+    const HostMap& map = maps[static_cast<std::size_t>(layer)];
+    HostMap blurred = download(blur.output(), 4, layer);
+    ReferenceSat reference(map);
+    HostMap boxed = download(sat.box_filtered(radius), 4, layer);
+    double blur_error = 0.0, box_error = 0.0;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        for (int c = 0; c < 4; ++c) {
+          blur_error = std::max(
+              blur_error, std::abs(blurred.at(x, y, c) - gaussian_reference(map, w, x, y, c)));
+          box_error =
+              std::max(box_error, std::abs(boxed.at(x, y, c) - reference.box(x, y, radius, c)));
+        }
+    EXPECT_LE(blur_error, 1e-5) << "layer " << layer;
+    EXPECT_LE(box_error, 4e-6) << "layer " << layer;
+  }
 }
 
 }  // namespace

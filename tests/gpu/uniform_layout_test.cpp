@@ -41,7 +41,6 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, blur_radius);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, sat_scale);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, filter_slope_bias);
-  EXPECT_OFFSET(p, "lights[0]", GpuLight, source);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, pcf_width);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, pcss_filter_samples);
   EXPECT_OFFSET(p, "frame", GpuFrame, inverse_view_projection);
@@ -49,15 +48,22 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   EXPECT_OFFSET(p, "frame", GpuFrame, viewport);
   EXPECT_OFFSET(p, "frame", GpuFrame, options);
   EXPECT_OFFSET(p, "frame", GpuFrame, ambient);
-  EXPECT_OFFSET(p, "lights[0]", GpuLight, view);
-  EXPECT_OFFSET(p, "lights[0]", GpuLight, view_projection);
-  EXPECT_OFFSET(p, "lights[0]", GpuLight, inverse_view_projection);
   EXPECT_OFFSET(p, "lights[0]", GpuLight, position_type);
   EXPECT_OFFSET(p, "lights[0]", GpuLight, direction_cos_outer);
   EXPECT_OFFSET(p, "lights[0]", GpuLight, radiance_cos_inner);
-  EXPECT_OFFSET(p, "lights[0]", GpuLight, depth_range);
-  // The array stride is the struct's size.
-  EXPECT_EQ(driver_offset(p, "lights[1].view"), GLint(sizeof(gpu::GpuLight)));
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, views);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, cascade_end);
+  EXPECT_OFFSET(p, "lights[0]", GpuLight, cascade_blend);
+  EXPECT_OFFSET(p, "shadow_views[0]", GpuShadowView, view);
+  EXPECT_OFFSET(p, "shadow_views[0]", GpuShadowView, view_projection);
+  EXPECT_OFFSET(p, "shadow_views[0]", GpuShadowView, inverse_view_projection);
+  EXPECT_OFFSET(p, "shadow_views[0]", GpuShadowView, depth_range);
+  EXPECT_OFFSET(p, "shadow_views[0]", GpuShadowView, source_width);
+  EXPECT_OFFSET(p, "shadow_views[0]", GpuShadowView, perspective);
+  EXPECT_OFFSET(p, "shadow_views[0]", GpuShadowView, radial_depth);
+  // The array strides are the structs' sizes.
+  EXPECT_EQ(driver_offset(p, "lights[1].position_type"), GLint(sizeof(gpu::GpuLight)));
+  EXPECT_EQ(driver_offset(p, "shadow_views[1].view"), GLint(sizeof(gpu::GpuShadowView)));
 }
 
 TEST_F(GpuTest, SsaoBlockMatchesItsCppMirror) {

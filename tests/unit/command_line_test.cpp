@@ -39,6 +39,7 @@ TEST(CommandLine, DefaultsGiveTheShortestCommand) {
   const Scene scene = *builtin_scene("default");
   const std::vector<std::string> args = render_command_args({.scene_argument = "default",
                                                              .model_argument = "",
+                                                             .light = {},
                                                              .render = {},
                                                              .shadow = {},
                                                              .ssao = {},
@@ -51,6 +52,7 @@ TEST(CommandLine, DefaultsGiveTheShortestCommand) {
 TEST(CommandLine, AModelReplacesTheScene) {
   const std::vector<std::string> args = render_command_args({.scene_argument = "spot",
                                                              .model_argument = "models/bunny.obj",
+                                                             .light = {},
                                                              .render = {},
                                                              .shadow = {},
                                                              .ssao = {},
@@ -88,9 +90,13 @@ TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
   shadow.msm16_alpha = 3.3e-5f;
   shadow.constant_bias = 0.0f;
   shadow.light_size = 0.1f + 0.2f;
+  shadow.guard_band = false;
+  shadow.cascades = 2;
+  shadow.cascade_lambda = 0.5f;
 
   const std::vector<std::string> args = render_command_args({.scene_argument = "default",
                                                              .model_argument = "",
+                                                             .light = {},
                                                              .render = render,
                                                              .shadow = shadow,
                                                              .ssao = {},
@@ -112,6 +118,9 @@ TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
     EXPECT_EQ(parsed.shadow.*(p.field), shadow.*(p.field)) << p.name;
   }
   for (const auto& p : kShadowFlagParams) {
+    EXPECT_EQ(parsed.shadow.*(p.field), shadow.*(p.field)) << p.name;
+  }
+  for (const auto& p : kShadowSwitchParams) {
     EXPECT_EQ(parsed.shadow.*(p.field), shadow.*(p.field)) << p.name;
   }
   EXPECT_EQ(parsed.shadow.technique, shadow.technique);
@@ -169,6 +178,20 @@ TEST(SceneOptions, BadValuesNameTheFlag) {
   EXPECT_NE(error({"--camera-position=1,1,1", "--camera-target=1,1,1"}).find("same point"),
             std::string::npos);
   EXPECT_NE(error({"--camera-fov=0"}).find("--camera-fov"), std::string::npos);
+}
+
+TEST(CommandLine, NamesTheLightChoice) {
+  const Scene scene = *builtin_scene("default");
+  const std::vector<std::string> args = render_command_args({.scene_argument = "default",
+                                                             .model_argument = "",
+                                                             .light = "point",
+                                                             .render = {},
+                                                             .shadow = {},
+                                                             .ssao = {},
+                                                             .original = &scene,
+                                                             .edited = &scene,
+                                                             .output = "a.png"});
+  EXPECT_EQ(args, (std::vector<std::string>{"render", "--light=point", "--output=a.png"}));
 }
 
 }  // namespace

@@ -16,6 +16,22 @@ const char* kValid = R"({
               {"shape": "sphere", "radius": 1, "position": [0, 1, 0], "material": "red"}]
 })";
 
+TEST(SceneFile, ParsesAPointLight) {
+  Scene s = parse_scene_json(R"({"lights": [{"type": "point", "position": [1, 2, 3],
+                                            "intensity": 5}],
+                                 "objects": [{"shape": "plane", "size": [4, 0, 4]}]})",
+                             "point.json");
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.lights[0].type, LightType::Point);
+  EXPECT_EQ(s.lights[0].position, glm::vec3(1.0f, 2.0f, 3.0f));
+  EXPECT_FLOAT_EQ(s.lights[0].intensity, 5.0f);
+  // A point light shines every way: a direction is an unknown key.
+  EXPECT_THROW(parse_scene_json(R"({"lights": [{"type": "point", "direction": [0, -1, 0]}],
+                                    "objects": []})",
+                                "point.json"),
+               RuntimeError);
+}
+
 TEST(SceneFile, ParsesEveryKind) {
   Scene s = parse_scene_json(kValid, "test.json");
   ASSERT_EQ(s.lights.size(), 2u);
@@ -40,7 +56,7 @@ TEST(SceneFile, ErrorsNameTheKeyPath) {
       {R"({"lights": [{"type": "spot"}], "objects": [{"shape": "sphere", "radius": -1}]})",
        "bad.json: /objects/0/radius: must be between"},
       {R"({"lights": [{"type": "lamp"}], "objects": [{"shape": "box"}]})",
-       "bad.json: /lights/0/type: must be \"spot\" or \"directional\""},
+       "bad.json: /lights/0/type: must be \"spot\", \"directional\" or \"point\""},
       {R"({"lights": [{"type": "spot"}], "objects": [{"shape": "box", "size": [1, 2]}]})",
        "bad.json: /objects/0/size: expected an array of 3 numbers"},
       {R"({"lights": [{"type": "spot"}], "objects": [{"shape": "box", "size": [1, "x", 2]}]})",

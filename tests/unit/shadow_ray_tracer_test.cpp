@@ -83,6 +83,31 @@ TEST(ShadowRayTracer, AreaLightGivesTheVisibleFraction) {
   }
 }
 
+// A point light with a spherical source 1 in diameter at height 2 over the
+// same half-plane: from (p, 0, 0) the sphere is a disk of radius 0.5 facing
+// the point, of which the part beyond the edge's image at -p is visible:
+// the disk-segment fraction 1/2 + (asin(a) + a sqrt(1 - a^2)) / pi, a = 2p
+// (exact at p = 0; for p != 0 the disk tilts by atan(p / 2), within 0.02).
+TEST(ShadowRayTracer, SphericalPointLightGivesTheVisibleFraction) {
+  TriangleMesh mesh;
+  add_quad(mesh, -5.0f, 0.0f, -2.5f, 2.5f, 1.0f);
+  const ShadowRayTracer tracer(mesh);
+  ReferenceLight light;
+  light.type = LightType::Point;
+  light.position = {0.0f, 2.0f, 0.3f};
+  light.size = 1.0f;
+  const std::vector<float> offsets = {-0.6f, -0.2f, 0.0f, 0.15f, 0.6f};
+  std::vector<glm::vec3> points;
+  for (float p : offsets) points.push_back({p, 0.0f, 0.3f});
+  const Image image = tracer.trace(ground_points(points), light, 1024);
+  for (std::size_t i = 0; i < offsets.size(); ++i) {
+    const double a = std::clamp(2.0 * offsets[i], -1.0, 1.0);
+    const double expected = 0.5 + (std::asin(a) + a * std::sqrt(1.0 - a * a)) / 3.14159265358979;
+    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 0.02) << "offset " << offsets[i];
+    EXPECT_EQ(image.pixel(static_cast<int>(i), 0)[3], 1.0f) << "a point light has no cone";
+  }
+}
+
 // A directional light whose square of directions is 0.4 wide at unit
 // distance, shining straight down past the same half-plane: from (p, 0, 0)
 // a ray leaving at tangent u crosses height 1 at p + u, so the visible

@@ -1,0 +1,30 @@
+#pragma once
+// The map views of a light with several shadow views: its layers of a
+// shadow-map array tiled into one 2D texture (shaders/render/tile_views.comp),
+// three to a row: a point light's six cube faces in two rows (+x -x +y, -y
+// +z -z), a directional light's cascades nearest first.
+#include "gl/program.hpp"
+#include "gl/resources.hpp"
+
+namespace penumbra {
+
+class ViewTilingPass {
+ public:
+  ViewTilingPass();
+
+  // Tiles layers [first, first + count) of the 2D array `layers` into
+  // output(), an RGBA32F texture; reallocated only when its size changes.
+  // Throws UsageError if the tiled image exceeds the GPU's texture limit.
+  void execute(const gl::Texture& layers, int first, int count);
+
+  [[nodiscard]] const gl::Texture& output() const { return output_; }
+
+  // Tiles per row for `count` views.
+  static int columns(int count);
+
+ private:
+  gl::Program program_;
+  gl::Texture output_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,71 @@
+#pragma once
+// Cascaded shadow maps for directional lights: the camera's view frustum
+// cut into slices along its depth, each slice with its own orthographic
+// shadow view, so texels near the camera are small and far ones large.
+// Pure CPU functions, tested without a GPU.
+//
+// Stability (no shimmering as the camera moves or turns): each cascade's
+// extent is set by the bounding sphere of its frustum slice, which does not
+// depend on the camera's orientation, with its radius rounded up to a
+// coarse geometric grid, so it does not follow small changes of the
+// camera's near and far planes; and its origin is snapped to whole texels
+// in light space, so a camera move slides the map by whole texels and
+// every texel keeps sampling the same scene points.
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+#include "scene/mesh.hpp"
+#include "scene/scene.hpp"
+#include "shadow/light_view.hpp"
+
+namespace penumbra {
+
+// The camera a directional light's cascades follow.
+struct CameraFrustum {
+  glm::vec3 position{0.0f};
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit view direction
+  float fov_y = 0.785f;                  // vertical field of view, radians
+  float aspect = 1.0f;                   // width / height
+  float near_plane = 0.1f;               // depths along `forward`
+  float far_plane = 100.0f;
+};
+
+// Split depths C_0 = near < C_1 < ... < C_count = far of the practical split
+// scheme (Zhang et al., "Parallel-Split Shadow Maps for Large-scale Virtual
+// Environments", VRCIA 2006, eq. 9):
+//   C_i = lambda C_log + (1 - lambda) C_uni,
+//   C_log = n (f / n)^(i / N), C_uni = n + (f - n) i / N.
+std::vector<float> cascade_splits(float near_plane, float far_plane, int count, float lambda);
+
+struct Sphere {
+  glm::vec3 center{0.0f};
+  float radius = 0.0f;
+};
+
+// The smallest sphere holding the eight corners of the camera frustum's
+// slice between depths d0 < d1. Its centre lies on the view axis at the
+// depth c equidistant from the near and far corners: with k the frustum's
+// half-diagonal at unit depth, (c - d0)^2 + d0^2 k^2 = (d1 - c)^2 + d1^2 k^2
+// gives c = (d0 + d1)(1 + k^2) / 2, clamped to d1. The radius depends on
+// the slice only, not on where the camera looks.
+Sphere frustum_slice_sphere(const CameraFrustum& camera, float d0, float d1);
+
+// The radius rounded up to the next step of 2^(1/8) (9 percent): the
+// cascade's texel size changes only when the slice's size changes by that
+// much.
+float quantize_cascade_radius(float radius);
+
+// A light-space coordinate rounded to the nearest multiple of the texel size.
+glm::vec2 snap_to_texel(const glm::vec2& p, float texel);
+
+// The orthographic views of the cascades between the splits (splits.size()
+// - 1 of them). Each is square, its half-width the quantized radius of its
+// slice's sphere widened by one texel for the snapping, and looks down the
+// light's direction with a fixed orientation; all share the depth range of
+// the whole scene, so every caster is in every cascade.
+std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
+                                         std::span<const float> splits,
+                                         std::span<const Vertex> vertices, int map_size);
+
+}  // namespace penumbra

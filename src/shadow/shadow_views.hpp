@@ -1,0 +1,30 @@
+#pragma once
+// A light's shadow views: the 2D maps its shadow is read from, each one
+// layer of the shadow-map arrays. A spot light has one perspective view;
+// a point light six, the faces of a cube (cube_views.hpp); a directional
+// light one orthographic view per cascade (cascades.hpp).
+#include <array>
+#include <vector>
+
+#include "core/settings.hpp"
+#include "scene/mesh.hpp"
+#include "scene/scene.hpp"
+#include "shadow/cascades.hpp"
+#include "shadow/light_view.hpp"
+
+namespace penumbra {
+
+struct LightShadowViews {
+  std::vector<LightView> views;
+  // Directional lights: the camera depth where each cascade ends (the last
+  // one at the camera's far plane), and where the first begins.
+  std::vector<float> cascade_end;
+  float cascade_start = 0.0f;
+};
+
+// Fits the light's views to the scene (and, for a directional light's
+// cascades, to the camera).
+LightShadowViews fit_shadow_views(const Light& light, const TriangleMesh& mesh,
+                                  const CameraFrustum& camera, const ShadowSettings& settings);
+
+}  // namespace penumbra

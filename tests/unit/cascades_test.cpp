@@ -1,0 +1,146 @@
+// Cascaded shadow views of a directional light: the split scheme, the
+// slice spheres, texel snapping and the stability it buys.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "shadow/cascades.hpp"
+
+namespace penumbra {
+namespace {
+
+TEST(Cascades, SplitsFollowThePracticalSchemeAndIncrease) {
+  const float n = 0.5f, f = 80.0f;
+  for (int count = 1; count <= 4; ++count) {
+    for (float lambda : {0.0f, 0.5f, 0.75f, 1.0f}) {
+      const std::vector<float> s = cascade_splits(n, f, count, lambda);
+      ASSERT_EQ(s.size(), static_cast<std::size_t>(count) + 1);
+      EXPECT_EQ(s.front(), n);
+      EXPECT_EQ(s.back(), f);
+      for (int i = 1; i <= count; ++i) {
+        EXPECT_GT(s[static_cast<std::size_t>(i)], s[static_cast<std::size_t>(i) - 1]);
+        const double k = double(i) / count;
+        const double expected =
+            lambda * n * std::pow(double(f) / n, k) + (1.0 - lambda) * (n + (double(f) - n) * k);
+        EXPECT_NEAR(s[static_cast<std::size_t>(i)], expected, 1e-4 * f);
+      }
+    }
+  }
+  // lambda 0: uniform; lambda 1: logarithmic (each split the geometric mean).
+  EXPECT_NEAR(cascade_splits(1.0f, 9.0f, 2, 0.0f)[1], 5.0f, 1e-5f);
+  EXPECT_NEAR(cascade_splits(1.0f, 9.0f, 2, 1.0f)[1], 3.0f, 1e-5f);
+}
+
+CameraFrustum test_camera(const glm::vec3& position, const glm::vec3& forward) {
+  CameraFrustum c;
+  c.position = position;
+  c.forward = glm::normalize(forward);
+  c.fov_y = glm::radians(45.0f);
+  c.aspect = 1.6f;
+  c.near_plane = 0.3f;
+  c.far_plane = 40.0f;
+  return c;
+}
+
+// The eight corners of the slice [d0, d1] of the camera's frustum.
+std::vector<glm::vec3> slice_corners(const CameraFrustum& c, float d0, float d1) {
+  const glm::mat4 view = glm::lookAt(c.position, c.position + c.forward, glm::vec3(0, 1, 0));
+  const glm::mat4 inverse = glm::inverse(view);
+  const float ky = std::tan(0.5f * c.fov_y), kx = ky * c.aspect;
+  std::vector<glm::vec3> corners;
+  for (float d : {d0, d1})
+    for (float sx : {-1.0f, 1.0f})
+      for (float sy : {-1.0f, 1.0f})
+        corners.emplace_back(inverse * glm::vec4(sx * kx * d, sy * ky * d, -d, 1.0f));
+  return corners;
+}
+
+TEST(Cascades, SliceSphereHoldsTheSliceWhateverTheCameraLooksAt) {
+  const CameraFrustum a = test_camera({1, 2, 3}, {0.2f, -0.3f, -1.0f});
+  const CameraFrustum b = test_camera({1, 2, 3}, {-0.9f, 0.1f, 0.4f});
+  for (auto [d0, d1] : {std::pair{0.3f, 2.0f}, std::pair{2.0f, 9.0f}, std::pair{9.0f, 40.0f}}) {
+    const Sphere sa = frustum_slice_sphere(a, d0, d1), sb = frustum_slice_sphere(b, d0, d1);
+    EXPECT_FLOAT_EQ(sa.radius, sb.radius) << "the radius must not depend on the orientation";
+    for (const glm::vec3& corner : slice_corners(a, d0, d1)) {
+      EXPECT_LE(glm::length(corner - sa.center), sa.radius * (1.0f + 1e-5f));
+    }
+  }
+}
+
+TEST(Cascades, SnappingRoundsToWholeTexelsAndRadiiToASparseGrid) {
+  const glm::vec2 p = snap_to_texel({1.26f, -0.74f}, 0.5f);
+  EXPECT_FLOAT_EQ(p.x, 1.5f);
+  EXPECT_FLOAT_EQ(p.y, -0.5f);
+  for (float r : {0.37f, 1.05f, 3.3f, 17.0f}) {
+    const float q = quantize_cascade_radius(r);
+    EXPECT_GE(q, r);
+    EXPECT_LT(q, r * 1.0906f);  // 2^(1/8)
+    EXPECT_FLOAT_EQ(quantize_cascade_radius(r * 1.001f), quantize_cascade_radius(r))
+        << "nearby radii share a step (unless one sits at a step's edge)";
+  }
+}
+
+Light sun() {
+  Light light;
+  light.type = LightType::Directional;
+  light.direction = glm::normalize(glm::vec3(0.7f, -1.0f, -0.25f));
+  return light;
+}
+
+std::vector<Vertex> ground_vertices() {
+  std::vector<Vertex> v(4);
+  v[0].position = {-20, 0, -20};
+  v[1].position = {20, 0, -20};
+  v[2].position = {20, 3, 20};
+  v[3].position = {-20, 0, 20};
+  return v;
+}
+
+TEST(Cascades, EveryCascadeHoldsItsSlice) {
+  const CameraFrustum camera = test_camera({0, 6, 10}, {0, -0.5f, -1});
+  const std::vector<float> splits = cascade_splits(camera.near_plane, camera.far_plane, 4, 0.75f);
+  const std::vector<LightView> views =
+      fit_cascade_views(sun(), camera, splits, ground_vertices(), 512);
+  ASSERT_EQ(views.size(), 4u);
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    if (i > 0) {
+      EXPECT_GT(views[i].texel_world, views[i - 1].texel_world);
+    }
+    for (const glm::vec3& corner : slice_corners(camera, splits[i], splits[i + 1])) {
+      const glm::vec4 clip = views[i].view_projection * glm::vec4(corner, 1.0f);
+      EXPECT_LE(std::abs(clip.x), 1.0f) << "cascade " << i;
+      EXPECT_LE(std::abs(clip.y), 1.0f) << "cascade " << i;
+    }
+  }
+}
+
+TEST(Cascades, SubTexelCameraMovesShiftTheMapsByWholeTexels) {
+  const int size = 512;
+  const CameraFrustum before = test_camera({0, 6, 10}, {0, -0.5f, -1});
+  const std::vector<float> splits = cascade_splits(0.3f, 40.0f, 3, 0.75f);
+  const std::vector<LightView> a =
+      fit_cascade_views(sun(), before, splits, ground_vertices(), size);
+  for (const glm::vec3& move :
+       {glm::vec3(0.003f, 0, 0), glm::vec3(0, 0.002f, -0.004f), glm::vec3(0.05f, 0.01f, 0.02f)}) {
+    CameraFrustum after = before;
+    after.position += move;
+    // A turn of the camera too: the sphere does not follow orientation.
+    after.forward = glm::normalize(before.forward + glm::vec3(0.01f, 0.0f, 0.0f));
+    const std::vector<LightView> b =
+        fit_cascade_views(sun(), after, splits, ground_vertices(), size);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_FLOAT_EQ(a[i].texel_world, b[i].texel_world);
+      // The map's origin, in texels of light space: whole-texel shifts only.
+      const glm::vec4 origin_a = glm::inverse(a[i].view_projection) * glm::vec4(-1, -1, 0, 1);
+      const glm::vec4 origin_b = glm::inverse(b[i].view_projection) * glm::vec4(-1, -1, 0, 1);
+      const glm::vec2 la = glm::vec2(a[i].view * origin_a), lb = glm::vec2(b[i].view * origin_b);
+      const glm::vec2 shift = (lb - la) / a[i].texel_world;
+      EXPECT_NEAR(shift.x, std::round(shift.x), 1e-2f) << "cascade " << i;
+      EXPECT_NEAR(shift.y, std::round(shift.y), 1e-2f) << "cascade " << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace penumbra
