@@ -9,47 +9,67 @@
 namespace penumbra {
 
 void add_light_choice_option(CLI::App& app, std::string& choice) {
-  app.add_option("--light", choice,
-                 "light the scene with one light of this type alone: " +
-                     enum_choices<LightType>(kLightTypeNames) +
-                     " (the scene's own first light of that type, or one made from its first "
-                     "light, aimed at the scene's centre; default: the scene's lights)");
+  app.add_option(
+      "--light", choice,
+      "light the scene with one light of this type alone: " +
+          enum_choices<LightType>(kLightTypeNames) +
+          " (the scene's own first light of that type, or one made from its first "
+          "light, aimed at the scene's centre; as bright there as the scene's key light; "
+          "default: the scene's lights)");
 }
 
+namespace {
+
+// Irradiance a light gives a point facing it, before its cone and shadows.
+float irradiance_at(const Light& light, const glm::vec3& point) {
+  if (light.type == LightType::Directional) return light.intensity;
+  const glm::vec3 d = light.position - point;
+  return light.intensity / std::max(glm::dot(d, d), 1e-6f);
+}
+
+}  // namespace
+
 Light single_light(const Scene& scene, LightType type) {
-  for (const Light& light : scene.lights) {
-    if (light.type == type) return light;
-  }
   const Bounds bounds = build_scene_mesh(scene).bounds();
   const glm::vec3 center = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
   const float width = bounds.empty() ? 10.0f : glm::length(bounds.max - bounds.min);
-  const Light& first = scene.lights.front();
-  // Where a positional light goes, and the irradiance it gives the centre.
-  glm::vec3 position = first.position;
-  float irradiance = first.intensity;
-  auto positional = std::find_if(scene.lights.begin(), scene.lights.end(),
-                                 [](const Light& l) { return l.type != LightType::Directional; });
-  if (positional != scene.lights.end()) {
-    position = positional->position;
-    irradiance =
-        positional->intensity / std::max(glm::dot(position - center, position - center), 1e-6f);
+  // The scene's key light: the one that gives its centre the most light.
+  const Light& key = *std::max_element(scene.lights.begin(), scene.lights.end(),
+                                       [&](const Light& a, const Light& b) {
+                                         return irradiance_at(a, center) < irradiance_at(b, center);
+                                       });
+  const float irradiance = irradiance_at(key, center);
+
+  Light light;
+  auto own = std::find_if(scene.lights.begin(), scene.lights.end(),
+                          [&](const Light& l) { return l.type == type; });
+  if (own != scene.lights.end()) {
+    light = *own;
   } else {
-    position = center - width * glm::normalize(first.direction);
-  }
-  const float distance2 = std::max(glm::dot(position - center, position - center), 1e-6f);
-  Light light = first;
-  light.type = type;
-  light.direction = glm::normalize(center - position);
-  if (type == LightType::Directional) {
-    light.intensity = irradiance;
-  } else {
+    // Where a positional light goes: where the scene's first one is, or,
+    // with only suns, as far from the centre as the scene is wide, back
+    // along the first light's direction.
+    const Light& first = scene.lights.front();
+    auto positional = std::find_if(scene.lights.begin(), scene.lights.end(),
+                                   [](const Light& l) { return l.type != LightType::Directional; });
+    const glm::vec3 position = positional != scene.lights.end()
+                                   ? positional->position
+                                   : center - width * glm::normalize(first.direction);
+    light = first;
+    light.type = type;
     light.position = position;
-    light.intensity = irradiance * distance2;
+    light.direction = glm::normalize(center - position);
+    if (type == LightType::Spot && first.type != LightType::Spot) {
+      light.cone_degrees = 40.0f;
+      light.inner_cone_degrees = 32.0f;
+    }
   }
-  if (type == LightType::Spot && first.type != LightType::Spot) {
-    light.cone_degrees = 40.0f;
-    light.inner_cone_degrees = 32.0f;
-  }
+  // Alone, the light carries the key light's irradiance at the centre, so
+  // the three types light the scene about equally (a scene's own sun is
+  // often a dim fill light).
+  light.intensity = light.type == LightType::Directional
+                        ? irradiance
+                        : irradiance * glm::dot(light.position - center, light.position - center);
   return light;
 }
 

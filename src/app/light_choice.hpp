@@ -15,7 +15,9 @@ void add_light_choice_option(CLI::App& app, std::string& choice);
 // made from its first light: a spot or point light where its first
 // positional light is (or, with only directional lights, as far from the
 // scene's centre as the scene is wide, against the light's direction),
-// aimed at the centre, with the irradiance at the centre kept.
+// aimed at the centre. Either way its intensity is set so that it gives
+// the scene's centre the irradiance of the scene's key light (the light
+// that gives the centre the most), so the types compare at equal exposure.
 Light single_light(const Scene& scene, LightType type);
 
 // Replaces the scene's lights with single_light() of the named type; no

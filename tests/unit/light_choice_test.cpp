@@ -21,9 +21,24 @@ TEST(LightChoice, KeepsTheScenesOwnLightOfThatType) {
     const auto own = std::find_if(original.lights.begin(), original.lights.end(),
                                   [&](const Light& l) { return l.type == type; });
     EXPECT_EQ(scene.lights[0].type, type);
-    EXPECT_EQ(scene.lights[0].intensity, own->intensity);
     EXPECT_EQ(scene.lights[0].direction, own->direction);
+    EXPECT_EQ(scene.lights[0].position, own->position);
   }
+}
+
+TEST(LightChoice, EveryTypeGivesTheCentreTheKeyLightsIrradiance) {
+  // The default scene's spot light is its key light; its sun is a dim fill.
+  const Scene original = *builtin_scene("default");
+  const glm::vec3 center = build_scene_mesh(original).bounds().center();
+  const Light& spot = original.lights[0];
+  const glm::vec3 d = spot.position - center;
+  const float key = spot.intensity / glm::dot(d, d);
+  ASSERT_LT(original.lights[1].intensity, 0.5f * key);
+  EXPECT_FLOAT_EQ(single_light(original, LightType::Spot).intensity, spot.intensity);
+  EXPECT_NEAR(single_light(original, LightType::Directional).intensity, key, 1e-5f * key);
+  const Light point = single_light(original, LightType::Point);
+  const glm::vec3 dp = point.position - center;
+  EXPECT_NEAR(point.intensity / glm::dot(dp, dp), key, 1e-5f * key);
 }
 
 TEST(LightChoice, APointLightTakesTheSpotLightsPlaceAndIntensity) {
