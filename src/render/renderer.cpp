@@ -153,6 +153,12 @@ void Renderer::camera_depth_range(int width, int height, float& near_plane,
   // behind the camera, and a near plane at 1e-4 of the far one put the
   // default scene's far ground 4e-3 units off once rebuilt from the depth
   // buffer (more than the reference tracer's ray offset).
+  if (depth_range_.valid && depth_range_.camera == scene_.camera && depth_range_.width == width &&
+      depth_range_.height == height) {
+    near_plane = depth_range_.near_plane;
+    far_plane = depth_range_.far_plane;
+    return;
+  }
   const glm::mat4 view = camera_view();
   const float fov_y = glm::radians(scene_.camera.fov_y_degrees);
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -164,6 +170,12 @@ void Renderer::camera_depth_range(int width, int height, float& near_plane,
   }
   far_plane = std::max(zmax * 1.01f, 1e-2f);
   near_plane = std::max(zmin * 0.99f, far_plane * 1e-4f);
+  depth_range_ = {.valid = true,
+                  .camera = scene_.camera,
+                  .width = width,
+                  .height = height,
+                  .near_plane = near_plane,
+                  .far_plane = far_plane};
 }
 
 glm::mat4 Renderer::camera_projection(int width, int height) const {
@@ -224,14 +236,20 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   const CameraFrustum camera = camera_frustum(render.width, render.height);
   gpu::GpuLight lights[MAX_LIGHTS] = {};
   gpu::GpuShadowView views[MAX_SHADOW_VIEWS] = {};
-  light_views_.clear();
-  first_views_.clear();
+  light_views_.resize(static_cast<std::size_t>(light_count));
+  fit_inputs_.resize(static_cast<std::size_t>(light_count));
+  first_views_.resize(static_cast<std::size_t>(light_count));
   view_count_ = 0;
   for (int i = 0; i < light_count; ++i) {
-    const Light& light = scene_.lights[static_cast<std::size_t>(i)];
-    light_views_.push_back(fit_shadow_views(light, mesh_, camera, shadow));
-    const LightShadowViews& fitted = light_views_.back();
-    first_views_.push_back(view_count_);
+    const auto index = static_cast<std::size_t>(i);
+    const Light& light = scene_.lights[index];
+    ShadowViewInputs inputs = shadow_view_inputs(light, camera, shadow);
+    if (fit_inputs_[index] != inputs) {
+      light_views_[index] = fit_shadow_views(inputs, mesh_);
+      fit_inputs_[index] = std::move(inputs);
+    }
+    const LightShadowViews& fitted = light_views_[index];
+    first_views_[index] = view_count_;
     lights[i] = to_gpu(light, fitted, view_count_, shadow);
     for (const LightView& view : fitted.views) {
       if (view_count_ >= MAX_SHADOW_VIEWS) throw std::logic_error("too many shadow views");

@@ -3,6 +3,7 @@
 // owns the per-frame uniform blocks; the algorithms live in the passes and
 // the shaders.
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/settings.hpp"
@@ -126,7 +127,18 @@ class Renderer {
   gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_, views_ubo_;
   gl::Buffer reference_weights_;
   gl::Buffer poisson_;  // the PCF/PCSS sample set (std430 vec2 array)
+  // Fits clip every triangle of the scene, so each light's views and the
+  // camera's depth range are kept and refitted only when what they depend
+  // on changes (the geometry never does).
   std::vector<LightShadowViews> light_views_;
+  std::vector<std::optional<ShadowViewInputs>> fit_inputs_;
+  struct DepthRange {
+    bool valid = false;
+    Camera camera;
+    int width = 0, height = 0;
+    float near_plane = 0.0f, far_plane = 0.0f;
+  };
+  mutable DepthRange depth_range_;
   std::vector<int> first_views_;
   int view_count_ = 0;
   RenderSettings last_render_;

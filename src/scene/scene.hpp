@@ -52,6 +52,7 @@ struct Camera {
   glm::vec3 target{0.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float fov_y_degrees = 45.0f;
+  bool operator==(const Camera&) const = default;
 };
 
 enum class LightType { Spot, Directional, Point };
@@ -72,6 +73,7 @@ struct Light {
   float intensity = 1.0f;
   float cone_degrees = 35.0f;        // spot: half-angle where the light ends
   float inner_cone_degrees = 28.0f;  // spot: half-angle where the fall-off starts
+  bool operator==(const Light&) const = default;
 };
 
 struct Scene {

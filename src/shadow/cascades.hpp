@@ -29,6 +29,7 @@ struct CameraFrustum {
   float aspect = 1.0f;                   // width / height
   float near_plane = 0.1f;               // depths along `forward`
   float far_plane = 100.0f;
+  bool operator==(const CameraFrustum&) const = default;
 };
 
 // Split depths C_0 = near < C_1 < ... < C_count = far of the practical split

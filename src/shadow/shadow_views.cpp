@@ -4,27 +4,53 @@
 
 namespace penumbra {
 
-LightShadowViews fit_shadow_views(const Light& light, const TriangleMesh& mesh,
-                                  const CameraFrustum& camera, const ShadowSettings& settings) {
+ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& camera,
+                                    const ShadowSettings& settings) {
+  ShadowViewInputs inputs;
+  inputs.light = light;
+  inputs.map_size = settings.map_size;
+  switch (light.type) {
+    case LightType::Spot:
+      break;
+    case LightType::Point:
+      inputs.guard_band_texels = guard_band_texels(settings, settings.map_size);
+      break;
+    case LightType::Directional:
+      inputs.camera = camera;
+      inputs.cascades = settings.cascades;
+      inputs.cascade_lambda = settings.cascade_lambda;
+      break;
+  }
+  return inputs;
+}
+
+LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, const TriangleMesh& mesh) {
+  const Light& light = inputs.light;
   LightShadowViews result;
   switch (light.type) {
     case LightType::Spot:
-      result.views.push_back(fit_light_view(light, mesh, settings.map_size));
+      result.views.push_back(fit_light_view(light, mesh, inputs.map_size));
       break;
     case LightType::Point:
-      result.views = fit_cube_views(light, mesh.vertices, mesh.indices, settings.map_size,
-                                    guard_band_texels(settings, settings.map_size));
+      result.views = fit_cube_views(light, mesh.vertices, mesh.indices, inputs.map_size,
+                                    inputs.guard_band_texels);
       break;
     case LightType::Directional: {
+      const CameraFrustum& camera = inputs.camera;
       const std::vector<float> splits = cascade_splits(camera.near_plane, camera.far_plane,
-                                                       settings.cascades, settings.cascade_lambda);
-      result.views = fit_cascade_views(light, camera, splits, mesh.vertices, settings.map_size);
+                                                       inputs.cascades, inputs.cascade_lambda);
+      result.views = fit_cascade_views(light, camera, splits, mesh.vertices, inputs.map_size);
       result.cascade_end.assign(splits.begin() + 1, splits.end());
       result.cascade_start = splits.front();
       break;
     }
   }
   return result;
+}
+
+LightShadowViews fit_shadow_views(const Light& light, const TriangleMesh& mesh,
+                                  const CameraFrustum& camera, const ShadowSettings& settings) {
+  return fit_shadow_views(shadow_view_inputs(light, camera, settings), mesh);
 }
 
 }  // namespace penumbra

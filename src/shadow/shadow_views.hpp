@@ -22,8 +22,26 @@ struct LightShadowViews {
   float cascade_start = 0.0f;
 };
 
+// What fit_shadow_views() reads besides the scene's triangles: equal inputs
+// give equal views, so a renderer refits a light only when they change (a
+// fit clips every triangle of the scene: tens of milliseconds for a
+// million). Inputs a light type does not use keep their defaults, so a
+// spot or point light does not refit when the camera moves.
+struct ShadowViewInputs {
+  Light light;
+  int map_size = 0;
+  float guard_band_texels = 0.0f;  // point lights
+  CameraFrustum camera;            // directional lights: the cascades
+  int cascades = 0;
+  float cascade_lambda = 0.0f;
+  bool operator==(const ShadowViewInputs&) const = default;
+};
+ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& camera,
+                                    const ShadowSettings& settings);
+
 // Fits the light's views to the scene (and, for a directional light's
 // cascades, to the camera).
+LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, const TriangleMesh& mesh);
 LightShadowViews fit_shadow_views(const Light& light, const TriangleMesh& mesh,
                                   const CameraFrustum& camera, const ShadowSettings& settings);
 
