@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/command_line.hpp"
+#include "app/light_choice.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
@@ -55,6 +56,7 @@ class Study {
         "each texel tested against the receiver's plane, which is what a filtered technique "
         "approximates.");
     techniques_section(page);
+    light_types_section(page);
     maps_section(page);
     sweeps_section(page);
     esm_section(page);
@@ -74,11 +76,16 @@ class Study {
   // Renders one image into the report folder, or records why it failed.
   HtmlFigure figure(const std::string& file, const std::string& caption, RenderSettings render,
                     ShadowSettings shadow) {
+    return figure(renderer_, options_.light_choice, file, caption, render, shadow);
+  }
+  // The same with another renderer, made for the scene with `light_choice`.
+  HtmlFigure figure(Renderer& renderer, const std::string& light_choice, const std::string& file,
+                    const std::string& caption, RenderSettings render, ShadowSettings shadow) {
     HtmlFigure f;
     f.caption = caption;
     f.command = shell_command(render_command_args({.scene_argument = options_.scene_argument,
                                                    .model_argument = options_.model_argument,
-                                                   .light = options_.light_choice,
+                                                   .light = light_choice,
                                                    .render = render,
                                                    .shadow = shadow,
                                                    .ssao = {},
@@ -88,8 +95,8 @@ class Study {
     ++items_;
     progress_.update(items_, total_items());
     try {
-      renderer_.render(render, shadow);
-      const Image image = renderer_.read_view();
+      renderer.render(render, shadow);
+      const Image image = renderer.read_view();
       check_gl();
       write_png(image, (std::filesystem::path(options_.output_dir) / file).string(),
                 png_encoding_for(render.view));
@@ -147,8 +154,86 @@ class Study {
     page.figures(figures);
   }
 
+  // The scene under one light of each type alone (what --light gives), so
+  // the light types compare on equal terms: a spot light's one view, a
+  // point light's six cube faces, the sun's cascades.
+  void light_types_section(HtmlPage& page) {
+    page.heading("2. Spot, point and directional lights");
+    if (!options_.light_choice.empty()) {
+      page.paragraph("This report was made with --light " + options_.light_choice +
+                     ": without --light, this section compares the three light types.");
+      return;
+    }
+    const int samples = options_.quick ? 64 : 256;
+    page.paragraph(
+        "The scene lit by one light of each type alone (--light), each as bright at the scene's "
+        "centre as its key light. A point light's shadow is read from the six faces of a cube, "
+        "each widened by a guard band so that filters near a face's edge read their own face; "
+        "the directional light's from " +
+        std::to_string(base_shadow_.cascades) +
+        " cascades fitted to the camera (--view cascades shows which pixel reads which). The "
+        "table gives each technique's shadow factor against the traced reference of that light "
+        "(" +
+        std::to_string(samples) +
+        " rays per pixel; the point light a sphere of the light size, the sun a disk of its "
+        "angle), over the pixels the light reaches.");
+    const std::vector<Technique> techniques =
+        options_.quick ? std::vector<Technique>{Technique::Hard, Technique::Pcss, Technique::Msm}
+                       : std::vector<Technique>{Technique::Hard, Technique::Pcf, Technique::Pcss,
+                                                Technique::Vsm, Technique::Msm};
+    std::vector<std::vector<std::string>> rows = {{"technique"}};
+    for (Technique t : techniques) rows.push_back({name_of(t)});
+    std::vector<HtmlFigure> figures;
+    for (LightType type : {LightType::Spot, LightType::Point, LightType::Directional}) {
+      const std::string choice(enum_name<LightType>(kLightTypeNames, type));
+      rows.front().push_back("RMSE " + choice);
+      Scene scene = scene_;
+      apply_light_choice(choice, scene);
+      Renderer renderer(scene);
+      for (Technique t : techniques) {
+        figures.push_back(figure(renderer, choice, "light-" + choice + "-" + name_of(t) + ".png",
+                                 choice + ", " + name_of(t), base_render_, with(t)));
+      }
+      std::vector<View> map_views = {View::ShadowMap};
+      if (type == LightType::Directional) map_views.insert(map_views.begin(), View::Cascades);
+      for (View view : map_views) {
+        RenderSettings r = base_render_;
+        r.view = view;
+        const std::string name(enum_name<View>(kViewNames, view));
+        figures.push_back(figure(renderer, choice, "light-" + choice + "-" + name + ".png",
+                                 choice + ": --view " + name, r, base_shadow_));
+      }
+      measure_light_type(renderer, techniques, samples, rows);
+    }
+    page.table(rows);
+    page.figures(figures);
+  }
+
+  // Appends each technique's RMSE against the light's traced reference to
+  // its row (one row per technique, after the header).
+  void measure_light_type(Renderer& renderer, const std::vector<Technique>& techniques, int samples,
+                          std::vector<std::vector<std::string>>& rows) {
+    ++items_;
+    progress_.update(items_, total_items());
+    std::optional<TracedReference> traced;
+    try {
+      traced = traced_reference(renderer, base_render_, base_shadow_, samples, default_cache_dir());
+      check_gl();
+    } catch (const std::exception&) {
+      ++failed_;
+    }
+    for (std::size_t i = 0; i < techniques.size(); ++i) {
+      ++items_;
+      progress_.update(items_, total_items());
+      std::optional<Image> image =
+          traced ? shadow_image(renderer, with(techniques[i])) : std::nullopt;
+      rows[i + 1].push_back(image ? fixed(compare_shadow(*image, traced->image).rmse, 4)
+                                  : "failed");
+    }
+  }
+
   void maps_section(HtmlPage& page) {
-    page.heading("2. Shadow maps before and after the blur");
+    page.heading("3. Shadow maps before and after the blur");
     page.paragraph(
         "The spot light's map as each technique stores it, as colour (moments z, z^2, z^3 in "
         "red, green, blue; msm16 shows its quantized channels), before and after a Gaussian of "
@@ -171,7 +256,7 @@ class Study {
   }
 
   void sweeps_section(HtmlPage& page) {
-    page.heading("3. From anti-aliased to soft: filter widths and light sizes");
+    page.heading("4. From anti-aliased to soft: filter widths and light sizes");
     page.paragraph(
         "W = 1 or 2 only anti-aliases the edge; W = 16 and 32 simulate a wide light. A fixed "
         "filter widens every penumbra alike, contact shadows included; PCSS widens them with "
@@ -223,7 +308,7 @@ class Study {
   }
 
   void esm_section(HtmlPage& page) {
-    page.heading("4. The ESM exponent c");
+    page.heading("5. The ESM exponent c");
     const std::vector<float> cs = {10.0f, 20.0f, 40.0f, 60.0f, 80.0f, kEsmMaxC};
     std::vector<HtmlFigure> figures;
     std::vector<std::vector<std::string>> rows = {
@@ -285,11 +370,15 @@ class Study {
 
   // The spot light's shadow factor of a technique, or nullopt on failure.
   std::optional<Image> shadow_image(const ShadowSettings& shadow, View view = View::Shadow) {
+    return shadow_image(renderer_, shadow, view);
+  }
+  std::optional<Image> shadow_image(Renderer& renderer, const ShadowSettings& shadow,
+                                    View view = View::Shadow) {
     try {
       RenderSettings r = base_render_;
       r.view = view;
-      renderer_.render(r, shadow);
-      Image image = renderer_.read_view();
+      renderer.render(r, shadow);
+      Image image = renderer.read_view();
       check_gl();
       return image;
     } catch (const std::exception&) {
@@ -299,7 +388,7 @@ class Study {
   }
 
   void errors_section(HtmlPage& page) {
-    page.heading("5. Errors against the references");
+    page.heading("6. Errors against the references");
     const int samples = options_.quick ? 64 : 256;
     std::optional<TracedReference> traced;
     ++items_;
@@ -373,7 +462,7 @@ class Study {
   }
 
   void timings_section(HtmlPage& page) {
-    page.heading("6. GPU time per pass");
+    page.heading("7. GPU time per pass");
     const bool timer = !timers_miss_compute(context_.renderer());
     page.paragraph(
         "Device: " + context_.renderer() + " (" + context_.vendor() + ", " + context_.version() +
@@ -430,7 +519,7 @@ class Study {
   RenderSettings base_render_;
   ShadowSettings base_shadow_;
   // Images, metrics and timings the study makes, for the progress bar.
-  int total_items() const { return options_.quick ? 55 : 76; }
+  int total_items() const { return options_.quick ? 80 : 113; }
   ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -73,8 +74,9 @@ TEST_F(Report, WritesAPageWhoseImagesExist) {
   EXPECT_EQ(html_.find("<script"), std::string::npos) << "the page must be self-contained";
   EXPECT_EQ(html_.find("http"), std::string::npos) << "the page must need no network";
   for (const char* section :
-       {"1. The techniques", "2. Shadow maps before and after", "3. From anti-aliased to soft",
-        "4. The ESM exponent c", "5. Errors against", "6. GPU time per pass"}) {
+       {"1. The techniques", "2. Spot, point and directional lights",
+        "3. Shadow maps before and after", "4. From anti-aliased to soft", "5. The ESM exponent c",
+        "6. Errors against", "7. GPU time per pass"}) {
     EXPECT_NE(html_.find(section), std::string::npos) << section;
   }
   EXPECT_EQ(html_.find("<div class=\"failed\">"), std::string::npos) << "an item failed";
@@ -93,23 +95,24 @@ TEST_F(Report, WritesAPageWhoseImagesExist) {
 
 TEST_F(Report, TheCommandUnderAnImageRemakesIt) {
   ASSERT_EQ(status_, 0);
-  ASSERT_FALSE(figures_.empty());
-  // Spot-check a filtered technique's image: its command, run in the
-  // report's folder, writing to another name.
-  const Figure* chosen = &figures_.front();
-  for (const Figure& f : figures_) {
-    if (f.src == "technique-msm.png") chosen = &f;
+  // Spot-check a filtered technique's image under the scene's lights and
+  // under a point light alone (--light): its command, run in the report's
+  // folder, writing to another name.
+  for (const std::string name : {"technique-msm.png", "light-point-msm.png"}) {
+    const auto chosen = std::find_if(figures_.begin(), figures_.end(),
+                                     [&](const Figure& f) { return f.src == name; });
+    ASSERT_NE(chosen, figures_.end()) << name;
+    std::string command = chosen->command;
+    ASSERT_EQ(command.rfind("penumbra render ", 0), 0u) << command;
+    command.replace(0, std::string("penumbra").size(), PENUMBRA_BINARY);
+    command = std::regex_replace(command, std::regex(" --output=\\S+$"), " --output=remade.png");
+    ASSERT_EQ(run_shell("cd " + dir_.string() + " && " + command), 0) << command;
+    const penumbra::Image original = penumbra::read_png((dir_ / chosen->src).string());
+    const penumbra::Image remade = penumbra::read_png((dir_ / "remade.png").string());
+    ASSERT_EQ(original.width, remade.width);
+    ASSERT_EQ(original.height, remade.height);
+    EXPECT_EQ(original.rgba, remade.rgba) << command;
   }
-  std::string command = chosen->command;
-  ASSERT_EQ(command.rfind("penumbra render ", 0), 0u) << command;
-  command.replace(0, std::string("penumbra").size(), PENUMBRA_BINARY);
-  command = std::regex_replace(command, std::regex(" --output=\\S+$"), " --output=remade.png");
-  ASSERT_EQ(run_shell("cd " + dir_.string() + " && " + command), 0) << command;
-  const penumbra::Image original = penumbra::read_png((dir_ / chosen->src).string());
-  const penumbra::Image remade = penumbra::read_png((dir_ / "remade.png").string());
-  ASSERT_EQ(original.width, remade.width);
-  ASSERT_EQ(original.height, remade.height);
-  EXPECT_EQ(original.rgba, remade.rgba) << command;
 }
 
 TEST_F(Report, ChromiumShowsThePageWithoutConsoleErrors) {
