@@ -30,6 +30,17 @@ Shape make(ShapeKind kind, glm::vec3 position, int material) {
   return s;
 }
 
+// A dim, bluish directional light from the upper left: the sky's fill
+// beside a scene's key spot light.
+Light sky_light() {
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(0.7f, -1.0f, -0.25f));
+  sun.color = {0.75f, 0.82f, 1.0f};
+  sun.intensity = 0.35f;
+  return sun;
+}
+
 // A ground plane with casters at several heights, so that contact shadows
 // and penumbrae of different widths appear side by side.
 Scene default_scene() {
@@ -80,12 +91,7 @@ Scene default_scene() {
   spot.inner_cone_degrees = 30.0f;
   scene.lights.push_back(spot);
 
-  Light sun;
-  sun.type = LightType::Directional;
-  sun.direction = glm::normalize(glm::vec3(0.7f, -1.0f, -0.25f));
-  sun.color = {0.75f, 0.82f, 1.0f};
-  sun.intensity = 0.35f;
-  scene.lights.push_back(sun);
+  scene.lights.push_back(sky_light());
   return scene;
 }
 
@@ -185,13 +191,7 @@ Scene framed_model_scene(const std::string& path) {
   spot.cone_degrees = 32.0f;
   spot.inner_cone_degrees = 24.0f;
   scene.lights.push_back(spot);
-  // The default scene's dim sky light.
-  Light sun;
-  sun.type = LightType::Directional;
-  sun.direction = glm::normalize(glm::vec3(0.7f, -1.0f, -0.25f));
-  sun.color = {0.75f, 0.82f, 1.0f};
-  sun.intensity = 0.35f;
-  scene.lights.push_back(sun);
+  scene.lights.push_back(sky_light());
   return scene;
 }
 
