@@ -73,6 +73,27 @@ void check_readable(const std::string& path) {
   if (fs::file_size(path, ec) == 0 && !ec) fail(path, "the file is empty");
 }
 
+// A PLY file (one that starts "ply", whatever its name) must end its header
+// with an end_header line: assimp's PLY reader, given a header without one,
+// never returns.
+void check_ply_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line)) return;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  if (line != "ply") return;
+  // Headers are a few hundred bytes; comments may make them longer.
+  constexpr std::streamoff kLongestHeader = 1 << 20;
+  while (std::getline(in, line) && in.tellg() < kLongestHeader) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line == "end_header") return;
+  }
+  if (in.eof() || in.tellg() >= kLongestHeader) {
+    fail(path, "the PLY header has no end_header line");
+  }
+  fail(path, "cannot read the PLY header");
+}
+
 // Assimp's warnings while one file is read. Some readers repair bad data
 // with only a warning (glTF drops the faces whose indices are out of
 // range); such a file is an error here. Assimp has one logger per process:
@@ -245,6 +266,7 @@ void smooth_normals(TriangleMesh& mesh, std::uint32_t first_vertex, std::size_t 
 
 Model load_model(const std::string& path) {
   check_readable(path);
+  check_ply_header(path);
   const ImportWarnings warnings;
   Assimp::Importer importer;
   // Read, check what the reader gave, then post-process (and check again

@@ -234,6 +234,17 @@ TEST(ModelErrors, TruncatedFiles) {
   expect_model_error(write_model_file("truncated.obj", obj.substr(0, obj.find("f 2 3 4") + 5)), "");
 }
 
+TEST(ModelErrors, PlyHeaderWithoutItsEnd) {
+  // Without end_header assimp's PLY reader never returns: the file is
+  // refused first, whatever its name.
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  expect_model_error(write_model_file("no-end-header.ply", ply), "end_header");
+  expect_model_error(write_model_file("no-end-header.model", ply), "end_header");
+}
+
 TEST(ModelErrors, NoTriangles) {
   expect_model_error(write_model_file("empty.obj", ""), "empty");
   expect_model_error(write_model_file("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"), "no triangles");
