@@ -9,13 +9,17 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
+#include "core/child_process.hpp"
 #include "core/error.hpp"
 #include "scene/smooth_normals.hpp"
 
@@ -73,25 +77,18 @@ void check_readable(const std::string& path) {
   if (fs::file_size(path, ec) == 0 && !ec) fail(path, "the file is empty");
 }
 
-// A PLY file (one that starts "ply", whatever its name) must end its header
-// with an end_header line: assimp's PLY reader, given a header without one,
-// never returns.
+// A file that starts "ply" (in any case, as assimp's PLY reader takes it,
+// whatever the file's name) must have "end_header" in its first megabyte:
+// without it, the reader never returns.
 void check_ply_header(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  std::string line;
-  if (!std::getline(in, line)) return;
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  if (line != "ply") return;
-  // Headers are a few hundred bytes; comments may make them longer.
-  constexpr std::streamoff kLongestHeader = 1 << 20;
-  while (std::getline(in, line) && in.tellg() < kLongestHeader) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line == "end_header") return;
-  }
-  if (in.eof() || in.tellg() >= kLongestHeader) {
+  std::string head(1 << 20, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  for (char& c : head) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (head.rfind("ply", 0) == 0 && head.find("end_header") == std::string::npos) {
     fail(path, "the PLY header has no end_header line");
   }
-  fail(path, "cannot read the PLY header");
 }
 
 // Assimp's warnings while one file is read. Some readers repair bad data
@@ -262,11 +259,8 @@ void smooth_normals(TriangleMesh& mesh, std::uint32_t first_vertex, std::size_t 
   for (std::uint32_t i : part.indices) mesh.indices.push_back(first_vertex + i);
 }
 
-}  // namespace
-
-Model load_model(const std::string& path) {
-  check_readable(path);
-  check_ply_header(path);
+// Reads and checks the model in this process.
+Model read_model(const std::string& path) {
   const ImportWarnings warnings;
   Assimp::Importer importer;
   // Read, check what the reader gave, then post-process (and check again
@@ -352,6 +346,113 @@ Model load_model(const std::string& path) {
   }
   if (mesh.indices.empty()) fail(path, "the file holds no triangles");
   return model;
+}
+
+// The model as bytes, to pass it from the process that read it.
+static_assert(std::is_trivially_copyable_v<Vertex>);
+
+template <class T>
+void put(std::string& out, const T& value) {
+  out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+template <class T>
+void put_array(std::string& out, const std::vector<T>& values) {
+  put(out, static_cast<std::uint64_t>(values.size()));
+  out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+}
+
+std::string serialize(const Model& model) {
+  std::string out;
+  out.reserve(32 + model.mesh.vertices.size() * sizeof(Vertex) +
+              model.mesh.indices.size() * sizeof(std::uint32_t));
+  put_array(out, model.mesh.vertices);
+  put_array(out, model.mesh.indices);
+  put(out, static_cast<std::uint64_t>(model.materials.size()));
+  for (const Material& m : model.materials) {
+    put(out, static_cast<std::uint64_t>(m.name.size()));
+    out += m.name;
+    put(out, m.albedo);
+    put(out, m.specular);
+    put(out, m.shininess);
+  }
+  put(out, model.bounds);
+  return out;
+}
+
+class Reader {
+ public:
+  explicit Reader(const std::string& bytes) : bytes_(bytes) {}
+  const char* take(std::size_t size) {
+    if (size > bytes_.size() - at_) throw std::logic_error("model bytes end early");
+    const char* p = bytes_.data() + at_;
+    at_ += size;
+    return p;
+  }
+  template <class T>
+  T get() {
+    T value;
+    std::memcpy(&value, take(sizeof value), sizeof value);
+    return value;
+  }
+  template <class T>
+  void get_array(std::vector<T>& values) {
+    const auto count = get<std::uint64_t>();
+    if (count > (bytes_.size() - at_) / sizeof(T)) throw std::logic_error("model bytes end early");
+    values.resize(count);
+    std::memcpy(values.data(), take(count * sizeof(T)), count * sizeof(T));
+  }
+
+ private:
+  const std::string& bytes_;
+  std::size_t at_ = 0;
+};
+
+Model deserialize(const std::string& path, const std::string& bytes) {
+  Model model;
+  model.path = path;
+  Reader in(bytes);
+  in.get_array(model.mesh.vertices);
+  in.get_array(model.mesh.indices);
+  const auto materials = in.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < materials; ++i) {
+    Material m;
+    const auto length = in.get<std::uint64_t>();
+    m.name.assign(in.take(length), length);
+    m.albedo = in.get<glm::vec3>();
+    m.specular = in.get<glm::vec3>();
+    m.shininess = in.get<float>();
+    model.materials.push_back(std::move(m));
+  }
+  model.bounds = in.get<Bounds>();
+  return model;
+}
+
+// How long the reader may take: far longer than a sound file needs (a
+// million-triangle OBJ, 50 MB, reads in under 2 s), short enough that a
+// reader caught in a loop is stopped.
+std::chrono::milliseconds read_time_limit(const std::string& path) {
+  std::error_code ec;
+  const auto megabytes = static_cast<double>(fs::file_size(path, ec)) / (1 << 20);
+  return std::chrono::milliseconds(10'000 + static_cast<long long>(2'000.0 * megabytes));
+}
+
+}  // namespace
+
+// Assimp's readers can crash or never return on malformed files (fuzzing
+// assimp 5.2 found OFF files that crash its reader and PLY files it never
+// finishes), so the model is read in a child process: such a file costs an
+// error naming it, not the program.
+Model load_model(const std::string& path) {
+  check_readable(path);
+  check_ply_header(path);
+  try {
+    return deserialize(path, run_in_child_process([&] { return serialize(read_model(path)); },
+                                                  read_time_limit(path)));
+  } catch (const ChildProcessError& e) {
+    if (e.kind() == ChildProcessError::Kind::Threw) throw RuntimeError(e.what());
+    fail(path, std::string("the model reader ") + e.what() + " on this file");
+  }
 }
 
 void attach_model(Scene& scene, Shape& shape, const std::string& path, bool own_materials) {

@@ -245,6 +245,22 @@ TEST(ModelErrors, PlyHeaderWithoutItsEnd) {
   expect_model_error(write_model_file("no-end-header.model", ply), "end_header");
 }
 
+TEST(ModelErrors, AReaderThatCrashesIsAnError) {
+  // Found by fuzzing: assimp 5.2's OFF reader crashes on this file. The
+  // reader runs in a child process, so the load ends in an error naming
+  // the file (or, with a reader that survives it, loads or refuses it).
+  const std::string off =
+      "OFF\n3 1 0\n0 0 0F\n3 1 0 0 1\x19"
+      "1 \x83 0\n0 1 0\n \xd8"
+      "0  32\n\x0e&";
+  const std::string path = write_model_file("reader-crash.off", off);
+  try {
+    load_model(path);
+  } catch (const RuntimeError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
+  }
+}
+
 TEST(ModelErrors, NoTriangles) {
   expect_model_error(write_model_file("empty.obj", ""), "empty");
   expect_model_error(write_model_file("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"), "no triangles");
