@@ -235,7 +235,8 @@ Scene parse_scene_json(const std::string& text, const std::string& origin) {
   json root;
   try {
     root = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // parse_error, and out_of_range for a number beyond double's range.
     throw RuntimeError(origin + ": not valid JSON: " + e.what());
   }
   Scene scene;

@@ -67,6 +67,8 @@ TEST(SceneFile, ErrorsNameTheKeyPath) {
       {R"({"lights": [{}], "objects": [{"shape": "box"}], "extra": 1})",
        "bad.json: /extra: unknown key"},
       {R"({"lights": [{}], "objects": [)", "bad.json: not valid JSON"},
+      {R"({"lights": [{}], "objects": [{"shape": "sphere", "radius": 1e400}]})",
+       "bad.json: not valid JSON"},
       {R"({"camera": {"position": [0,0,0], "target": [0,0,0]}, "lights": [{}], "objects": [{"shape": "box"}]})",
        "bad.json: /camera/target: must differ from the position"},
   };
