@@ -261,9 +261,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
 
   gpu::GpuFrame frame{};
   frame.view = camera_view();
-  // camera_projection(), from the planes camera_frustum() already fitted.
-  frame.projection =
-      glm::perspective(camera.fov_y, camera.aspect, camera.near_plane, camera.far_plane);
+  frame.projection = camera_projection(render.width, render.height);
   frame.inverse_view_projection = glm::inverse(frame.projection * frame.view);
   frame.camera_position = glm::vec4(scene_.camera.position, 1.0f);
   frame.viewport = glm::vec4(render.width, render.height, 1.0f / static_cast<float>(render.width),

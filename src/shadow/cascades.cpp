@@ -50,11 +50,9 @@ std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum
                                          std::span<const float> splits,
                                          std::span<const Vertex> vertices, int map_size) {
   const glm::vec3 dir = glm::normalize(light.direction);
-  const glm::vec3 up =
-      std::abs(dir.y) > 0.99f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
   // Rotation only: light space's origin is the world's, so snapping in it
   // is snapping to a grid fixed in the world.
-  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, up);
+  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, stable_up(dir));
   // Depth range of the whole scene along the light (casters outside a
   // cascade's slice still shadow it).
   float lo = 1e30f, hi = -1e30f;

@@ -109,14 +109,9 @@ bool radial_depth_range(const glm::vec3& center, std::span<const Vertex> vertice
 std::vector<LightView> fit_cube_views(const Light& light, std::span<const Vertex> vertices,
                                       std::span<const std::uint32_t> indices, int map_size,
                                       float guard_texels) {
-  float zmin = 1e30f, zmax = 0.0f;
-  if (!radial_depth_range(light.position, vertices, indices, zmin, zmax)) {
-    zmin = 0.1f;  // nothing to see
-    zmax = 1.0f;
-  }
-  // Padded as a spot light's range (light_view.cpp).
-  const float z1 = zmax * 1.01f + 1e-3f;
-  const float z0 = std::max(zmin * 0.99f, z1 * 1e-3f);
+  float zmin = 1e30f, zmax = 0.0f, z0 = 0.0f, z1 = 0.0f;
+  const bool found = radial_depth_range(light.position, vertices, indices, zmin, zmax);
+  padded_depth_range(found, zmin, zmax, z0, z1);
   const float t = guard_band_half_width(map_size, guard_texels);
   // Clip planes: a point at distance z0 inside the face's frustum has axial
   // depth at least z0 / sqrt(1 + 2 t^2) (at the frustum's corners), and

@@ -7,14 +7,20 @@
 
 namespace penumbra {
 
-namespace {
-
-// An up vector that is not parallel to the light's direction.
 glm::vec3 stable_up(const glm::vec3& direction) {
   return std::abs(direction.y) > 0.99f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-}  // namespace
+void padded_depth_range(bool found, float zmin, float zmax, float& z0, float& z1) {
+  if (!found) {
+    zmin = 0.1f;  // nothing in view
+    zmax = 1.0f;
+  }
+  // Pad so that the nearest and farthest surfaces do not touch the clip
+  // planes, and keep the near plane far enough out for depth precision.
+  z1 = zmax * 1.01f + 1e-3f;
+  z0 = std::max(zmin * 0.99f, z1 * 1e-3f);
+}
 
 bool frustum_depth_range(const glm::mat4& view, float kx, float ky,
                          std::span<const Vertex> vertices, std::span<const std::uint32_t> indices,
@@ -84,14 +90,8 @@ LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
     // the light or outside its cone would only waste precision.
     float zmin = 1e30f, zmax = 0.0f;
     const float k = std::tan(0.5f * fov);
-    if (!frustum_depth_range(lv.view, k, k, vertices, indices, zmin, zmax)) {
-      zmin = 0.1f;  // nothing in view
-      zmax = 1.0f;
-    }
-    // Pad so that the nearest and farthest surfaces do not touch the clip
-    // planes, and keep the near plane far enough out for depth precision.
-    lv.z1 = zmax * 1.01f + 1e-3f;
-    lv.z0 = std::max(zmin * 0.99f, lv.z1 * 1e-3f);
+    const bool found = frustum_depth_range(lv.view, k, k, vertices, indices, zmin, zmax);
+    padded_depth_range(found, zmin, zmax, lv.z0, lv.z1);
     lv.projection = glm::perspective(fov, 1.0f, lv.z0, lv.z1);
     lv.texel_world = 2.0f * std::tan(0.5f * fov) / size;
   } else {

@@ -31,6 +31,15 @@ struct LightView {
   [[nodiscard]] float depth(const glm::vec3& world) const;
 };
 
+// An up vector for a view looking along `direction`, never parallel to it.
+glm::vec3 stable_up(const glm::vec3& direction);
+
+// The depth range [z0, z1] a perspective view stores for geometry seen at
+// depths [zmin, zmax] (or, if none was found, a unit range): padded so
+// that the surfaces do not touch the clip planes, with the near plane kept
+// at least 1e-3 of the far one for depth precision.
+void padded_depth_range(bool found, float zmin, float zmax, float& z0, float& z1);
+
 // Fits the light's shadow frustum to the scene's triangles: a spot light's
 // perspective frustum covers its cone and its near/far planes hug the
 // geometry inside it; a directional light's orthographic box encloses

@@ -48,9 +48,4 @@ LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, const Triangle
   return result;
 }
 
-LightShadowViews fit_shadow_views(const Light& light, const TriangleMesh& mesh,
-                                  const CameraFrustum& camera, const ShadowSettings& settings) {
-  return fit_shadow_views(shadow_view_inputs(light, camera, settings), mesh);
-}
-
 }  // namespace penumbra

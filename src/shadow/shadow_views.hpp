@@ -3,7 +3,6 @@
 // layer of the shadow-map arrays. A spot light has one perspective view;
 // a point light six, the faces of a cube (cube_views.hpp); a directional
 // light one orthographic view per cascade (cascades.hpp).
-#include <array>
 #include <vector>
 
 #include "core/settings.hpp"
@@ -42,7 +41,5 @@ ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& cam
 // Fits the light's views to the scene (and, for a directional light's
 // cascades, to the camera).
 LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, const TriangleMesh& mesh);
-LightShadowViews fit_shadow_views(const Light& light, const TriangleMesh& mesh,
-                                  const CameraFrustum& camera, const ShadowSettings& settings);
 
 }  // namespace penumbra
