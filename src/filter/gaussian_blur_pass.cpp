@@ -18,16 +18,10 @@ GLuint groups(int size, int tile) {
   return static_cast<GLuint>((size + tile - 1) / tile);
 }
 
-void ensure(gl::Texture& texture, const gl::Texture& like, const char* label) {
-  if (!texture || texture.width() != like.width() || texture.height() != like.height() ||
-      texture.layers() != like.layers() || texture.format() != like.format()) {
-    texture = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
-                                          .format = like.format(),
-                                          .width = like.width(),
-                                          .height = like.height(),
-                                          .layers = like.layers(),
-                                          .label = label});
-  }
+// `texture` as a 2D array shaped like `like`.
+void ensure_like(gl::Texture& texture, const gl::Texture& like, const char* label) {
+  gl::ensure_texture_array(texture, like.format(), like.width(), like.height(), like.layers(),
+                           label);
 }
 
 }  // namespace
@@ -68,8 +62,8 @@ void GaussianBlurPass::execute(const gl::Texture& source, int radius, gl::GpuPro
     weights_.update(weights.data(), weights.size() * sizeof(float));
     weights_radius_ = radius;
   }
-  ensure(intermediate_, source, "blur intermediate");
-  ensure(output_, source, "blurred shadow maps");
+  ensure_like(intermediate_, source, "blur intermediate");
+  ensure_like(output_, source, "blurred shadow maps");
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "gaussian blur");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, weights_.id());

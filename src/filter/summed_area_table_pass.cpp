@@ -31,15 +31,8 @@ const gl::Program& SummedAreaTablePass::program(const char* path, GLenum format)
 void SummedAreaTablePass::execute(const gl::Texture& source, gl::GpuProfiler* profiler) {
   const GLenum format = integer_format_with_channels_of(source.format());
   gl::Texture& table = table_;
-  if (!table || table.width() != source.width() || table.height() != source.height() ||
-      table.layers() != source.layers() || table.format() != format) {
-    table = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
-                                        .format = format,
-                                        .width = source.width(),
-                                        .height = source.height(),
-                                        .layers = source.layers(),
-                                        .label = "summed-area tables"});
-  }
+  gl::ensure_texture_array(table, format, source.width(), source.height(), source.layers(),
+                           "summed-area tables");
   const auto layers = static_cast<GLuint>(source.layers());
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "summed-area table");
@@ -66,15 +59,8 @@ void SummedAreaTablePass::execute(const gl::Texture& source, gl::GpuProfiler* pr
 
 const gl::Texture& SummedAreaTablePass::box_filtered(int radius) {
   const gl::Texture& sat = table_;
-  if (!box_filtered_ || box_filtered_.width() != sat.width() ||
-      box_filtered_.height() != sat.height() || box_filtered_.layers() != sat.layers()) {
-    box_filtered_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
-                                                .format = GL_RGBA32F,
-                                                .width = sat.width(),
-                                                .height = sat.height(),
-                                                .layers = sat.layers(),
-                                                .label = "SAT box averages"});
-  }
+  gl::ensure_texture_array(box_filtered_, GL_RGBA32F, sat.width(), sat.height(), sat.layers(),
+                           "SAT box averages");
   const gl::Program& box = program("filter/sat_box.comp", GL_RGBA32F);
   box.use();
   glProgramUniform1i(box.id(), 0, radius);

@@ -15,15 +15,8 @@ void TextureCopyPass::execute(const gl::Texture& source) {
                                            {{"IMAGE_FORMAT", image_format_qualifier(format)}}))
              .first;
   }
-  if (!output_ || output_.width() != source.width() || output_.height() != source.height() ||
-      output_.layers() != source.layers() || output_.format() != format) {
-    output_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
-                                          .format = format,
-                                          .width = source.width(),
-                                          .height = source.height(),
-                                          .layers = source.layers(),
-                                          .label = "copy"});
-  }
+  gl::ensure_texture_array(output_, format, source.width(), source.height(), source.layers(),
+                           "copy");
   it->second.use();
   glBindTextureUnit(UNIT_COMPUTE_INPUT, source.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);

@@ -29,6 +29,21 @@ void Buffer::update(const void* data, std::size_t size, std::size_t offset) {
                        data);
 }
 
+bool ensure_texture_array(Texture& texture, GLenum format, int width, int height, int layers,
+                          std::string_view label) {
+  if (texture && texture.width() == width && texture.height() == height &&
+      texture.layers() == layers && texture.format() == format) {
+    return false;
+  }
+  texture = Texture(TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                .format = format,
+                                .width = width,
+                                .height = height,
+                                .layers = layers,
+                                .label = label});
+  return true;
+}
+
 Texture::Texture(const TextureInfo& info)
     : width_(info.width), height_(info.height), layers_(info.layers), format_(info.format) {
   GLuint id = 0;

@@ -83,6 +83,12 @@ class Texture {
   GLenum format_ = 0;
 };
 
+// Makes `texture` a 2D array texture of this format, size and layer count,
+// reallocating it only when it is not one already, so passes keep their
+// textures from frame to frame. True when it was (re)allocated.
+bool ensure_texture_array(Texture& texture, GLenum format, int width, int height, int layers,
+                          std::string_view label);
+
 class Framebuffer {
  public:
   Framebuffer() = default;

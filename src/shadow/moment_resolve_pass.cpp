@@ -24,15 +24,8 @@ void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSetti
                            {"IMAGE_FORMAT", image_format_qualifier(format)}};
     it = programs_.emplace(key, gl::Program::compute("filter/resolve.comp", defines)).first;
   }
-  if (!maps_ || maps_.width() != depth_maps.width() || maps_.height() != depth_maps.height() ||
-      maps_.layers() != depth_maps.layers() || maps_.format() != format) {
-    maps_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
-                                        .format = format,
-                                        .width = depth_maps.width(),
-                                        .height = depth_maps.height(),
-                                        .layers = depth_maps.layers(),
-                                        .label = "shadow representations"});
-  }
+  gl::ensure_texture_array(maps_, format, depth_maps.width(), depth_maps.height(),
+                           depth_maps.layers(), "shadow representations");
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve");
   it->second.use();

@@ -8,14 +8,9 @@ ShadowMapPass::ShadowMapPass()
     : program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag")) {}
 
 void ShadowMapPass::execute(const GpuScene& scene, int view_count, int map_size) {
-  if (map_size != size_ || view_count != this->view_count()) {
+  if (gl::ensure_texture_array(maps_, GL_DEPTH_COMPONENT32F, map_size, map_size, view_count,
+                               "shadow maps")) {
     framebuffers_.clear();
-    maps_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
-                                        .format = GL_DEPTH_COMPONENT32F,
-                                        .width = map_size,
-                                        .height = map_size,
-                                        .layers = view_count,
-                                        .label = "shadow maps"});
     for (int i = 0; i < view_count; ++i) {
       gl::Framebuffer fb("shadow view " + std::to_string(i));
       fb.attach_depth_layer(maps_, i);
@@ -23,7 +18,6 @@ void ShadowMapPass::execute(const GpuScene& scene, int view_count, int map_size)
       fb.check_complete();
       framebuffers_.push_back(std::move(fb));
     }
-    size_ = map_size;
   }
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "shadow maps");

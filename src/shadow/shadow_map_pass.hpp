@@ -22,14 +22,11 @@ class ShadowMapPass {
   // DEPTH_COMPONENT32F 2D array holding z-bar, one layer per view. Valid
   // after execute().
   [[nodiscard]] const gl::Texture& depth_maps() const { return maps_; }
-  [[nodiscard]] int map_size() const { return size_; }
-  [[nodiscard]] int view_count() const { return static_cast<int>(framebuffers_.size()); }
 
  private:
   gl::Program program_;
   gl::Texture maps_;
   std::vector<gl::Framebuffer> framebuffers_;  // one per layer
-  int size_ = 0;
 };
 
 }  // namespace penumbra
