@@ -62,10 +62,12 @@ vec4 filtered_map(int v, vec2 uv) {
 
 // The filterable techniques' test of a receiver at relative depth z
 // against filtered map values m: the lit fraction, before light-bleeding
-// reduction.
-float filtered_lit_fraction(vec4 m, float z) {
+// reduction. texel_depth: a texel's size at the receiver in z-bar units
+// (VSM's minimum variance is given in squared texels).
+float filtered_lit_fraction(vec4 m, float z, float texel_depth) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_VSM
-  return shadow_vsm(m.xy, z, shadow_params.vsm_min_variance, 0.0);
+  float min_variance = shadow_params.vsm_min_variance * texel_depth * texel_depth;
+  return shadow_vsm(m.xy, z, min_variance, 0.0);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_ESM
   return shadow_esm(m.x, z, shadow_params.esm_c);
 #elif MSM_QUANTIZED
@@ -116,13 +118,13 @@ float soft_moment_shadow(int v, ShadowLookup s, float z) {
   float search_radius = min(max(0.5 * blocker_search_width(view, d_receiver), fixed_radius),
                             float(MAX_SOFT_RADIUS));
   vec4 region = sat_box_fractional(v, center, search_radius);
-  float occluded = 1.0 - filtered_lit_fraction(region, z);
+  float occluded = 1.0 - filtered_lit_fraction(region, z, s.texel_depth);
   if (occluded <= 0.0) return 1.0;  // no blockers: lit
   float z_blocker = clamp((filtered_mean_depth(region) - (1.0 - occluded) * z) / occluded, 0.0, z);
   float penumbra = penumbra_world_width(view, d_receiver, linear_depth_of(view, z_blocker)) /
                    shadow_texel_world(view, d_receiver);
   float radius = min(max(0.5 * penumbra, fixed_radius), float(MAX_SOFT_RADIUS));
-  return filtered_lit_fraction(sat_box_fractional(v, center, radius), z);
+  return filtered_lit_fraction(sat_box_fractional(v, center, radius), z, s.texel_depth);
 }
 #endif
 
@@ -228,7 +230,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
   GpuShadowView view = shadow_views[v];
   ShadowLookup s = shadow_lookup(view, world, normal, shadow_params.normal_offset);
   if (!s.inside) return 1.0;
-  float bias = shadow_bias(view, shadow_params, s, normal, direction_to_light(light, world),
+  float bias = shadow_bias(shadow_params, s, normal, direction_to_light(light, world),
                            SHADOW_TECHNIQUE >= TECHNIQUE_VSM && !reference
                                ? shadow_params.blur_radius : 0);
   if (reference) {
@@ -249,7 +251,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
   float lit = soft_moment_shadow(v, s, z);
 #else
-  float lit = filtered_lit_fraction(filtered_map(v, s.uv), z);
+  float lit = filtered_lit_fraction(filtered_map(v, s.uv), z, s.texel_depth);
 #endif
 #if SHADOW_TECHNIQUE == TECHNIQUE_ESM
   return lit;
@@ -343,16 +345,19 @@ void main() {
   }
   if (view == VIEW_CASCADES) {
     // The shadow view (cascade or cube face) the shadow of the chosen light
-    // reads here, as a colour; the blend band towards the next cascade
-    // mixes in its colour.
+    // reads here, as a colour. In the blend band towards the next cascade
+    // both are read: diagonal stripes of both colours, the next one's
+    // stripes as wide as its weight.
     GpuLight light = lights[frame.options.z];
     ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
-    vec3 colour = mix(view_colour(selected.view - light.views.x),
-                      view_colour(selected.next - light.views.x), selected.blend);
-    // Black where the point lies outside the view it selected: no shadow
-    // map covers it there.
-    bool inside = shadow_lookup(shadow_views[selected.view], world, n, 0.0).inside;
-    out_color = vec4(inside ? colour : vec3(0.0), 1.0);
+    bool striped = fract(float(pixel.x + pixel.y) / 8.0) < selected.blend;
+    int shown = striped ? selected.next : selected.view;
+    // Black where a view the point reads does not cover it: no shadow map
+    // has data there.
+    bool inside = shadow_lookup(shadow_views[selected.view], world, n, 0.0).inside &&
+                  (selected.blend == 0.0 ||
+                   shadow_lookup(shadow_views[selected.next], world, n, 0.0).inside);
+    out_color = vec4(inside ? view_colour(shown - light.views.x) : vec3(0.0), 1.0);
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {

@@ -9,6 +9,10 @@ struct ShadowLookup {
   vec2 uv;        // shadow-map coordinates, in [0, 1] inside the map
   float depth;    // receiver's relative depth z-bar
   float texel;    // world size of one shadow-map texel at the receiver
+  // The same size in z-bar units: converts the parameters given in texels
+  // (biases, VSM's minimum variance) to this view's depth range, so they
+  // mean the same at every scene scale.
+  float texel_depth;
   bool inside;    // false outside the view's frustum: treated as lit
 };
 
@@ -53,26 +57,29 @@ ShadowLookup shadow_lookup(GpuShadowView view, vec3 world, vec3 normal, float no
   float z = light_linear_depth(view, p);
   s.depth = relative_depth_of(view, z);
   s.texel = shadow_texel_world(view, z);
+  s.texel_depth = s.texel / (view.depth_range.y - view.depth_range.x);
   s.inside = clip.w > 0.0 && all(greaterThanEqual(s.uv, vec2(0.0))) &&
              all(lessThanEqual(s.uv, vec2(1.0)));
   return s;
 }
 
-// Constant plus slope-scaled bias, in z-bar units. The slope term is the
-// receiver's depth change across one texel, tan(theta) * texel, where theta
-// is the angle between its normal and the direction to the light; tan is
-// capped so that grazing surfaces do not push the bias to infinity.
+// Constant plus slope-scaled bias, both in texels, returned in z-bar
+// units. The slope term is the receiver's depth change across one texel,
+// tan(theta) * texel, where theta is the angle between its normal and the
+// direction to the light; tan is capped so that grazing surfaces do not
+// push the bias to infinity. Texels, converted with the view's own depth
+// range, keep the bias the same fraction of a texel whatever the scene's
+// size (a bias in z-bar would shrink in world units as the range tightens).
 // A filter of radius W texels spreads a planar receiver's own depth over
 // +-W texels of that slope; the filtered techniques compare against the
 // whole spread, so their slope term grows by filter_slope_bias per texel
 // of radius (W = 0 for the techniques that test single texels).
-float shadow_bias(GpuShadowView view, GpuShadow params, ShadowLookup s, vec3 normal,
-                  vec3 to_light, int filter_radius) {
+float shadow_bias(GpuShadow params, ShadowLookup s, vec3 normal, vec3 to_light,
+                  int filter_radius) {
   float cos_theta = clamp(abs(dot(normal, to_light)), 1e-4, 1.0);
   float tan_theta = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, params.max_slope);
-  float depth_span = view.depth_range.y - view.depth_range.x;
   float slope_texels = params.slope_bias + params.filter_slope_bias * float(filter_radius);
-  return params.constant_bias + slope_texels * tan_theta * s.texel / depth_span;
+  return (params.constant_bias + slope_texels * tan_theta) * s.texel_depth;
 }
 
 // Relative depth at which the light's ray through shadow-map point uv meets

@@ -67,7 +67,7 @@ struct GpuFrame {
 // Shadow parameters (see ShadowSettings in src/core/settings.hpp for their
 // meaning). Scalars only, four to a row, so std140 matches the C++ layout.
 struct GpuShadow {
-  float constant_bias;  // z-bar units
+  float constant_bias;  // texels
   float slope_bias;     // texels of the receiver's depth slope
   float normal_offset;  // texels
   float max_slope;      // largest tan(theta) the slope bias follows

@@ -78,8 +78,10 @@ struct ShadowSettings {
   Technique technique = Technique::Hard;
   // Shadow-map width and height in texels.
   int map_size = 2048;
-  // Constant depth bias, in relative depth z-bar (fraction of the light's depth range).
-  float constant_bias = 0.0005f;
+  // Constant depth bias, in shadow-map texels (the world size of a texel at
+  // the receiver, converted to each shadow view's own depth range, so the
+  // bias means the same at every scene scale).
+  float constant_bias = 0.5f;
   // Slope-scaled bias: multiples of the receiver's depth change across one texel.
   float slope_bias = 1.5f;
   // Largest tan(angle to the light) the slope-scaled bias follows.
@@ -124,8 +126,9 @@ struct ShadowSettings {
   // MSM moment bias alpha for 16-bit quantized moments, and for moments
   // summed in the fixed-point summed-area table.
   float msm16_alpha = 5e-5f;
-  // VSM minimum variance, in z-bar squared.
-  float vsm_min_variance = 1e-4f;
+  // VSM minimum variance, in squared shadow-map texels (converted per view
+  // like the constant bias).
+  float vsm_min_variance = 1.0f;
   // Light-bleeding reduction for vsm and msm: lit fractions below this
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
@@ -229,8 +232,9 @@ inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
 inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
 
 inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloatParams{{
-    {"constant-bias", "constant depth bias, in relative light depth z-bar", 0.0f, 0.1f,
-     &ShadowSettings::constant_bias},
+    {"constant-bias",
+     "constant depth bias, in shadow-map texels (a texel's world size at the receiver)", 0.0f,
+     64.0f, &ShadowSettings::constant_bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
      &ShadowSettings::slope_bias},
     {"max-slope", "largest slope tan(theta) the slope-scaled bias follows", 0.0f, 1000.0f,
@@ -254,7 +258,7 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloa
     {"msm-alpha", "MSM moment bias alpha, 32-bit moments", 1e-8f, 0.5f, &ShadowSettings::msm_alpha},
     {"msm16-alpha", "MSM moment bias alpha, 16-bit and summed-area-table moments", 1e-8f, 0.5f,
      &ShadowSettings::msm16_alpha},
-    {"vsm-min-variance", "VSM minimum variance (z-bar squared)", 0.0f, 0.25f,
+    {"vsm-min-variance", "VSM minimum variance, in squared shadow-map texels", 0.0f, 4096.0f,
      &ShadowSettings::vsm_min_variance},
     {"bleed-reduction", "light-bleeding reduction for vsm and msm (0: off)", 0.0f, 0.99f,
      &ShadowSettings::bleed_reduction},

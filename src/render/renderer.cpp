@@ -189,6 +189,7 @@ CameraFrustum Renderer::camera_frustum(int width, int height) const {
   CameraFrustum c;
   c.position = scene_.camera.position;
   c.forward = glm::normalize(scene_.camera.target - scene_.camera.position);
+  c.up = scene_.camera.up;
   c.fov_y = glm::radians(scene_.camera.fov_y_degrees);
   c.aspect = static_cast<float>(width) / static_cast<float>(height);
   camera_depth_range(width, height, c.near_plane, c.far_plane);

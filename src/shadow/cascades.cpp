@@ -1,8 +1,11 @@
 #include "shadow/cascades.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "shadow/polygon_clip.hpp"
 
 namespace penumbra {
 
@@ -46,46 +49,94 @@ glm::vec2 snap_to_texel(const glm::vec2& p, float texel) {
   return glm::vec2(std::round(p.x / texel), std::round(p.y / texel)) * texel;
 }
 
+float cascade_slice_start(std::span<const float> splits, float blend, std::size_t i) {
+  if (i == 0) return splits[0];
+  return splits[i] - blend * (splits[i] - splits[i - 1]);
+}
+
+namespace {
+
+// Row r of a matrix (glm stores columns).
+glm::vec4 row(const glm::mat4& m, int r) { return {m[0][r], m[1][r], m[2][r], m[3][r]}; }
+
+// The half-spaces of the camera frustum's slice between view depths d0 and
+// d1.
+std::array<HalfSpace, 6> camera_slice(const CameraFrustum& camera, float d0, float d1) {
+  const glm::mat4 view = glm::lookAt(camera.position, camera.position + camera.forward, camera.up);
+  const float ky = std::tan(0.5f * camera.fov_y), kx = camera.aspect * ky;
+  // View depth is -z; the side planes |x| <= kx depth, |y| <= ky depth.
+  const glm::vec4 x = row(view, 0), y = row(view, 1), depth = -row(view, 2);
+  return {coordinate_at_least(depth, d0), coordinate_at_most(depth, d1),
+          coordinate_at_least(kx * depth - x, 0.0f), coordinate_at_least(kx * depth + x, 0.0f),
+          coordinate_at_least(ky * depth - y, 0.0f), coordinate_at_least(ky * depth + y, 0.0f)};
+}
+
+}  // namespace
+
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
-                                         std::span<const float> splits,
-                                         std::span<const Vertex> vertices, int map_size) {
+                                         std::span<const float> splits, float blend,
+                                         std::span<const Vertex> vertices,
+                                         std::span<const std::uint32_t> indices, int map_size) {
   const glm::vec3 dir = glm::normalize(light.direction);
   // Rotation only: light space's origin is the world's, so snapping in it
   // is snapping to a grid fixed in the world.
   const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, stable_up(dir));
-  // Depth range of the whole scene along the light (casters outside a
-  // cascade's slice still shadow it).
-  float lo = 1e30f, hi = -1e30f;
-  for (const Vertex& v : vertices) {
-    const float z = (view * glm::vec4(v.position, 1.0f)).z;
-    lo = std::min(lo, z);
-    hi = std::max(hi, z);
-  }
-  if (vertices.empty()) {
-    lo = -1.0f;
-    hi = 1.0f;
-  }
-  const float depth_pad = 0.01f * (hi - lo) + 1e-3f;
-  const float z0 = -hi - depth_pad;  // view space looks down -z: depth = -z
-  const float z1 = -lo + depth_pad;
+  const glm::vec4 light_x = row(view, 0), light_y = row(view, 1), light_depth = -row(view, 2);
   const float size = static_cast<float>(map_size);
 
   std::vector<LightView> views;
+  std::vector<glm::vec3> receiver, scratch;
   for (std::size_t i = 0; i + 1 < splits.size(); ++i) {
-    const Sphere sphere = frustum_slice_sphere(camera, splits[i], splits[i + 1]);
+    const float d0 = cascade_slice_start(splits, blend, i), d1 = splits[i + 1];
+    const Sphere sphere = frustum_slice_sphere(camera, d0, d1);
     // Half-width h = r + one texel of margin for the snap, 2 h / size a
     // texel: h = r / (1 - 2 / size).
     const float half = quantize_cascade_radius(sphere.radius) / (1.0f - 2.0f / size);
     const float texel = 2.0f * half / size;
     const glm::vec2 center = snap_to_texel(glm::vec2(view * glm::vec4(sphere.center, 1.0f)), texel);
+
+    // Casters: the geometry in the column; receivers: the part of it in
+    // the camera's slice as well.
+    const std::array<HalfSpace, 4> column = {
+        coordinate_at_least(light_x, center.x - half), coordinate_at_most(light_x, center.x + half),
+        coordinate_at_least(light_y, center.y - half), coordinate_at_most(light_y, center.y + half)};
+    const std::array<HalfSpace, 6> slice = camera_slice(camera, d0, d1);
+    float caster_near = 1e30f, column_far = -1e30f, receiver_far = -1e30f;
+    for_each_clipped_triangle(vertices, indices, column, [&](const std::vector<glm::vec3>& p) {
+      for (const glm::vec3& q : p) {
+        const float z = glm::dot(glm::vec3(light_depth), q);
+        caster_near = std::min(caster_near, z);
+        column_far = std::max(column_far, z);
+      }
+      receiver = p;
+      clip_polygon(receiver, slice, scratch);
+      for (const glm::vec3& q : receiver) {
+        receiver_far = std::max(receiver_far, glm::dot(glm::vec3(light_depth), q));
+      }
+    });
+    if (caster_near > column_far) {  // an empty column: the slice's sphere
+      const float c = glm::dot(glm::vec3(light_depth), sphere.center);
+      caster_near = c - sphere.radius;
+      column_far = c + sphere.radius;
+    }
+    const float far_end = receiver_far >= caster_near ? receiver_far : column_far;
+    // Pad so that no surface touches a clip plane, and the lookups of the
+    // receivers at the far end (moved by the normal offset, read over a
+    // filter's window) stay inside.
+    const float pad = 0.01f * (far_end - caster_near) + 2.0f * texel;
     LightView lv;
     lv.perspective = false;
     lv.view = view;
+    // Stable bounds (like the texel-snapped extent, so a small camera move
+    // leaves the maps unchanged): the span rounded up to the radius grid,
+    // the near end snapped down to a sixteenth of it.
+    const float span = quantize_cascade_radius(far_end - caster_near + 2.0f * pad);
+    const float step = span / 16.0f;
+    lv.z0 = std::floor((caster_near - pad) / step) * step;
+    lv.z1 = lv.z0 + span + step;
     lv.projection =
-        glm::ortho(center.x - half, center.x + half, center.y - half, center.y + half, z0, z1);
+        glm::ortho(center.x - half, center.x + half, center.y - half, center.y + half, lv.z0, lv.z1);
     lv.view_projection = lv.projection * lv.view;
-    lv.z0 = z0;
-    lv.z1 = z1;
     lv.texel_world = texel;
     views.push_back(lv);
   }

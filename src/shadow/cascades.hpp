@@ -25,6 +25,7 @@ namespace penumbra {
 struct CameraFrustum {
   glm::vec3 position{0.0f};
   glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit view direction
+  glm::vec3 up{0.0f, 1.0f, 0.0f};        // the camera's up vector (not parallel to forward)
   float fov_y = 0.785f;                  // vertical field of view, radians
   float aspect = 1.0f;                   // width / height
   float near_plane = 0.1f;               // depths along `forward`
@@ -60,13 +61,29 @@ float quantize_cascade_radius(float radius);
 // A light-space coordinate rounded to the nearest multiple of the texel size.
 glm::vec2 snap_to_texel(const glm::vec2& p, float texel);
 
+// The camera depth where cascade i's slice begins: split i, moved back over
+// the blend band at the end of cascade i - 1 (the last `blend` of its
+// depth range), where points read both cascades; the near plane for the
+// first.
+float cascade_slice_start(std::span<const float> splits, float blend, std::size_t i);
+
 // The orthographic views of the cascades between the splits (splits.size()
-// - 1 of them). Each is square, its half-width the quantized radius of its
-// slice's sphere widened by one texel for the snapping, and looks down the
-// light's direction with a fixed orientation; all share the depth range of
-// the whole scene, so every caster is in every cascade.
+// - 1 of them). Each is square, its half-width the quantized radius of the
+// sphere of its slice (from cascade_slice_start() to its split) widened by
+// one texel for the snapping, and looks down the light's direction with a
+// fixed orientation.
+//
+// Depth bounds per cascade, so precision does not depend on the scene's
+// size (after Lauritzen et al., "Sample Distribution Shadow Maps", I3D
+// 2011, section 4: bounds from what each cascade must shadow): the far end
+// is the farthest geometry inside both the cascade's column and its slice
+// of the camera frustum (the receivers it covers), the near end the
+// nearest geometry anywhere in its column (every caster that can shadow
+// them: along a directional light, a shadow's caster lies in the
+// receiver's column). Geometry is measured by clipping the triangles.
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
-                                         std::span<const float> splits,
-                                         std::span<const Vertex> vertices, int map_size);
+                                         std::span<const float> splits, float blend,
+                                         std::span<const Vertex> vertices,
+                                         std::span<const std::uint32_t> indices, int map_size);
 
 }  // namespace penumbra

@@ -1,9 +1,12 @@
 #include "shadow/light_view.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
+
+#include "shadow/polygon_clip.hpp"
 
 namespace penumbra {
 
@@ -25,45 +28,23 @@ void padded_depth_range(bool found, float zmin, float zmax, float& z0, float& z1
 bool frustum_depth_range(const glm::mat4& view, float kx, float ky,
                          std::span<const Vertex> vertices, std::span<const std::uint32_t> indices,
                          float& zmin, float& zmax) {
+  // View depth is -z; the side planes |x| <= kx depth, |y| <= ky depth.
+  const glm::vec4 x(view[0][0], view[1][0], view[2][0], view[3][0]);
+  const glm::vec4 y(view[0][1], view[1][1], view[2][1], view[3][1]);
+  const glm::vec4 depth = -glm::vec4(view[0][2], view[1][2], view[2][2], view[3][2]);
+  const std::array<HalfSpace, 4> sides = {
+      coordinate_at_least(kx * depth - x, 0.0f), coordinate_at_least(kx * depth + x, 0.0f),
+      coordinate_at_least(ky * depth - y, 0.0f), coordinate_at_least(ky * depth + y, 0.0f)};
   bool any = false;
-  std::vector<glm::vec3> poly, next;
-  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    poly.clear();
-    for (std::size_t c = 0; c < 3; ++c) {
-      glm::vec4 p = view * glm::vec4(vertices[indices[t + c]].position, 1.0f);
-      poly.emplace_back(p.x, p.y, -p.z);  // z: depth in front of the eye
-    }
-    // Plane i keeps points with distance(p) >= 0.
-    for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
-      auto distance = [&](const glm::vec3& p) {
-        switch (plane) {
-          case 0:
-            return kx * p.z - p.x;
-          case 1:
-            return kx * p.z + p.x;
-          case 2:
-            return ky * p.z - p.y;
-          default:
-            return ky * p.z + p.y;
-        }
-      };
-      next.clear();
-      for (std::size_t i = 0; i < poly.size(); ++i) {
-        const glm::vec3& a = poly[i];
-        const glm::vec3& b = poly[(i + 1) % poly.size()];
-        const float da = distance(a), db = distance(b);
-        if (da >= 0.0f) next.push_back(a);
-        if ((da >= 0.0f) != (db >= 0.0f)) next.push_back(a + (b - a) * (da / (da - db)));
-      }
-      std::swap(poly, next);
-    }
-    for (const glm::vec3& p : poly) {
-      if (p.z <= 0.0f) continue;
-      zmin = std::min(zmin, p.z);
-      zmax = std::max(zmax, p.z);
+  for_each_clipped_triangle(vertices, indices, sides, [&](const std::vector<glm::vec3>& polygon) {
+    for (const glm::vec3& p : polygon) {
+      const float z = glm::dot(depth, glm::vec4(p, 1.0f));
+      if (z <= 0.0f) continue;
+      zmin = std::min(zmin, z);
+      zmax = std::max(zmax, z);
       any = true;
     }
-  }
+  });
   return any;
 }
 

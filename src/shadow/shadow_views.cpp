@@ -19,6 +19,7 @@ ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& cam
       inputs.camera = camera;
       inputs.cascades = settings.cascades;
       inputs.cascade_lambda = settings.cascade_lambda;
+      inputs.cascade_blend = settings.cascade_blend;
       break;
   }
   return inputs;
@@ -39,7 +40,8 @@ LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, const Triangle
       const CameraFrustum& camera = inputs.camera;
       const std::vector<float> splits = cascade_splits(camera.near_plane, camera.far_plane,
                                                        inputs.cascades, inputs.cascade_lambda);
-      result.views = fit_cascade_views(light, camera, splits, mesh.vertices, inputs.map_size);
+      result.views = fit_cascade_views(light, camera, splits, inputs.cascade_blend, mesh.vertices,
+                                       mesh.indices, inputs.map_size);
       result.cascade_end.assign(splits.begin() + 1, splits.end());
       result.cascade_start = splits.front();
       break;

@@ -33,6 +33,7 @@ struct ShadowViewInputs {
   CameraFrustum camera;            // directional lights: the cascades
   int cascades = 0;
   float cascade_lambda = 0.0f;
+  float cascade_blend = 0.0f;
   bool operator==(const ShadowViewInputs&) const = default;
 };
 ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& camera,

@@ -2,6 +2,7 @@
 // cascade that covers it, the splits increase to the camera's far plane,
 // and a camera move smaller than a texel slides the maps by whole texels,
 // leaving their contents unchanged (no shimmering).
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <set>
@@ -131,6 +132,78 @@ TEST_F(GpuTest, SubTexelCameraMovesLeaveTheCascadeMapsUnchanged) {
       EXPECT_LE(changed, compared / 2000) << "cascade " << c;
     }
   }
+}
+
+// A long wall under a low sun seen along its shadow through a narrow
+// field of view: the camera's frustum slices are long and thin, so a
+// cascade fitted to its own slice alone would miss the blend band in
+// front of it, where the previous cascade blends into it.
+Scene wall_scene() {
+  Scene scene;
+  scene.name = "wall";
+  scene.materials = {{"grey", {0.7f, 0.7f, 0.7f}, {0.0f, 0.0f, 0.0f}, 8.0f}};
+  Shape ground;
+  ground.kind = ShapeKind::Plane;
+  ground.size = {200.0f, 0.0f, 200.0f};
+  scene.shapes.push_back(ground);
+  Shape wall;
+  wall.kind = ShapeKind::Box;
+  wall.position = {0.0f, 1.0f, 0.0f};
+  wall.size = {0.3f, 2.0f, 160.0f};
+  scene.shapes.push_back(wall);
+  scene.camera.position = {4.0f, 4.0f, 70.0f};
+  scene.camera.target = {1.5f, 0.0f, -40.0f};
+  scene.camera.fov_y_degrees = 8.0f;
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(1.0f, -0.8f, 0.15f));
+  scene.lights.push_back(sun);
+  return scene;
+}
+
+TEST_F(GpuTest, CascadeBlendBandsReadOnlyWhereTheNextCascadeHasData) {
+  Renderer renderer(wall_scene());
+  RenderSettings rs;
+  rs.width = 160;
+  rs.height = 120;
+  rs.view = View::Shadow;
+  ShadowSettings shadow;
+  shadow.map_size = 1024;
+  shadow.cascades = 2;
+  shadow.cascade_lambda = 0.3f;
+  shadow.cascade_blend = 0.0f;
+  renderer.render(rs, shadow);
+  const Image unblended = renderer.read_view();
+  shadow.cascade_blend = 0.5f;
+  renderer.render(rs, shadow);
+  const Image blended = renderer.read_view();
+  // Pixels inside the shadow, two pixels or more from its edges: there
+  // both cascades see the wall, whatever their resolutions (at the edges
+  // the coarser cascade's texels may differ).
+  auto inside_shadow = [&](int x, int y) {
+    for (int dy = -2; dy <= 2; ++dy) {
+      for (int dx = -2; dx <= 2; ++dx) {
+        const int u = std::clamp(x + dx, 0, rs.width - 1), v = std::clamp(y + dy, 0, rs.height - 1);
+        if (unblended.pixel(u, v)[3] == 0.0f || unblended.pixel(u, v)[0] > 0.5f) return false;
+      }
+    }
+    return true;
+  };
+  int shadowed = 0, lighter = 0;
+  float worst = 0.0f;
+  for (int y = 0; y < rs.height; ++y) {
+    for (int x = 0; x < rs.width; ++x) {
+      if (!inside_shadow(x, y)) continue;
+      ++shadowed;
+      const float d = blended.pixel(x, y)[0] - unblended.pixel(x, y)[0];
+      worst = std::max(worst, d);
+      lighter += d > 0.02f;
+    }
+  }
+  std::printf("%d shadowed pixels, %d lighter by more than 0.02 with the blend (largest %.3f)\n",
+              shadowed, lighter, worst);
+  EXPECT_GT(shadowed, rs.width * rs.height / 20);
+  EXPECT_EQ(lighter, 0);
 }
 
 }  // namespace

@@ -88,26 +88,35 @@ Light sun() {
   return light;
 }
 
-std::vector<Vertex> ground_vertices() {
+std::vector<Vertex> ground_vertices(float half = 20.0f, float tilt = 3.0f) {
   std::vector<Vertex> v(4);
-  v[0].position = {-20, 0, -20};
-  v[1].position = {20, 0, -20};
-  v[2].position = {20, 3, 20};
-  v[3].position = {-20, 0, 20};
+  v[0].position = {-half, 0, -half};
+  v[1].position = {half, 0, -half};
+  v[2].position = {half, tilt, half};
+  v[3].position = {-half, 0, half};
   return v;
 }
+
+const std::vector<std::uint32_t> kQuad = {0, 1, 2, 0, 2, 3};
 
 TEST(Cascades, EveryCascadeHoldsItsSlice) {
   const CameraFrustum camera = test_camera({0, 6, 10}, {0, -0.5f, -1});
   const std::vector<float> splits = cascade_splits(camera.near_plane, camera.far_plane, 4, 0.75f);
+  const float blend = 0.3f;
   const std::vector<LightView> views =
-      fit_cascade_views(sun(), camera, splits, ground_vertices(), 512);
+      fit_cascade_views(sun(), camera, splits, blend, ground_vertices(), kQuad, 512);
   ASSERT_EQ(views.size(), 4u);
   for (std::size_t i = 0; i < views.size(); ++i) {
     if (i > 0) {
       EXPECT_GT(views[i].texel_world, views[i - 1].texel_world);
     }
-    for (const glm::vec3& corner : slice_corners(camera, splits[i], splits[i + 1])) {
+    // The slice includes the blend band of the cascade before, where
+    // points read this cascade too.
+    const float start = cascade_slice_start(splits, blend, i);
+    if (i > 0) {
+      EXPECT_NEAR(start, splits[i] - blend * (splits[i] - splits[i - 1]), 1e-5f);
+    }
+    for (const glm::vec3& corner : slice_corners(camera, start, splits[i + 1])) {
       const glm::vec4 clip = views[i].view_projection * glm::vec4(corner, 1.0f);
       EXPECT_LE(std::abs(clip.x), 1.0f) << "cascade " << i;
       EXPECT_LE(std::abs(clip.y), 1.0f) << "cascade " << i;
@@ -120,7 +129,7 @@ TEST(Cascades, SubTexelCameraMovesShiftTheMapsByWholeTexels) {
   const CameraFrustum before = test_camera({0, 6, 10}, {0, -0.5f, -1});
   const std::vector<float> splits = cascade_splits(0.3f, 40.0f, 3, 0.75f);
   const std::vector<LightView> a =
-      fit_cascade_views(sun(), before, splits, ground_vertices(), size);
+      fit_cascade_views(sun(), before, splits, 0.1f, ground_vertices(), kQuad, size);
   for (const glm::vec3& move :
        {glm::vec3(0.003f, 0, 0), glm::vec3(0, 0.002f, -0.004f), glm::vec3(0.05f, 0.01f, 0.02f)}) {
     CameraFrustum after = before;
@@ -128,9 +137,12 @@ TEST(Cascades, SubTexelCameraMovesShiftTheMapsByWholeTexels) {
     // A turn of the camera too: the sphere does not follow orientation.
     after.forward = glm::normalize(before.forward + glm::vec3(0.01f, 0.0f, 0.0f));
     const std::vector<LightView> b =
-        fit_cascade_views(sun(), after, splits, ground_vertices(), size);
+        fit_cascade_views(sun(), after, splits, 0.1f, ground_vertices(), kQuad, size);
     for (std::size_t i = 0; i < a.size(); ++i) {
       ASSERT_FLOAT_EQ(a[i].texel_world, b[i].texel_world);
+      // The depth bounds are snapped too: the stored depths do not change.
+      EXPECT_EQ(a[i].z0, b[i].z0) << "cascade " << i;
+      EXPECT_EQ(a[i].z1, b[i].z1) << "cascade " << i;
       // The map's origin, in texels of light space: whole-texel shifts only.
       const glm::vec4 origin_a = glm::inverse(a[i].view_projection) * glm::vec4(-1, -1, 0, 1);
       const glm::vec4 origin_b = glm::inverse(b[i].view_projection) * glm::vec4(-1, -1, 0, 1);
@@ -139,6 +151,53 @@ TEST(Cascades, SubTexelCameraMovesShiftTheMapsByWholeTexels) {
       EXPECT_NEAR(shift.x, std::round(shift.x), 1e-2f) << "cascade " << i;
       EXPECT_NEAR(shift.y, std::round(shift.y), 1e-2f) << "cascade " << i;
     }
+  }
+}
+
+// Each cascade's depth bounds come from the geometry in its own column:
+// the ground beyond the camera's view does not widen them, a caster above
+// the column lowers the near end, one beside the column does not.
+TEST(Cascades, DepthBoundsFollowTheCascadeNotTheScene) {
+  const CameraFrustum camera = test_camera({0, 6, 10}, {0, -0.5f, -1});
+  const std::vector<float> splits = cascade_splits(camera.near_plane, camera.far_plane, 3, 0.75f);
+  const std::vector<LightView> small =
+      fit_cascade_views(sun(), camera, splits, 0.1f, ground_vertices(100.0f, 0.0f), kQuad, 512);
+  const std::vector<LightView> large =
+      fit_cascade_views(sun(), camera, splits, 0.1f, ground_vertices(1600.0f, 0.0f), kQuad, 512);
+  for (std::size_t i = 0; i < small.size(); ++i) {
+    EXPECT_EQ(small[i].z0, large[i].z0) << "cascade " << i;
+    EXPECT_EQ(small[i].z1, large[i].z1) << "cascade " << i;
+    // A flat ground seen under the sun spans the column's width times the
+    // slope of the light: far less than the 1600-unit ground does.
+    const float width = small[i].texel_world * 512.0f;
+    EXPECT_LT(small[i].z1 - small[i].z0, 2.5f * width) << "cascade " << i;
+  }
+  // A small caster 30 units towards the sun from a ground point that the
+  // second cascade shades (camera depth 7.6).
+  const glm::vec3 ground(0.0f, 0.0f, 4.5f);
+  const glm::vec3 caster = ground - 30.0f * sun().direction;
+  std::vector<Vertex> vertices = ground_vertices(1600.0f, 0.0f);
+  for (const glm::vec3& offset :
+       {glm::vec3(0.0f), glm::vec3(0.1f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 0.1f)}) {
+    Vertex v;
+    v.position = caster + offset;
+    vertices.push_back(v);
+  }
+  std::vector<std::uint32_t> indices = kQuad;
+  for (std::uint32_t k : {4u, 5u, 6u}) indices.push_back(k);
+  const std::vector<LightView> with_caster =
+      fit_cascade_views(sun(), camera, splits, 0.1f, vertices, indices, 512);
+  EXPECT_LT(with_caster[1].z0, small[1].z0);
+  EXPECT_GE(with_caster[1].relative_depth(caster), 0.0f);
+  EXPECT_LT(with_caster[1].relative_depth(caster), 0.1f) << "the caster is the nearest geometry";
+  EXPECT_LT(with_caster[1].relative_depth(ground), 1.0f) << "the receiver is inside";
+  EXPECT_GT(with_caster[1].z1 - with_caster[1].z0, small[1].z1 - small[1].z0);
+  // Moved far off to the side, the caster is in no cascade's column.
+  for (std::uint32_t k : {4u, 5u, 6u}) vertices[k].position.x += 300.0f;
+  const std::vector<LightView> beside =
+      fit_cascade_views(sun(), camera, splits, 0.1f, vertices, indices, 512);
+  for (std::size_t i = 0; i < small.size(); ++i) {
+    EXPECT_EQ(beside[i].z0, small[i].z0) << "cascade " << i;
   }
 }
 

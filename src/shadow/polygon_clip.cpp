@@ -1,0 +1,32 @@
+#include "shadow/polygon_clip.hpp"
+
+#include <utility>
+
+namespace penumbra {
+
+HalfSpace coordinate_at_least(const glm::vec4& row, float lo) {
+  return {row.x, row.y, row.z, row.w - lo};
+}
+
+HalfSpace coordinate_at_most(const glm::vec4& row, float hi) {
+  return {-row.x, -row.y, -row.z, hi - row.w};
+}
+
+void clip_polygon(std::vector<glm::vec3>& polygon, std::span<const HalfSpace> half_spaces,
+                  std::vector<glm::vec3>& scratch) {
+  for (const HalfSpace& h : half_spaces) {
+    if (polygon.empty()) return;
+    const glm::vec3 n(h);
+    scratch.clear();
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const glm::vec3& a = polygon[i];
+      const glm::vec3& b = polygon[(i + 1) % polygon.size()];
+      const float da = glm::dot(n, a) + h.w, db = glm::dot(n, b) + h.w;
+      if (da >= 0.0f) scratch.push_back(a);
+      if ((da >= 0.0f) != (db >= 0.0f)) scratch.push_back(a + (b - a) * (da / (da - db)));
+    }
+    std::swap(polygon, scratch);
+  }
+}
+
+}  // namespace penumbra

@@ -1,0 +1,42 @@
+#pragma once
+// Clipping the scene's triangles to convex regions (a light's frustum, a
+// cascade's column, a slice of the camera's frustum) to measure the depth
+// range of the geometry inside: shadow views fit their depth bounds to it.
+// Pure CPU functions, tested without a GPU.
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+namespace penumbra {
+
+// A half-space {p : dot(xyz, p) + w >= 0}.
+using HalfSpace = glm::vec4;
+
+// The half-space of points whose coordinate `row . (p, 1)` is at least `lo`
+// (row: a row of an affine transform, e.g. one axis of a view matrix).
+HalfSpace coordinate_at_least(const glm::vec4& row, float lo);
+// ... and at most `hi`.
+HalfSpace coordinate_at_most(const glm::vec4& row, float hi);
+
+// Clips the convex polygon `polygon` (in place) to the intersection of the
+// half-spaces (Sutherland and Hodgman, "Reentrant Polygon Clipping", CACM
+// 1974). `scratch` is working storage, so a loop over many triangles
+// allocates nothing. An empty result means the polygon lies outside.
+void clip_polygon(std::vector<glm::vec3>& polygon, std::span<const HalfSpace> half_spaces,
+                  std::vector<glm::vec3>& scratch);
+
+// Calls visit(polygon) with the part of each triangle inside the
+// half-spaces, for the triangles with a non-empty part.
+template <class Vertices, class Indices, class Visit>
+void for_each_clipped_triangle(const Vertices& vertices, const Indices& indices,
+                               std::span<const HalfSpace> half_spaces, Visit&& visit) {
+  std::vector<glm::vec3> polygon, scratch;
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    polygon.assign({vertices[indices[t]].position, vertices[indices[t + 1]].position,
+                    vertices[indices[t + 2]].position});
+    clip_polygon(polygon, half_spaces, scratch);
+    if (!polygon.empty()) visit(polygon);
+  }
+}
+
+}  // namespace penumbra
