@@ -15,8 +15,8 @@
 #include "../shadow/msm.glsl"
 #include "../filter/sat.glsl"
 #include "../shadow/noise.glsl"
-#include "../shadow/pcf.glsl"
 #include "../shadow/penumbra.glsl"
+#include "../shadow/pcf.glsl"
 
 layout(std140, binding = BINDING_SHADOW_UBO) uniform ShadowBlock { GpuShadow shadow_params; };
 
@@ -187,17 +187,19 @@ float filtered_hard_reference(int v, vec2 uv, ReceiverPlane z) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
 // PCF, or for one sample the hardware's 2x2 bilinear compare; width 0 is
 // the plain test.
-float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, float width, int samples,
-                       vec2 rotation) {
+float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
+                       float width, int samples, vec2 rotation) {
   if (width <= 0.0) return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
   if (samples == 1) return texture(shadow_compare, vec4(s.uv, float(v), z));
-  return shadow_pcf(shadow_depth, v, s.uv, z, gradient, width, samples, rotation);
+  return shadow_pcf(shadow_depth, v, shadow_views[v], cone, s.uv, z, gradient, width, samples,
+                    rotation);
 }
 #endif
 
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCSS
 // PCSS (Fernando 2005): blocker search, penumbra estimate, PCF over it.
-float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, vec2 rotation) {
+float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
+                        vec2 rotation) {
   GpuShadowView view = shadow_views[v];
   ivec2 size = textureSize(shadow_depth, 0).xy;
   vec2 center = s.uv * vec2(size);
@@ -208,7 +210,8 @@ float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, vec2 rota
     vec2 offset = rotated_poisson(k, rotation) * (0.5 * search);
     ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);
     float occluder = texelFetch(shadow_depth, ivec3(texel, v), 0).r;
-    if (occluder < z + dot(gradient, offset)) {
+    if (occluder < z + dot(gradient, offset) &&
+        texel_occludes(view, texel, size, occluder, cone)) {
       blockers += 1.0;
       blocker_depth += occluder;
     }
@@ -217,7 +220,7 @@ float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, vec2 rota
   float d_blocker = linear_depth_of(view, blocker_depth / blockers);
   float width =
       penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver);
-  return pcf_lit_fraction(v, s, z, gradient, min(width, float(MAX_PCF_WIDTH)),
+  return pcf_lit_fraction(v, s, z, gradient, cone, min(width, float(MAX_PCF_WIDTH)),
                           shadow_params.pcss_filter_samples, rotation);
 }
 #endif
@@ -242,10 +245,13 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCF
-  return pcf_lit_fraction(v, s, z, gradient, shadow_params.pcf_width, shadow_params.pcf_samples,
-                          rotation);
+  OccluderCone cone = occluder_cone(light, view, s.position, PCF_MIN_CONE_TAN);
+  return pcf_lit_fraction(v, s, z, gradient, cone, shadow_params.pcf_width,
+                          shadow_params.pcf_samples, rotation);
 #else
-  return pcss_lit_fraction(v, s, z, gradient, rotation);
+  // PCSS models the light's source itself: the cone it really subtends.
+  OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
+  return pcss_lit_fraction(v, s, z, gradient, cone, rotation);
 #endif
 #elif SHADOW_TECHNIQUE >= TECHNIQUE_VSM
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS

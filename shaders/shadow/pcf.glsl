@@ -4,7 +4,17 @@
 // compared with the receiver's plane at that sample (receiver-plane depth,
 // from the per-texel depth gradient), so a wide window on a sloped
 // receiver does not shadow the receiver itself.
+#include "occluder_cone.glsl"
+#include "penumbra.glsl"
 #include "poisson.glsl"
+
+// PCF's window has a fixed width whatever the light's size, so it counts
+// the occluders inside a cone at least this wide (tan of its half-angle):
+// an occluder more than 1 / (2 * 0.1) = 5 window widths nearer the light
+// than the receiver blurs the whole window, while the lit wall beside a
+// receiver at its foot (unless the light grazes it within 5.7 degrees)
+// does not darken it.
+const float PCF_MIN_CONE_TAN = 0.1;
 
 // z-bar gradient of the receiver's plane per texel of the map, from two
 // exact ray-plane intersections one texel away; capped at the slope the
@@ -18,9 +28,12 @@ vec2 receiver_depth_gradient(GpuShadowView view, ShadowLookup s, vec3 normal, fl
 }
 
 // Lit fraction over a window `width` texels wide (samples >= 1) of layer
-// `layer`. `depth` is the biased receiver depth at the window's centre.
-float shadow_pcf(sampler2DArray depth_maps, int layer, vec2 uv, float depth, vec2 gradient,
-                 float width, int samples, vec2 rotation) {
+// `layer` (shadow view `view`). `depth` is the biased receiver depth at the
+// window's centre; a sample is blocked when its texel is nearer the light
+// than the receiver's plane there and inside the cone from the receiver to
+// the light (occluder_cone.glsl).
+float shadow_pcf(sampler2DArray depth_maps, int layer, GpuShadowView view, OccluderCone cone,
+                 vec2 uv, float depth, vec2 gradient, float width, int samples, vec2 rotation) {
   ivec2 size = textureSize(depth_maps, 0).xy;
   vec2 center = uv * vec2(size);
   float lit = 0.0;
@@ -28,7 +41,9 @@ float shadow_pcf(sampler2DArray depth_maps, int layer, vec2 uv, float depth, vec
     vec2 offset = rotated_poisson(i, rotation) * (0.5 * width);  // texels
     ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);
     float receiver = depth + dot(gradient, offset);
-    lit += receiver <= texelFetch(depth_maps, ivec3(texel, layer), 0).r ? 1.0 : 0.0;
+    float occluder = texelFetch(depth_maps, ivec3(texel, layer), 0).r;
+    bool blocked = receiver > occluder && texel_occludes(view, texel, size, occluder, cone);
+    lit += blocked ? 0.0 : 1.0;
   }
   return lit / float(samples);
 }

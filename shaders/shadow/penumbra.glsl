@@ -2,6 +2,7 @@
 // Shadows", SIGGRAPH 2005 sketch): similar triangles between the light's
 // source, the blocker and the receiver. Depths are linear light-space
 // depths; view.source_width is the source's width (see GpuShadowView).
+#pragma once
 
 float linear_depth_of(GpuShadowView view, float z_bar) {
   return view.depth_range.x + z_bar * (view.depth_range.y - view.depth_range.x);
