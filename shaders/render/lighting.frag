@@ -201,29 +201,52 @@ float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, float widt
 #endif
 
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCSS
-// PCSS (Fernando 2005): blocker search, penumbra estimate, PCF over it.
+// PCSS (Fernando 2005): blocker search, penumbra estimate, PCF over it,
+// each with as many samples as its region's size in texels asks for, up to
+// the settings' counts. The search gathers the 2x2 texels around each
+// point of the pixel's rotated Poisson set (four depths a fetch); its
+// region's shape matters less than its spread, and the rotation dithers
+// where a penumbra's outer end stops finding blockers. The filter takes
+// bilinear compares at the pixel's shifted R2 set over the axis-aligned
+// square of the light's source (square_samples.glsl). Both patterns come
+// from the pixel's interleaved gradient noise (`rotation` is its angle),
+// so neighbouring pixels sample differently and a 3x3 neighbourhood
+// averages much of the noise away.
 float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, vec2 rotation) {
   GpuShadowView view = shadow_views[v];
-  ivec2 size = textureSize(shadow_depth, 0).xy;
-  vec2 center = s.uv * vec2(size);
+  vec2 size = vec2(textureSize(shadow_depth, 0).xy);
+  vec2 center = s.uv * size;
   float d_receiver = linear_depth_of(view, s.depth);
   float search = min(blocker_search_width(view, d_receiver), float(MAX_PCF_WIDTH));
+  int search_samples = pcss_search_sample_count(search, shadow_params.pcss_blocker_samples);
+  // textureGather's order of the 2x2 texels, from the lower-left one.
+  const vec2 gathered[4] = vec2[](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(1.0, 0.0), vec2(0.0));
   float blockers = 0.0, blocker_depth = 0.0;
-  for (int k = 0; k < shadow_params.pcss_blocker_samples; ++k) {
-    vec2 offset = rotated_poisson(k, rotation) * (0.5 * search);
-    ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);
-    float occluder = texelFetch(shadow_depth, ivec3(texel, v), 0).r;
-    if (occluder < z + dot(gradient, offset)) {
-      blockers += 1.0;
-      blocker_depth += occluder;
+  for (int k = 0; k < search_samples; ++k) {
+    vec2 sample_point = center + rotated_poisson(k, rotation) * (0.5 * search);
+    vec2 lower_left = floor(sample_point - 0.5) + 0.5;  // centre of the lower-left texel
+    vec4 occluders = textureGather(shadow_depth, vec3((lower_left + 0.5) / size, float(v)));
+    for (int c = 0; c < 4; ++c) {
+      // Each texel against the receiver's plane at that texel.
+      vec2 offset = lower_left + gathered[c] - center;
+      if (occluders[c] < z + dot(gradient, offset)) {
+        blockers += 1.0;
+        blocker_depth += occluders[c];
+      }
     }
   }
   if (blockers == 0.0) return 1.0;  // nothing between the receiver and the light
   float d_blocker = linear_depth_of(view, blocker_depth / blockers);
-  float width =
-      penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver);
-  return pcf_lit_fraction(v, s, z, gradient, min(width, float(MAX_PCF_WIDTH)),
-                          shadow_params.pcss_filter_samples, rotation);
+  float width = min(
+      penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver),
+      float(MAX_PCF_WIDTH));
+  if (width <= 0.0) return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
+  float kernel = pcss_kernel_width(width);
+  // The noise value `rotation` was made from (main()).
+  vec2 shift = square_sample_shift(interleaved_gradient_noise(floor(gl_FragCoord.xy)));
+  return shadow_pcf_bilinear(shadow_compare, v, s.uv, z, gradient, kernel,
+                             pcss_filter_sample_count(kernel, shadow_params.pcss_filter_samples),
+                             shift);
 }
 #endif
 
