@@ -14,5 +14,8 @@ layout(location = 1) uniform float u_scale;
 void main() {
   ivec3 p = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(p.xy, textureSize(table, 0).xy))) return;
-  imageStore(averages, p, sat_box_average(table, p.z, p.xy, u_radius, u_scale));
+  // The texel-centred rectangle of half-width RADIUS + 1/2 is the box.
+  imageStore(averages, p,
+             sat_rectangle_average(table, p.z, vec2(p.xy) + 0.5, vec2(float(u_radius) + 0.5),
+                                   u_scale));
 }

@@ -52,9 +52,11 @@ vec3 world_position(ivec2 pixel, float depth) {
 // View v's filtered representation at the lookup point.
 vec4 filtered_map(int v, vec2 uv) {
 #if SHADOW_FILTER == FILTER_SAT
-  ivec2 size = textureSize(shadow_sat, 0).xy;
-  ivec2 center = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
-  return sat_box_average(shadow_sat, v, center, shadow_params.blur_radius, shadow_params.sat_scale);
+  // The (2W + 1)^2 box, centred on the lookup point itself rather than on
+  // the texel it falls in: half-width W + 1/2 texels.
+  return sat_rectangle_average(shadow_sat, v, uv * vec2(textureSize(shadow_sat, 0).xy),
+                               vec2(float(shadow_params.blur_radius) + 0.5),
+                               shadow_params.sat_scale);
 #else
   return texture(shadow_filtered, vec3(uv, float(v)));
 #endif
@@ -90,14 +92,11 @@ float filtered_mean_depth(vec4 m) {
 #endif
 
 #if SHADOW_TECHNIQUE >= TECHNIQUE_VSM && SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
-// Box average of radius r (fractional: the two neighbouring integer boxes,
-// blended, so the width varies smoothly) from the summed-area table.
-vec4 sat_box_fractional(int v, ivec2 center, float r) {
-  float lo = floor(r);
-  vec4 a = sat_box_average(shadow_sat, v, center, int(lo), shadow_params.sat_scale);
-  if (r == lo) return a;
-  vec4 b = sat_box_average(shadow_sat, v, center, int(lo) + 1, shadow_params.sat_scale);
-  return mix(a, b, r - lo);
+// Average over the square of radius r around the point `center` (texel
+// units): half-width r + 1/2, so that an integer r is the (2r + 1)^2 box of
+// the fixed filter; a fractional r widens it continuously.
+vec4 sat_square_average(int v, vec2 center, float r) {
+  return sat_rectangle_average(shadow_sat, v, center, vec2(r + 0.5), shadow_params.sat_scale);
 }
 
 // Soft shadows from the summed-area table (the moment counterpart of PCSS:
@@ -107,24 +106,23 @@ vec4 sat_box_fractional(int v, ivec2 center, float r) {
 // technique's own test) and the mean depth; with the unoccluded part
 // assumed at the receiver's depth z, mean = G z_blocker + (1 - G) z, so
 // z_blocker = (mean - (1 - G) z) / G. Its penumbra sets the filter radius
-// (at least the fixed --blur), read with a constant 8 fetches however
-// wide it is.
+// (at least the fixed --blur), read with a constant 2 x 16 fetches however
+// wide it is; both squares sit at the lookup point's sub-texel position.
 float soft_moment_shadow(int v, ShadowLookup s, float z) {
   GpuShadowView view = shadow_views[v];
-  ivec2 size = textureSize(shadow_sat, 0).xy;
-  ivec2 center = clamp(ivec2(s.uv * vec2(size)), ivec2(0), size - 1);
+  vec2 center = s.uv * vec2(textureSize(shadow_sat, 0).xy);
   float d_receiver = linear_depth_of(view, s.depth);
   float fixed_radius = float(shadow_params.blur_radius);
   float search_radius = min(max(0.5 * blocker_search_width(view, d_receiver), fixed_radius),
                             float(MAX_SOFT_RADIUS));
-  vec4 region = sat_box_fractional(v, center, search_radius);
+  vec4 region = sat_square_average(v, center, search_radius);
   float occluded = 1.0 - filtered_lit_fraction(region, z, s.texel_depth);
   if (occluded <= 0.0) return 1.0;  // no blockers: lit
   float z_blocker = clamp((filtered_mean_depth(region) - (1.0 - occluded) * z) / occluded, 0.0, z);
   float penumbra = penumbra_world_width(view, d_receiver, linear_depth_of(view, z_blocker)) /
                    shadow_texel_world(view, d_receiver);
   float radius = min(max(0.5 * penumbra, fixed_radius), float(MAX_SOFT_RADIUS));
-  return filtered_lit_fraction(sat_box_fractional(v, center, radius), z, s.texel_depth);
+  return filtered_lit_fraction(sat_square_average(v, center, radius), z, s.texel_depth);
 }
 #endif
 
@@ -132,9 +130,9 @@ float soft_moment_shadow(int v, ShadowLookup s, float z) {
 // depth tests of the unfiltered map, averaged with the kernel the
 // technique's filter applies, by brute force; each texel is tested against
 // the receiver's plane where that texel's ray meets it. It is what a
-// filtered technique approximates. Test quality: (2W+1)^2 fetches per
-// pixel (four times that for the Gaussian, which is read bilinearly like
-// the blurred map).
+// filtered technique approximates. Test quality: up to (2W+2)^2 fetches
+// per pixel for the SAT's box at its sub-texel position, 4 (2W+1)^2 for the
+// Gaussian, which is read bilinearly like the blurred map.
 layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer ReferenceWeights {
   float reference_weights[];  // 2 W + 1: the filter's 1D kernel
 };
@@ -158,13 +156,22 @@ float filtered_hard_reference(int v, vec2 uv, ReceiverPlane z) {
   const int r = shadow_params.blur_radius;
   ivec2 size = textureSize(shadow_depth, 0).xy;
 #if SHADOW_FILTER == FILTER_SAT
-  // The box of sat_box_average(): centred on the texel under uv, cropped.
-  ivec2 center = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
-  ivec2 lo = max(center - r, ivec2(0)), hi = min(center + r, size - 1);
+  // The rectangle of filtered_map(): half-width W + 1/2 around the lookup
+  // point, cropped to the map; each texel's test weighted by the area of
+  // the texel the rectangle covers (as sat_rectangle_average() weights it).
+  vec2 center = clamp(uv * vec2(size), vec2(0.0), vec2(size));
+  vec2 lo = clamp(center - (float(r) + 0.5), vec2(0.0), vec2(size));
+  vec2 hi = clamp(center + (float(r) + 0.5), vec2(0.0), vec2(size));
+  ivec2 first = ivec2(floor(lo)), last = max(ivec2(ceil(hi)) - 1, first);
   float sum = 0.0;
-  for (int y = lo.y; y <= hi.y; ++y)
-    for (int x = lo.x; x <= hi.x; ++x) sum += depth_test(v, ivec2(x, y), z);
-  return sum / float((hi.x - lo.x + 1) * (hi.y - lo.y + 1));
+  for (int y = first.y; y <= last.y; ++y) {
+    float wy = min(float(y + 1), hi.y) - max(float(y), lo.y);
+    for (int x = first.x; x <= last.x; ++x) {
+      float wx = min(float(x + 1), hi.x) - max(float(x), lo.x);
+      sum += wx * wy * depth_test(v, ivec2(x, y), z);
+    }
+  }
+  return sum / ((hi.x - lo.x) * (hi.y - lo.y));
 #else
   // The blurred map (edges clamped), read bilinearly at uv.
   vec2 p = uv * vec2(size) - 0.5;
@@ -197,31 +204,57 @@ float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCo
 #endif
 
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCSS
-// PCSS (Fernando 2005): blocker search, penumbra estimate, PCF over it.
+// PCSS (Fernando 2005): blocker search, penumbra estimate, PCF over it,
+// each with as many samples as its region's size in texels asks for, up to
+// the settings' counts. The search gathers the 2x2 texels around each
+// point of the pixel's rotated Poisson set (four depths a fetch); its
+// region's shape matters less than its spread, and the rotation dithers
+// where a penumbra's outer end stops finding blockers. The filter takes
+// bilinear compares at the pixel's shifted R2 set over the axis-aligned
+// square of the light's source (square_samples.glsl). Both patterns come
+// from the pixel's interleaved gradient noise (`rotation` is its angle),
+// so neighbouring pixels sample differently and a 3x3 neighbourhood
+// averages much of the noise away.
+// Only texels inside the cone from the receiver to the source count as
+// blockers (occluder_cone.glsl).
 float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
                         vec2 rotation) {
   GpuShadowView view = shadow_views[v];
-  ivec2 size = textureSize(shadow_depth, 0).xy;
-  vec2 center = s.uv * vec2(size);
+  vec2 size = vec2(textureSize(shadow_depth, 0).xy);
+  vec2 center = s.uv * size;
   float d_receiver = linear_depth_of(view, s.depth);
   float search = min(blocker_search_width(view, d_receiver), float(MAX_PCF_WIDTH));
+  int search_samples = pcss_search_sample_count(search, shadow_params.pcss_blocker_samples);
+  // textureGather's order of the 2x2 texels, from the lower-left one.
+  const vec2 gathered[4] = vec2[](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(1.0, 0.0), vec2(0.0));
   float blockers = 0.0, blocker_depth = 0.0;
-  for (int k = 0; k < shadow_params.pcss_blocker_samples; ++k) {
-    vec2 offset = rotated_poisson(k, rotation) * (0.5 * search);
-    ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);
-    float occluder = texelFetch(shadow_depth, ivec3(texel, v), 0).r;
-    if (occluder < z + dot(gradient, offset) &&
-        texel_occludes(view, texel, size, occluder, cone)) {
-      blockers += 1.0;
-      blocker_depth += occluder;
+  for (int k = 0; k < search_samples; ++k) {
+    vec2 sample_point = center + rotated_poisson(k, rotation) * (0.5 * search);
+    vec2 lower_left = floor(sample_point - 0.5) + 0.5;  // centre of the lower-left texel
+    vec4 occluders = textureGather(shadow_depth, vec3((lower_left + 0.5) / size, float(v)));
+    for (int c = 0; c < 4; ++c) {
+      // Each texel against the receiver's plane at that texel.
+      vec2 offset = lower_left + gathered[c] - center;
+      ivec2 texel = clamp(ivec2(floor(lower_left + gathered[c])), ivec2(0), ivec2(size) - 1);
+      if (occluders[c] < z + dot(gradient, offset) &&
+          texel_occludes(view, texel, ivec2(size), occluders[c], cone)) {
+        blockers += 1.0;
+        blocker_depth += occluders[c];
+      }
     }
   }
   if (blockers == 0.0) return 1.0;  // nothing between the receiver and the light
   float d_blocker = linear_depth_of(view, blocker_depth / blockers);
-  float width =
-      penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver);
-  return pcf_lit_fraction(v, s, z, gradient, cone, min(width, float(MAX_PCF_WIDTH)),
-                          shadow_params.pcss_filter_samples, rotation);
+  float width = min(
+      penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver),
+      float(MAX_PCF_WIDTH));
+  if (width <= 0.0) return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
+  float kernel = pcss_kernel_width(width);
+  // The noise value `rotation` was made from (main()).
+  vec2 shift = square_sample_shift(interleaved_gradient_noise(floor(gl_FragCoord.xy)));
+  return shadow_pcf_bilinear(shadow_compare, v, s.uv, z, gradient, kernel,
+                             pcss_filter_sample_count(kernel, shadow_params.pcss_filter_samples),
+                             shift);
 }
 #endif
 

@@ -7,6 +7,7 @@
 #include "occluder_cone.glsl"
 #include "penumbra.glsl"
 #include "poisson.glsl"
+#include "square_samples.glsl"
 
 // PCF's window has a fixed width whatever the light's size, so it counts
 // the occluders inside a cone at least this wide (tan of its half-angle):
@@ -46,4 +47,46 @@ float shadow_pcf(sampler2DArray depth_maps, int layer, GpuShadowView view, Occlu
     lit += blocked ? 0.0 : 1.0;
   }
   return lit / float(samples);
+}
+
+// Lit fraction over the axis-aligned square window `width` texels wide
+// around uv, from `samples` points of the pixel's shifted R2 set
+// (square_samples.glsl), each the hardware's 2x2 bilinear compare (as
+// Filament's PCSS and MJP's optimized PCF take them): a tap averages four
+// texels with weights that move continuously, so each sample is a smooth
+// function of its position instead of a 0/1 step. One sample is the
+// compare at uv itself. The bilinear footprint widens the kernel by a
+// one-texel tent (variance 1/6 texel^2 per axis); pcss_kernel_width()
+// takes it off.
+float shadow_pcf_bilinear(sampler2DArrayShadow maps, int layer, vec2 uv, float depth,
+                          vec2 gradient, float width, int samples, vec2 shift) {
+  vec2 size = vec2(textureSize(maps, 0).xy);
+  if (samples <= 1) return texture(maps, vec4(uv, float(layer), depth));
+  float lit = 0.0;
+  for (int i = 0; i < samples; ++i) {
+    vec2 offset = square_sample(i, shift) * (0.5 * width);  // texels
+    lit += texture(maps, vec4(uv + offset / size, float(layer), depth + dot(gradient, offset)));
+  }
+  return lit / float(samples);
+}
+
+// Width of the square of bilinear taps whose result has the spread of a
+// `width`-texel box: the box's variance w^2 / 12 per axis, less the tent's
+// 1/6, so w_taps = sqrt(w^2 - 2); 0 (the single compare) below that.
+float pcss_kernel_width(float width) {
+  return sqrt(max(width * width - 2.0, 0.0));
+}
+
+// Filter samples for a square `width` texels wide: one per texel of it, a
+// density at which the taps' bilinear footprints overlap, so the estimate
+// has little noise left; narrow penumbrae take few, wide ones up to
+// max_samples.
+int pcss_filter_sample_count(float width, int max_samples) {
+  return clamp(int(ceil(width * width)), 1, max_samples);
+}
+
+// Blocker-search samples for a region `width` texels wide, each gathering
+// 2 x 2 texels: one per 4 texels of it, up to max_samples.
+int pcss_search_sample_count(float width, int max_samples) {
+  return clamp(int(ceil(0.25 * width * width)), 1, max_samples);
 }

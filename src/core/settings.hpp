@@ -106,10 +106,12 @@ struct ShadowSettings {
   // hardware's 2x2 bilinear compare).
   float pcf_width = 4.0f;
   int pcf_samples = 16;
-  // PCSS (Fernando 2005): samples of the blocker search, and of the PCF
-  // over the estimated penumbra.
-  int pcss_blocker_samples = 16;
-  int pcss_filter_samples = 32;
+  // PCSS (Fernando 2005): the most samples of the blocker search (each
+  // gathers 2x2 texels) and of the PCF over the estimated penumbra (each a
+  // 2x2 bilinear compare); fewer where the region is narrow (one per 4
+  // texels searched, one per texel filtered).
+  int pcss_blocker_samples = 32;
+  int pcss_filter_samples = 64;
   // Moment soft shadows (vsm, msm, msm16 with --filter sat): the filter
   // width follows the estimated penumbra, at least the fixed --blur.
   bool soft = false;
@@ -279,10 +281,13 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntPara
      kMaxBlur, &ShadowSettings::blur},
     {"pcf-samples", "PCF samples from the Poisson set (1: hardware 2x2 compare)", 1,
      kMaxShadowSamples, &ShadowSettings::pcf_samples},
-    {"pcss-blocker-samples", "PCSS blocker-search samples", 1, kMaxShadowSamples,
-     &ShadowSettings::pcss_blocker_samples},
-    {"pcss-filter-samples", "PCSS filter samples over the penumbra", 1, kMaxShadowSamples,
-     &ShadowSettings::pcss_filter_samples},
+    {"pcss-blocker-samples",
+     "PCSS blocker-search samples at most, each gathering 2x2 texels (one per 4 texels of the "
+     "search region)",
+     1, kMaxShadowSamples, &ShadowSettings::pcss_blocker_samples},
+    {"pcss-filter-samples",
+     "PCSS filter samples at most, each a 2x2 bilinear compare (one per texel of the penumbra)", 1,
+     kMaxShadowSamples, &ShadowSettings::pcss_filter_samples},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
      &ShadowSettings::cascades},
 }};

@@ -11,8 +11,10 @@
 
 namespace penumbra {
 
-// Largest box (in texels) a lookup may cover: the (2 kMaxBlur + 1)^2 box.
-inline constexpr double kSatMaxBoxArea = double(2 * kMaxBlur + 1) * double(2 * kMaxBlur + 1);
+// Largest box (in texels) a lookup differences: a square of width
+// 2 kMaxBlur + 1 at a sub-texel position touches 2 kMaxBlur + 2 texels
+// along each axis (sat_rectangle_average in shaders/filter/sat.glsl).
+inline constexpr double kSatMaxBoxArea = double(2 * kMaxBlur + 2) * double(2 * kMaxBlur + 2);
 // Fixed-point scale 2^F: the largest power of two for which a box of
 // kSatMaxBoxArea values of at most 1 still sums below 2^32. With kMaxBlur =
 // 64 that is 2^17: each value is stored to within 2^-18 (3.8e-6).

@@ -65,6 +65,7 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       {"filter/sat_box.comp", {{}}},
       {"filter/copy.comp", {{{"IMAGE_FORMAT", "r32f"}}, {{"IMAGE_FORMAT", "rgba16"}}}},
       {"test/shadow_math.comp", {{}}},
+      {"test/sat_rectangle.comp", {{}}},
       {"render/ssao.comp", {{}}},
       {"render/ssao_blur.comp", {{{"AXIS", "0"}}, {{"AXIS", "1"}}}},
       {"render/ssao_upsample.comp", {{}}},

@@ -1,14 +1,20 @@
 // The GPU filters against CPU references: the separable Gaussian against a
 // direct 2D convolution, the summed-area table's box filter against a
-// double-precision box filter.
+// double-precision box filter, its sub-texel rectangles against the exact
+// integral of the texel-constant map.
+#include <algorithm>
 #include <cmath>
+#include <glm/glm.hpp>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "filter/gaussian.hpp"
 #include "filter/gaussian_blur_pass.hpp"
 #include "filter/summed_area_table_pass.hpp"
+#include "gl/program.hpp"
 #include "gpu_fixture.hpp"
+#include "shared/bindings.h"
 
 namespace penumbra {
 namespace {
@@ -176,6 +182,83 @@ TEST_F(GpuTest, SummedAreaTableOf2048MapKeepsItsPrecision) {
   const double worst = worst_sat_error(2048, 2048, 4, {2, 16, 64}, 7);
   std::printf("SAT box filter 2048x2048: max abs error %.2e\n", worst);
   EXPECT_LE(worst, 4e-6);
+}
+
+// The exact average of the texel-constant map over the continuous
+// rectangle [cx - hx, cx + hx] x [cy - hy, cy + hy] (texel (i, j) covers
+// [i, i + 1] x [j, j + 1]), cropped to the map, its centre first clamped
+// onto the map: each texel weighted by the area of it inside, by brute force.
+double rectangle_integral_average(const HostMap& m, glm::dvec4 r, int c) {
+  const double cx = std::clamp(r.x, 0.0, double(m.width));
+  const double cy = std::clamp(r.y, 0.0, double(m.height));
+  const double x0 = std::max(cx - r.z, 0.0), x1 = std::min(cx + r.z, double(m.width));
+  const double y0 = std::max(cy - r.w, 0.0), y1 = std::min(cy + r.w, double(m.height));
+  double sum = 0.0;
+  for (int y = 0; y < m.height; ++y) {
+    const double wy = std::min(y + 1.0, y1) - std::max(double(y), y0);
+    if (wy <= 0.0) continue;
+    for (int x = 0; x < m.width; ++x) {
+      const double wx = std::min(x + 1.0, x1) - std::max(double(x), x0);
+      if (wx > 0.0) sum += wx * wy * m.at(x, y, c);
+    }
+  }
+  return sum / ((x1 - x0) * (y1 - y0));
+}
+
+// Runs shaders/test/sat_rectangle.comp on the table of layer 0.
+std::vector<glm::vec4> rectangle_averages(const gl::Texture& table,
+                                          const std::vector<glm::vec4>& rectangles) {
+  static gl::Program program = gl::Program::compute("test/sat_rectangle.comp");
+  gl::Buffer input = gl::Buffer::from(std::span<const glm::vec4>(rectangles), "rectangles");
+  gl::Buffer output(rectangles.size() * sizeof(glm::vec4), nullptr, false, "averages");
+  program.use();
+  glProgramUniform1ui(program.id(), 0, static_cast<GLuint>(rectangles.size()));
+  glProgramUniform1f(program.id(), 1, static_cast<float>(sat_fixed_point_scale()));
+  glProgramUniform1i(program.id(), 2, 0);
+  glBindTextureUnit(UNIT_COMPUTE_INPUT, table.id());
+  glBindSampler(UNIT_COMPUTE_INPUT, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
+  glDispatchCompute(static_cast<GLuint>((rectangles.size() + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<glm::vec4> results(rectangles.size());
+  glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(output.size()), results.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  return results;
+}
+
+// Sub-texel rectangles: random centres (some off the map), half-widths from
+// a twentieth of a texel to the widest filter, square and elongated, on an
+// awkward-sized map: the table's weighted boxes against the exact integral.
+TEST_F(GpuTest, SatRectangleAverageMatchesTheExactIntegral) {
+  const int width = 157, height = 131;
+  HostMap map = random_map(width, height, 4, 23);
+  gl::Texture source = upload(map);
+  SummedAreaTablePass sat;
+  sat.execute(source);
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<glm::vec4> rectangles;
+  for (int k = 0; k < 3000; ++k) {
+    const float cx = -3.0f + (width + 6.0f) * u(rng), cy = -3.0f + (height + 6.0f) * u(rng);
+    // Log-uniform half-widths in [0.05, kMaxBlur + 1/2].
+    auto half_width = [&] { return 0.05f * std::pow((kMaxBlur + 0.5f) / 0.05f, u(rng)); };
+    const float hx = half_width();
+    rectangles.emplace_back(cx, cy, hx, k % 2 ? hx : half_width());
+  }
+  // Every corner and edge of the map, with the centre exactly on it.
+  for (float cx : {0.0f, 0.5f, float(width) - 0.25f, float(width)})
+    for (float cy : {0.0f, 3.75f, float(height)}) rectangles.emplace_back(cx, cy, 2.5f, 0.7f);
+  const std::vector<glm::vec4> gpu = rectangle_averages(sat.table(), rectangles);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < rectangles.size(); ++i)
+    for (int c = 0; c < 4; ++c)
+      worst = std::max(worst, std::abs(gpu[i][c] - rectangle_integral_average(
+                                                       map, glm::dvec4(rectangles[i]), c)));
+  std::printf("SAT sub-texel rectangles %dx%d: max abs error %.2e\n", width, height, worst);
+  // The stored values' rounding (2^-18), and float weights and sums.
+  EXPECT_LE(worst, 1e-5);
 }
 
 TEST_F(GpuTest, FiltersKeepArrayLayersApart) {
