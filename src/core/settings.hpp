@@ -37,6 +37,12 @@ inline constexpr std::array<std::pair<Filter, std::string_view>, 2> kFilterNames
     {Filter::Sat, "sat"},
 }};
 
+// Whether --soft applies: the moment techniques (vsm, msm, msm16) filtered
+// by the summed-area table, from which the penumbra-sized filter is read.
+constexpr bool supports_soft_shadows(Technique t, Filter f) {
+  return f == Filter::Sat && (t == Technique::Vsm || t == Technique::Msm || t == Technique::Msm16);
+}
+
 enum class View {
   Final,
   Shadow,
