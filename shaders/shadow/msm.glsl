@@ -37,7 +37,8 @@ float msm_unit_depth(float u) {
 }
 
 // The four moments a texel at relative depth z stores: (u, u^2, u^3, u^4)
-// with u = 2 z - 1 (Peters & Klein 2015, Sec. 3, on signed depth).
+// with u = 2 z - 1: the four power moments of Peters & Klein 2015, of the
+// signed depth as in Peters' JCGT 2017 code.
 vec4 msm_moments(float z) {
   float u = msm_signed_depth(z);
   float u2 = u * u;
@@ -49,8 +50,8 @@ vec4 msm_moments(float z) {
 // supplementary code), the moments of 0.1875 at u = -1 and at u = 1 and
 // 0.625 at u = 0.
 const vec4 MSM_BIAS_32 = vec4(0.0, 0.375, 0.0, 0.375);
-// 16-bit: Peters' (0, 0.628, 0, 0.628) (I3D 2015 supplementary code): 0.314
-// at u = -1 and at u = 1, 0.372 at u = 0.
+// 16-bit: Peters' (0, 0.628, 0, 0.628) for the optimized quantization (seed
+// 002 rounds it to 0.63): 0.314 at u = -1 and at u = 1, 0.372 at u = 0.
 const vec4 MSM_BIAS_16 = vec4(0.0, 0.628, 0.0, 0.628);
 
 // Algorithm 3 (Hamburger 4MSM) of Peters & Klein 2015, in whatever depth
