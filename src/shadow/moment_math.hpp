@@ -29,7 +29,7 @@ constexpr glm::dvec4 msm_moments_from_signed(const glm::dvec4& u) {
 // moments of u. 32-bit float moments: (0, 0.375, 0, 0.375), Peters' later
 // code's (JCGT 2017): 0.1875 at u = -1 and at 1, 0.625 at 0.
 inline constexpr glm::dvec4 kMsmBias32{0.0, 0.375, 0.0, 0.375};
-// 16-bit quantized moments: Peters' (0, 0.628, 0, 0.628) (I3D 2015): 0.314
+// 16-bit quantized moments: Peters' (0, 0.628, 0, 0.628) (seed 002): 0.314
 // at u = -1 and at 1, 0.372 at 0.
 inline constexpr glm::dvec4 kMsmBias16{0.0, 0.628, 0.0, 0.628};
 
