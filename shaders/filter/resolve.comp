@@ -20,8 +20,7 @@ vec4 represent(float z) {
 #elif REPRESENTATION == TECHNIQUE_ESM
   return vec4(esm_encode(z, u_esm_c), 0.0, 0.0, 0.0);
 #else
-  float z2 = z * z;
-  vec4 moments = vec4(z, z2, z2 * z, z2 * z2);  // Peters & Klein 2015: b = (z, z^2, z^3, z^4)
+  vec4 moments = msm_moments(z);  // the moments of u = 2 z - 1 (see msm.glsl)
 #if MSM_QUANTIZED
   return msm_quantize(moments);
 #else

@@ -73,20 +73,23 @@ float filtered_lit_fraction(vec4 m, float z, float texel_depth) {
 #elif SHADOW_TECHNIQUE == TECHNIQUE_ESM
   return shadow_esm(m.x, z, shadow_params.esm_c);
 #elif MSM_QUANTIZED
-  return 1.0 - msm_hamburger16(msm_dequantize(m), z, shadow_params.msm_alpha);
+  return 1.0 - msm_intensity16(msm_dequantize(m), z, shadow_params.msm_alpha);
 #else
-  return 1.0 - msm_hamburger(m, z, shadow_params.msm_alpha);
+  return 1.0 - msm_intensity32(m, z, shadow_params.msm_alpha);
 #endif
 }
 
-// The mean occluder depth E[z] of filtered map values.
+// The mean occluder depth E[z] of filtered map values (MSM stores the
+// moments of u = 2 z - 1: E[z] = (E[u] + 1) / 2).
 float filtered_mean_depth(vec4 m) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_ESM
   return log(max(m.x, 1e-37)) / shadow_params.esm_c + 1.0;
-#elif MSM_QUANTIZED
-  return msm_dequantize(m).x;
-#else
+#elif SHADOW_TECHNIQUE == TECHNIQUE_VSM
   return m.x;
+#elif MSM_QUANTIZED
+  return msm_unit_depth(msm_dequantize(m).x);
+#else
+  return msm_unit_depth(m.x);
 #endif
 }
 #endif

@@ -2,6 +2,7 @@
 // PNG writer apply (see ViewEncoding in render/renderer.hpp), so the window
 // shows what `penumbra render` writes.
 #include "../shared/bindings.h"
+#include "../shadow/msm.glsl"
 
 in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
@@ -21,6 +22,8 @@ void main() {
     value = vec3(value.r);
   } else if (encoding == VIEW_ENCODING_ESM_LOG) {
     value = vec3(value.r > 0.0 ? log(value.r) / esm_c + 1.0 : 0.0);
+  } else if (encoding == VIEW_ENCODING_SIGNED_MOMENTS) {
+    value = msm_moments_from_signed(texture(source, v_uv)).rgb;
   }
   // The PNG writer stores non-finite values as 0.
   for (int c = 0; c < 3; ++c) {

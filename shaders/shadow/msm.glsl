@@ -1,32 +1,61 @@
 // Moment shadow mapping (Peters & Klein, "Moment Shadow Mapping", I3D 2015).
 //
-// Convention: b = (E[z], E[z^2], E[z^3], E[z^4]), the filtered moments of
-// the relative occluder depth z in [0, 1], and z_f the receiver's relative
-// depth. msm_hamburger() returns the shadow intensity G (0 = lit,
-// 1 = shadowed); the lit fraction is 1 - G.
+// Convention: the moments are those of the signed depth u = 2 z - 1 in
+// [-1, 1], b = (E[u], E[u^2], E[u^3], E[u^4]), where z in [0, 1] is the
+// relative occluder depth; msm_moments() makes them from a depth, and the
+// receiver's relative depth z_f goes in as msm_signed_depth(z_f). This is
+// the convention of Peters' later code (Peters, Münstermann, Wetzstein and
+// Klein, "Improved Moment Shadow Maps for Translucent Occluders, Soft
+// Shadows and Single Scattering", JCGT 2017), and it matters in float:
+// near the far end (z -> 1) the moments of z are all nearly 1 and float32
+// keeps little of their differences, while those of u spread the same
+// depths twice as wide (4 times the variance, 16 times the fourth-order
+// terms the solve divides by) for the same rounding. The Hamburger bound
+// itself does not change under an affine map of the depth axis (it maps
+// distributions with given moments onto distributions with the mapped
+// moments), so only the rounding differs. msm_hamburger() returns the
+// shadow intensity G (0 = lit, 1 = shadowed); the lit fraction is 1 - G.
 //
-// 16-bit storage: msm_quantize() / msm_dequantize() wrap an optimized
-// invertible affine transform of the moments that spreads them over the
-// UNORM range. We use the matrix of seed 002 (the form Peters presented at
-// GDC 2016), which is defined for depths z' in [-1, 1]; the I3D 2015
-// paper's own matrix (-2.07224649, 13.7948857237, ...) targets [0, 1]. We
-// apply it to the moments of z' = 2z - 1 and convert back, so the interface
-// and the Hamburger solve stay in the [0, 1] convention throughout.
+// 16-bit storage: msm_quantize() / msm_dequantize() wrap the optimized
+// invertible affine transform of seed 002 (the form Peters presented at
+// GDC 2016), which is defined on the moments of u; the I3D 2015 paper's own
+// matrix (-2.07224649, 13.7948857237, ...) targets [0, 1]. The dequantized
+// moments stay moments of u: converting them back to moments of z in float
+// (as this code once did) moved G by up to 0.11 at filtered edges near the
+// far end (tests/gpu/moment_shader_test.cpp).
 #pragma once
 
-// Bias vectors b_bias of Algorithm 3 step 1, as moments of z in [0, 1].
-// 32-bit: Peters' (0.5, 0.5, 0.5, 0.5), the moments of half the mass at 0
-// and half at 1.
-const vec4 MSM_BIAS_32 = vec4(0.5, 0.5, 0.5, 0.5);
-// 16-bit: Peters biases the [-1, 1] moments toward (0, 0.628, 0, 0.628)
-// (masses 0.314 at -1 and at 1, 0.372 at 0). The same distribution in
-// z = (z' + 1) / 2: E[z^k] = E[(z' + 1)^k] / 2^k by the binomial expansion,
-// (0.5, (0.628 + 1) / 4, (3 * 0.628 + 1) / 8, (7 * 0.628 + 1) / 16).
-// Since the moments of a mixture are the mixture of the moments, biasing
-// here is exactly biasing in [-1, 1].
-const vec4 MSM_BIAS_16 = vec4(0.5, 0.407, 0.3605, 0.33725);
+// The signed depth u = 2 z - 1 of a relative depth z. Exact in float for
+// z in [0.25, 1] (2 z is exact and 2 z - 1 is then exact by Sterbenz's lemma).
+float msm_signed_depth(float z) {
+  return fma(2.0, z, -1.0);
+}
 
-// Algorithm 3 (Hamburger 4MSM) of Peters & Klein 2015.
+// Back from u to z, for the mean depth of filtered moments.
+float msm_unit_depth(float u) {
+  return fma(0.5, u, 0.5);
+}
+
+// The four moments a texel at relative depth z stores: (u, u^2, u^3, u^4)
+// with u = 2 z - 1: the four power moments of Peters & Klein 2015, of the
+// signed depth as in Peters' JCGT 2017 code.
+vec4 msm_moments(float z) {
+  float u = msm_signed_depth(z);
+  float u2 = u * u;
+  return vec4(u, u2, u2 * u, u2 * u2);
+}
+
+// Bias vectors b_bias of Algorithm 3 step 1, as moments of u.
+// 32-bit: Peters' later code's (0, 0.375, 0, 0.375) (JCGT 2017 / HPG 2017
+// supplementary code), the moments of 0.1875 at u = -1 and at u = 1 and
+// 0.625 at u = 0.
+const vec4 MSM_BIAS_32 = vec4(0.0, 0.375, 0.0, 0.375);
+// 16-bit: Peters' (0, 0.628, 0, 0.628) for the optimized quantization (seed
+// 002 rounds it to 0.63): 0.314 at u = -1 and at u = 1, 0.372 at u = 0.
+const vec4 MSM_BIAS_16 = vec4(0.0, 0.628, 0.0, 0.628);
+
+// Algorithm 3 (Hamburger 4MSM) of Peters & Klein 2015, in whatever depth
+// variable the moments b are of (here u; the receiver z_f in the same one).
 //   1. b' = (1 - alpha) b + alpha b_bias.
 //   2. Solve the Hankel system [1 b1 b2; b1 b2 b3; b2 b3 b4] c = (1, z_f, z_f^2).
 //   3. z2 <= z3: the roots of c3 z^2 + c2 z + c1.
@@ -49,7 +78,7 @@ const vec4 MSM_BIAS_16 = vec4(0.5, 0.407, 0.3605, 0.33725);
 // rounding the inputs themselves to float already causes.
 //
 // Every division and root is guarded so that degenerate input (constant
-// depth, a receiver outside [0, 1], alpha near 0, moments that are not
+// depth, a receiver outside [-1, 1], alpha near 0, moments that are not
 // those of any distribution) gives a finite G in [0, 1].
 float msm_hamburger(vec4 b, float z_f, float alpha, vec4 bias_vector) {
   // Step 1, as covariances of (z, z^2) under (1 - alpha) P_b + alpha P_bias:
@@ -78,8 +107,9 @@ float msm_hamburger(vec4 b, float z_f, float alpha, vec4 bias_vector) {
   float y3 = y2 * (y2 + s) - d22;
   // Back substitution: c3 = y3 / d33, c2 = y2 / d22 - l32 c3,
   // c1 = 1 - b1' c2 - b2' c3. Only the roots matter, so we scale c by d33
-  // (d33 is 0 for the moments of two depths, e.g. a constant depth of 0
-  // or 1 biased toward MSM_BIAS_32, where dividing by it gives Inf/NaN),
+  // (d33 is 0 for the moments of two depths, e.g. a bias vector of two
+  // atoms, or alpha = 0 and a constant depth, where dividing by it gives
+  // Inf/NaN),
   // and substitute z = b1' + t:
   //   P(t) = y3 t^2 + (y3 s + y2 d33 / d22) t + (d33 - y3 d22).
   vec3 c = vec3(d33 - y3 * d22, y3 * s + y2 * (d33 / d22), y3);  // (c1, c2, c3)
@@ -125,30 +155,31 @@ float msm_hamburger(vec4 b, float z_f, float alpha, vec4 bias_vector) {
   return clamp(g, 0.0, 1.0);
 }
 
-// 32-bit float moments: Peters' bias vector.
-float msm_hamburger(vec4 b, float z_f, float alpha) {
-  return msm_hamburger(b, z_f, alpha, MSM_BIAS_32);
+// The shadow intensity of a receiver at relative depth z_f (in [0, 1],
+// like the depth maps) from filtered 32-bit float moments of u.
+float msm_intensity32(vec4 b, float z_f, float alpha) {
+  return msm_hamburger(b, msm_signed_depth(z_f), alpha, MSM_BIAS_32);
 }
 
-// Moments read back through msm_dequantize(): the 16-bit bias vector.
-float msm_hamburger16(vec4 b, float z_f, float alpha) {
-  return msm_hamburger(b, z_f, alpha, MSM_BIAS_16);
+// The same from moments of u read back through msm_dequantize() (16-bit,
+// or summed in the fixed-point summed-area table): the 16-bit bias vector.
+float msm_intensity16(vec4 b, float z_f, float alpha) {
+  return msm_hamburger(b, msm_signed_depth(z_f), alpha, MSM_BIAS_16);
 }
 
-// The optimized 16-bit quantization, for moments u = (E[z'], .., E[z'^4])
-// of z' in [-1, 1] (seed 002, matrix form; its text form has the sign of
-// the first row's z and z^3 terms flipped, which does not match the
-// inverse):
-//   R = 3/2 u1 - 2 u3 + 1/2        G = 4 u2 - 4 u4
-//   B = sqrt(3)/2 u1 - sqrt(12)/9 u3 + 1/2       A = 1/2 u2 + 1/2 u4
-// Each lies in [0, 1] for a point mass at any z' in [-1, 1], hence for any
+// The optimized 16-bit quantization, for moments b = (E[u], .., E[u^4]) of
+// u in [-1, 1] (seed 002, matrix form; its text form has the sign of the
+// first row's u and u^3 terms flipped, which does not match the inverse):
+//   R = 3/2 b1 - 2 b3 + 1/2        G = 4 b2 - 4 b4
+//   B = sqrt(3)/2 b1 - sqrt(12)/9 b3 + 1/2       A = 1/2 b2 + 1/2 b4
+// Each lies in [0, 1] for a point mass at any u in [-1, 1], hence for any
 // mixture; it spreads the moments over the 16-bit range far better than
 // storing them directly.
 // GLSL matrices are column-major: each vec4 below is one column.
-const mat4 MSM_QUANTIZE = mat4(1.5, 0.0, 0.8660254037844386, 0.0,    // u1
-                               0.0, 4.0, 0.0, 0.5,                   // u2
-                               -2.0, 0.0, -0.3849001794597505, 0.0,  // u3
-                               0.0, -4.0, 0.0, 0.5);                 // u4
+const mat4 MSM_QUANTIZE = mat4(1.5, 0.0, 0.8660254037844386, 0.0,    // b1
+                               0.0, 4.0, 0.0, 0.5,                   // b2
+                               -2.0, 0.0, -0.3849001794597505, 0.0,  // b3
+                               0.0, -4.0, 0.0, 0.5);                 // b4
 const vec4 MSM_QUANTIZE_OFFSET = vec4(0.5, 0.0, 0.5, 0.0);
 // Its inverse (as printed in seed 002, and checked in double by the tests).
 const mat4 MSM_DEQUANTIZE = mat4(-1.0 / 3.0, 0.0, -0.75, 0.0,                      // R
@@ -156,28 +187,20 @@ const mat4 MSM_DEQUANTIZE = mat4(-1.0 / 3.0, 0.0, -0.75, 0.0,                   
                                  1.7320508075688772, 0.0, 1.299038105676658, 0.0,  // B
                                  0.0, 1.0, 0.0, 1.0);                             // A
 
-// Moments of z in [0, 1] -> moments of z' = 2z - 1 (binomial expansion).
-vec4 msm_moments_to_signed(vec4 b) {
-  return vec4(2.0 * b.x - 1.0,
-              4.0 * b.y - 4.0 * b.x + 1.0,
-              8.0 * b.z - 12.0 * b.y + 6.0 * b.x - 1.0,
-              16.0 * b.w - 32.0 * b.z + 24.0 * b.y - 8.0 * b.x + 1.0);
-}
-
-// Moments of z' in [-1, 1] -> moments of z = (z' + 1) / 2.
-vec4 msm_moments_from_signed(vec4 u) {
-  return vec4((u.x + 1.0) * 0.5,
-              (u.y + 2.0 * u.x + 1.0) * 0.25,
-              (u.z + 3.0 * u.y + 3.0 * u.x + 1.0) * 0.125,
-              (u.w + 4.0 * u.z + 6.0 * u.y + 4.0 * u.x + 1.0) * 0.0625);
-}
-
-// [0, 1]-depth moments -> the four values stored in an RGBA16 UNORM texel.
+// Moments of u -> the four values stored in an RGBA16 UNORM texel.
 vec4 msm_quantize(vec4 b) {
-  return clamp(MSM_QUANTIZE * msm_moments_to_signed(b) + MSM_QUANTIZE_OFFSET, 0.0, 1.0);
+  return clamp(MSM_QUANTIZE * b + MSM_QUANTIZE_OFFSET, 0.0, 1.0);
 }
 
-// A (filtered) RGBA16 UNORM texel -> [0, 1]-depth moments for msm_hamburger16().
+// A (filtered) RGBA16 UNORM texel -> moments of u for msm_intensity16().
 vec4 msm_dequantize(vec4 q) {
-  return msm_moments_from_signed(MSM_DEQUANTIZE * (q - MSM_QUANTIZE_OFFSET));
+  return MSM_DEQUANTIZE * (q - MSM_QUANTIZE_OFFSET);
+}
+
+// Moments of u -> moments of z = (u + 1) / 2 (binomial expansion of
+// E[(u + 1)^k] / 2^k), for showing msm's maps as the moments of depth.
+vec4 msm_moments_from_signed(vec4 b) {
+  return vec4((b.x + 1.0) * 0.5, (b.y + 2.0 * b.x + 1.0) * 0.25,
+              (b.z + 3.0 * b.y + 3.0 * b.x + 1.0) * 0.125,
+              (b.w + 4.0 * b.z + 6.0 * b.y + 4.0 * b.x + 1.0) * 0.0625);
 }

@@ -8,14 +8,19 @@
 layout(local_size_x = 64) in;
 
 // What each mode reads from a case (a, b, c) and writes to its result r.
-#define MODE_MSM 0         // a: moments; b.xy: (z_f, alpha); c: bias vector
-                           // r = (msm_hamburger, msm_hamburger16, msm_hamburger(.., c), 0)
+#define MODE_MSM 0         // a: moments of u; b.xy: (u_f, alpha); c: bias vector
+                           // r = msm_hamburger with (MSM_BIAS_32, MSM_BIAS_16, c), 0
 #define MODE_VSM 1         // a.xy: moments; b: (z_f, min variance, bleed reduction)
                            // r.x = shadow_vsm
 #define MODE_ESM 2         // b: (filtered, z_f, c); r = (shadow_esm, esm_encode(z_f, c), 0, 0)
 #define MODE_QUANTIZE 3    // a: moments; r = msm_quantize(a)
 #define MODE_DEQUANTIZE 4  // a: quantized; r = msm_dequantize(a)
 #define MODE_BLEEDING 5    // b.xy: (lit, amount); r.x = reduce_light_bleeding
+#define MODE_MSM_MIX 6     // a: relative depths (d1, d2), weight w of d1, receiver z_f;
+                           // b.x: alpha. Two texels' 32-bit moments as the resolve
+                           // makes them, mixed as a filter does: r.x = msm_intensity32
+#define MODE_MSM16_MIX 7   // a, c: two RGBA16 texels; b.xyz: (weight w of a, z_f, alpha)
+                           // r.x = msm_intensity16 of their mixture, dequantized
 
 struct Case {
   vec4 a;
@@ -36,8 +41,8 @@ void main() {
   vec4 r = vec4(0.0);
   switch (mode) {
     case MODE_MSM:
-      r.x = msm_hamburger(k.a, k.b.x, k.b.y);
-      r.y = msm_hamburger16(k.a, k.b.x, k.b.y);
+      r.x = msm_hamburger(k.a, k.b.x, k.b.y, MSM_BIAS_32);
+      r.y = msm_hamburger(k.a, k.b.x, k.b.y, MSM_BIAS_16);
       r.z = msm_hamburger(k.a, k.b.x, k.b.y, k.c);
       break;
     case MODE_VSM:
@@ -55,6 +60,13 @@ void main() {
       break;
     case MODE_BLEEDING:
       r.x = reduce_light_bleeding(k.b.x, k.b.y);
+      break;
+    case MODE_MSM_MIX:
+      r.x = msm_intensity32(k.a.z * msm_moments(k.a.x) + (1.0 - k.a.z) * msm_moments(k.a.y),
+                            k.a.w, k.b.x);
+      break;
+    case MODE_MSM16_MIX:
+      r.x = msm_intensity16(msm_dequantize(k.b.x * k.a + (1.0 - k.b.x) * k.c), k.b.y, k.b.z);
       break;
   }
   results[i] = r;

@@ -54,13 +54,20 @@ std::string filter_name(Filter f) {
   return std::string(enum_name<Filter>(kFilterNames, f));
 }
 
-// File-name stem of an item's images: "hard", "vsm-gaussian-w2".
+// File-name stem of an item's images: "hard", "vsm-gaussian-w2", "msm-sat-w2-soft".
 std::string item_stem(const ShadowSettings& s) {
   std::string stem = technique_name(s.technique);
   if (is_filterable(s.technique)) {
     stem += "-" + filter_name(s.filter) + "-w" + std::to_string(s.blur);
   }
+  if (s.soft) stem += "-soft";
   return stem;
+}
+
+// The filter cell of the table: "sat", "sat, soft", "-" for unfiltered techniques.
+std::string filter_cell(const ShadowSettings& s) {
+  if (!is_filterable(s.technique)) return "-";
+  return filter_name(s.filter) + (s.soft ? ", soft" : "");
 }
 
 // The output folder: an existing writable folder, or one to be created in
@@ -161,7 +168,7 @@ std::vector<std::string> metrics_row(const Item& item, const char* reference,
   const ShadowSettings& s = item.settings;
   const bool filtered = is_filterable(s.technique);
   return {first ? technique_name(s.technique) : "",
-          first ? (filtered ? filter_name(s.filter) : "-") : "",
+          first ? filter_cell(s) : "",
           first ? (filtered ? std::to_string(s.blur) : "-") : "",
           reference,
           fixed(m.mean_absolute_error, 4),
@@ -199,6 +206,11 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
   add_render_parameters(command, args.render);
   add_shadow_parameters(command, args.shadow);
   add_reference_options(command, args.reference);
+  command.footer(
+      "--soft applies to vsm, msm and msm16 with --filter sat, which are then measured soft "
+      "(against the traced reference only: the filtered reference has one fixed kernel); the "
+      "other techniques and filters in the lists are measured as usual, and the table marks "
+      "the soft rows. At least one chosen technique and filter must be able to be soft.");
 }
 
 namespace {
@@ -213,6 +225,8 @@ std::vector<Item> plan_items(const CompareArgs& args) {
       item.settings = args.shadow;
       item.settings.technique = t;
       item.settings.filter = f;
+      // --soft is for the techniques that can be soft; the rest run as usual.
+      item.settings.soft = args.shadow.soft && supports_soft_shadows(t, f);
       try {
         validate(item.settings);
       } catch (const UsageError& e) {
@@ -225,6 +239,14 @@ std::vector<Item> plan_items(const CompareArgs& args) {
   const bool any =
       std::any_of(items.begin(), items.end(), [](const Item& i) { return i.skipped.empty(); });
   if (!any) throw UsageError("nothing to compare: " + items.front().skipped);
+  const bool any_soft = std::any_of(items.begin(), items.end(), [](const Item& i) {
+    return i.skipped.empty() && i.settings.soft;
+  });
+  if (args.shadow.soft && !any_soft) {
+    throw UsageError(
+        "--soft needs vsm, msm or msm16 in --techniques and sat in --filter (the penumbra-sized "
+        "filter is read from the summed-area table)");
+  }
   return items;
 }
 
@@ -296,7 +318,7 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
   for (const Item& item : items) {
     if (!item.skipped.empty()) {
       rows.push_back(
-          {{technique_name(item.settings.technique), filter_name(item.settings.filter),
+          {{technique_name(item.settings.technique), filter_cell(item.settings),
             std::to_string(item.settings.blur), "skipped: " + short_reason(item.skipped)},
            true});
       continue;
@@ -321,6 +343,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
     json r = {{"technique", technique_name(s.technique)}};
     r["filter"] = is_filterable(s.technique) ? json(filter_name(s.filter)) : json(nullptr);
     r["blur"] = is_filterable(s.technique) ? json(s.blur) : json(nullptr);
+    r["soft"] = s.soft;
     if (!item.skipped.empty()) {
       r["status"] = "skipped";
       r["reason"] = item.skipped;
@@ -357,9 +380,12 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
 }  // namespace
 
 int run_compare_command(CompareArgs& args) {
-  // Every usage error first, so that none leaves output behind.
+  // Every usage error first, so that none leaves output behind. The
+  // technique, filter and --soft are checked per item (plan_items).
   validate(args.render);
-  validate(args.shadow);
+  ShadowSettings common = args.shadow;
+  common.soft = false;
+  validate(common);
   validate(args.reference);
   std::vector<Item> items = plan_items(args);
   if (!args.output_dir.empty()) check_output_dir(args.output_dir);

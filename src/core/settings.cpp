@@ -30,8 +30,7 @@ void check_ranges(const Settings& settings,
 void validate(const ShadowSettings& settings) {
   check_ranges(settings, kShadowFloatParams);
   check_ranges(settings, kShadowIntParams);
-  if (settings.soft && (!is_filterable(settings.technique) || settings.filter != Filter::Sat ||
-                        settings.technique == Technique::Esm)) {
+  if (settings.soft && !supports_soft_shadows(settings.technique, settings.filter)) {
     throw UsageError(
         "--soft needs --technique vsm, msm or msm16 with --filter sat (the penumbra-sized "
         "filter is read from the summed-area table)");

@@ -37,6 +37,12 @@ inline constexpr std::array<std::pair<Filter, std::string_view>, 2> kFilterNames
     {Filter::Sat, "sat"},
 }};
 
+// Whether --soft applies: the moment techniques (vsm, msm, msm16) filtered
+// by the summed-area table, from which the penumbra-sized filter is read.
+constexpr bool supports_soft_shadows(Technique t, Filter f) {
+  return f == Filter::Sat && (t == Technique::Vsm || t == Technique::Msm || t == Technique::Msm16);
+}
+
 enum class View {
   Final,
   Shadow,
@@ -123,10 +129,19 @@ struct ShadowSettings {
   int blur = 2;
   // ESM exponent c (Annen et al. 2008); the map stores exp(c (z - 1)).
   float esm_c = 60.0f;
-  // MSM moment bias alpha for 32-bit moments (Peters & Klein 2015, Alg. 3).
-  float msm_alpha = 1e-5f;
+  // MSM moment bias alpha for 32-bit float moments of u = 2 z-bar - 1
+  // (Peters & Klein 2015, Alg. 3), toward (0, 0.375, 0, 0.375) as in
+  // Peters' JCGT 2017 code. Smaller is sharper (compare's error against the
+  // filtered reference falls slightly down to 3e-7), but at filtered edges
+  // near the far end of the depth range (tests/gpu/moment_shader_test.cpp)
+  // float32 rounding then moves G by more than 0.05 (3e-7: up to 0.06 on
+  // the GPU, 0.17 with the solve in double; 5e-7: 0.0498); 1e-6 keeps it
+  // below 0.045.
+  float msm_alpha = 1e-6f;
   // MSM moment bias alpha for 16-bit quantized moments, and for moments
-  // summed in the fixed-point summed-area table.
+  // summed in the fixed-point summed-area table, toward (0, 0.628, 0, 0.628).
+  // 2e-5 measures better on the default scene but lets the float solve of
+  // 16-bit far-end edges jump by up to 1.
   float msm16_alpha = 5e-5f;
   // VSM minimum variance, in squared shadow-map texels (converted per view
   // like the constant bias).
@@ -258,9 +273,14 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloa
      &ShadowSettings::pcf_width},
     {"esm-c", "ESM exponent c, per unit of the shadow view's relative depth z-bar", 1.0f, kEsmMaxC,
      &ShadowSettings::esm_c},
-    {"msm-alpha", "MSM moment bias alpha, 32-bit moments", 1e-8f, 0.5f, &ShadowSettings::msm_alpha},
-    {"msm16-alpha", "MSM moment bias alpha, 16-bit and summed-area-table moments", 1e-8f, 0.5f,
-     &ShadowSettings::msm16_alpha},
+    {"msm-alpha",
+     "MSM moment bias alpha for msm's 32-bit float moments of 2 z-bar - 1, toward (0, 0.375, 0, "
+     "0.375); below about 5e-7 float rounding shows near the far end of the depth range",
+     1e-8f, 0.5f, &ShadowSettings::msm_alpha},
+    {"msm16-alpha",
+     "MSM moment bias alpha for msm16's 16-bit moments and for moments summed in the "
+     "summed-area table (msm and msm16 with --filter sat), toward (0, 0.628, 0, 0.628)",
+     1e-8f, 0.5f, &ShadowSettings::msm16_alpha},
     {"vsm-min-variance", "VSM minimum variance, in squared shadow-map texels", 0.0f, 4096.0f,
      &ShadowSettings::vsm_min_variance},
     {"bleed-reduction", "light-bleeding reduction for vsm and msm (0: off)", 0.0f, 0.99f,

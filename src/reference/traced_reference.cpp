@@ -17,6 +17,7 @@ TracedReference traced_reference(Renderer& renderer, const RenderSettings& rende
   view.view = View::Shadow;
   ShadowSettings no_shadow = shadow;
   no_shadow.technique = Technique::None;
+  no_shadow.soft = false;            // only the moment techniques can be soft
   renderer.render(view, no_shadow);  // the G-buffer, and the fitted light views
   const SurfacePoints surfaces = renderer.read_surfaces();
   const int light_index = render.light_index;

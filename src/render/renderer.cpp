@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "filter/gaussian.hpp"
+#include "shadow/moment_math.hpp"
 #include "shadow/poisson_disc.hpp"
 #include "shadow/representation.hpp"
 #include "shared/bindings.h"
@@ -374,6 +375,9 @@ ViewSource Renderer::view_source() {
     if (last_shadow_.technique == Technique::Esm) {
       return {&tiling_pass_.output(), ViewEncoding::EsmLog, last_shadow_.esm_c};
     }
+    if (last_shadow_.technique == Technique::Msm && !uses_quantized_moments(last_shadow_)) {
+      return {&tiling_pass_.output(), ViewEncoding::SignedMoments};
+    }
     return {&tiling_pass_.output(), ViewEncoding::Data};
   }
   return {&lighting_pass_.output(),
@@ -398,6 +402,14 @@ Image Renderer::read_view() {
       const float v = image.rgba[p];
       const float depth = v > 0.0f ? std::log(v) / source.esm_c + 1.0f : 0.0f;
       image.rgba[p] = image.rgba[p + 1] = image.rgba[p + 2] = depth;
+      image.rgba[p + 3] = 1.0f;
+    }
+  }
+  if (source.encoding == ViewEncoding::SignedMoments) {
+    for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
+      const glm::dvec4 z = msm_moments_from_signed(
+          {image.rgba[p], image.rgba[p + 1], image.rgba[p + 2], image.rgba[p + 3]});
+      for (int c = 0; c < 3; ++c) image.rgba[p + c] = static_cast<float>(z[c]);
       image.rgba[p + 3] = 1.0f;
     }
   }

@@ -41,6 +41,9 @@ enum class ViewEncoding {
   Depth = VIEW_ENCODING_DEPTH,
   // an ESM map exp(c (z - 1)): shown as log(map)/c + 1, in depth units
   EsmLog = VIEW_ENCODING_ESM_LOG,
+  // msm's 32-bit moments of u = 2 z - 1: shown as the moments of z
+  // (E[z], E[z^2], E[z^3]), the colour image of the seed's assignment
+  SignedMoments = VIEW_ENCODING_SIGNED_MOMENTS,
 };
 
 struct ViewSource {

@@ -65,30 +65,23 @@ double esm_reference(double filtered, double receiver_depth, double c) {
   return std::min(1.0, occluder * std::exp(-c * (receiver_depth - 1.0)));
 }
 
-// Seed 002, matrix form, for moments u of z' in [-1, 1]:
-//   R = 3/2 u1 - 2 u3 + 1/2, G = 4 u2 - 4 u4,
-//   B = sqrt(3)/2 u1 - sqrt(12)/9 u3 + 1/2, A = (u2 + u4) / 2.
+// Seed 002, matrix form, for moments b of u in [-1, 1]:
+//   R = 3/2 b1 - 2 b3 + 1/2, G = 4 b2 - 4 b4,
+//   B = sqrt(3)/2 b1 - sqrt(12)/9 b3 + 1/2, A = (b2 + b4) / 2.
 glm::vec4 msm_quantize(glm::vec4 b) {
-  const glm::vec4 u{2.0f * b.x - 1.0f, 4.0f * b.y - 4.0f * b.x + 1.0f,
-                    8.0f * b.z - 12.0f * b.y + 6.0f * b.x - 1.0f,
-                    16.0f * b.w - 32.0f * b.z + 24.0f * b.y - 8.0f * b.x + 1.0f};
   const float sqrt3_2 = 0.8660254037844386f;
   const float sqrt12_9 = 0.3849001794597505f;
-  const glm::vec4 q{1.5f * u.x - 2.0f * u.z + 0.5f, 4.0f * u.y - 4.0f * u.w,
-                    sqrt3_2 * u.x - sqrt12_9 * u.z + 0.5f, 0.5f * u.y + 0.5f * u.w};
+  const glm::vec4 q{1.5f * b.x - 2.0f * b.z + 0.5f, 4.0f * b.y - 4.0f * b.w,
+                    sqrt3_2 * b.x - sqrt12_9 * b.z + 0.5f, 0.5f * b.y + 0.5f * b.w};
   return glm::clamp(q, 0.0f, 1.0f);
 }
 
-// The inverse (seed 002): u1 = -(R - 1/2) / 3 + sqrt(3) (B - 1/2),
-// u2 = G / 8 + A, u3 = -3/4 (R - 1/2) + 3 sqrt(3) / 4 (B - 1/2), u4 = -G / 8 + A.
+// The inverse (seed 002): b1 = -(R - 1/2) / 3 + sqrt(3) (B - 1/2),
+// b2 = G / 8 + A, b3 = -3/4 (R - 1/2) + 3 sqrt(3) / 4 (B - 1/2), b4 = -G / 8 + A.
 glm::vec4 msm_dequantize(glm::vec4 q) {
   const float r = q.x - 0.5f, g = q.y, bl = q.z - 0.5f, a = q.w;
   const float sqrt3 = 1.7320508075688772f;
-  const glm::vec4 u{-r / 3.0f + sqrt3 * bl, 0.125f * g + a, -0.75f * r + 0.75f * sqrt3 * bl,
-                    -0.125f * g + a};
-  return {(u.x + 1.0f) * 0.5f, (u.y + 2.0f * u.x + 1.0f) * 0.25f,
-          (u.z + 3.0f * u.y + 3.0f * u.x + 1.0f) * 0.125f,
-          (u.w + 4.0f * u.z + 6.0f * u.y + 4.0f * u.x + 1.0f) * 0.0625f};
+  return {-r / 3.0f + sqrt3 * bl, 0.125f * g + a, -0.75f * r + 0.75f * sqrt3 * bl, -0.125f * g + a};
 }
 
 }  // namespace penumbra

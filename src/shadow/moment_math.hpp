@@ -5,13 +5,20 @@
 // float mirrors of the 16-bit MSM quantization.
 //
 // Conventions as in the shaders: relative depth z in [0, 1]; MSM moments
-// b = (E[z], E[z^2], E[z^3], E[z^4]).
+// are those of the signed depth u = 2 z - 1, b = (E[u], .., E[u^4]).
 #include <glm/glm.hpp>
 
 namespace penumbra {
 
-// Moments of z' in [-1, 1] -> moments of z = (z' + 1) / 2 (binomial
-// expansion of E[(z' + 1)^k] / 2^k).
+// The moments (u, u^2, u^3, u^4), u = 2 z - 1, of one relative depth z (what
+// msm_moments() in msm.glsl stores per texel), in double.
+constexpr glm::dvec4 msm_moments_of_depth(double z) {
+  const double u = 2.0 * z - 1.0;
+  return {u, u * u, u * u * u, u * u * u * u};
+}
+
+// Moments of u in [-1, 1] -> moments of z = (u + 1) / 2 (binomial
+// expansion of E[(u + 1)^k] / 2^k).
 constexpr glm::dvec4 msm_moments_from_signed(const glm::dvec4& u) {
   return {(u.x + 1.0) / 2.0, (u.y + 2.0 * u.x + 1.0) / 4.0,
           (u.z + 3.0 * u.y + 3.0 * u.x + 1.0) / 8.0,
@@ -19,17 +26,18 @@ constexpr glm::dvec4 msm_moments_from_signed(const glm::dvec4& u) {
 }
 
 // Bias vectors of Algorithm 3, step 1 (Peters & Klein, I3D 2015), as
-// moments of z in [0, 1]. 32-bit float moments: (0.5, 0.5, 0.5, 0.5), half
-// the mass at 0 and half at 1.
-inline constexpr glm::dvec4 kMsmBias32{0.5, 0.5, 0.5, 0.5};
-// 16-bit quantized moments: Peters biases the [-1, 1] moments toward
-// (0, 0.628, 0, 0.628); in [0, 1] that is (0.5, 0.407, 0.3605, 0.33725).
-inline constexpr glm::dvec4 kMsmBias16 = msm_moments_from_signed({0.0, 0.628, 0.0, 0.628});
+// moments of u. 32-bit float moments: (0, 0.375, 0, 0.375), Peters' later
+// code's (JCGT 2017): 0.1875 at u = -1 and at 1, 0.625 at 0.
+inline constexpr glm::dvec4 kMsmBias32{0.0, 0.375, 0.0, 0.375};
+// 16-bit quantized moments: Peters' (0, 0.628, 0, 0.628) (seed 002): 0.314
+// at u = -1 and at 1, 0.372 at 0.
+inline constexpr glm::dvec4 kMsmBias16{0.0, 0.628, 0.0, 0.628};
 
 // Hamburger 4MSM shadow intensity G (0 = lit, 1 = shadowed), Algorithm 3 of
 // Peters & Klein 2015, with the 3x3 Hankel system solved by Cramer's rule
-// and the quadratic by the textbook formula. The result is clamped to
-// [0, 1] like the shader's.
+// and the quadratic by the textbook formula, for moments b and a receiver
+// z_f in the same depth variable (u for the shaders' moments). The result
+// is clamped to [0, 1] like the shader's.
 double msm_hamburger_reference(glm::dvec4 b, double z_f, double alpha,
                                glm::dvec4 bias_vector = kMsmBias32);
 
@@ -47,9 +55,8 @@ double reduce_light_bleeding_reference(double lit, double amount);
 // encoding of depth 0) like the shader: min(1, f exp(-c (z_f - 1))).
 double esm_reference(double filtered, double receiver_depth, double c);
 
-// Float mirrors of msm_quantize() / msm_dequantize() in msm.glsl: [0, 1]
-// moments <-> the four RGBA16 UNORM values (seed 002's transform applied to
-// the moments of 2z - 1).
+// Float mirrors of msm_quantize() / msm_dequantize() in msm.glsl: moments
+// of u <-> the four RGBA16 UNORM values (seed 002's transform).
 glm::vec4 msm_quantize(glm::vec4 b);
 glm::vec4 msm_dequantize(glm::vec4 q);
 

@@ -147,8 +147,7 @@ FrameInput frame_input(const ViewerState& state, int width, int height, int max_
     s.map_size = max_texture_size;
     f.notes.push_back("shadow-map size: this GPU's limit is " + std::to_string(max_texture_size));
   }
-  if (s.soft &&
-      (!is_filterable(s.technique) || s.technique == Technique::Esm || s.filter != Filter::Sat)) {
+  if (s.soft && !supports_soft_shadows(s.technique, s.filter)) {
     s.soft = false;
     f.notes.push_back("soft: off (needs vsm, msm or msm16 with the sat filter)");
   }

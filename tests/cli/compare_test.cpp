@@ -153,6 +153,46 @@ TEST(Compare, AreaLightReferenceWithoutOutputs) {
   EXPECT_NE(r.out.find("pcss"), std::string::npos) << r.out;
 }
 
+// --soft measures the moment techniques' soft shadows (from the
+// summed-area table) against the traced area-light shadow; a technique in
+// the list that cannot be soft (hard) is measured as usual; and --soft with
+// nothing that can be soft is a usage error.
+TEST(Compare, SoftMomentShadows) {
+  const std::string json_path = out_path("compare-soft.json");
+  const std::string dir = out_path("compare-soft-out");
+  Result r = run("compare " + kSmall +
+                 "--soft --filter sat --techniques hard,vsm,msm,msm16 --light-size 0.8 "
+                 "--reference-samples 16 --no-cache -o " +
+                 dir + " --json " + json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("sat, soft"), std::string::npos) << r.out;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const auto& results = j["results"];
+  ASSERT_EQ(results.size(), 4u);
+  for (const auto& item : results) {
+    const std::string technique = item["technique"];
+    ASSERT_EQ(item["status"], "ok") << technique;
+    const auto& m = item["traced"];
+    EXPECT_EQ(m["pixels"], j["reference"]["pixels"]) << technique;
+    EXPECT_GE(m["mae"].get<double>(), 0.0) << technique;
+    EXPECT_LE(m["mae"].get<double>(), m["rmse"].get<double>()) << technique;
+    if (technique == "hard") {
+      EXPECT_EQ(item["soft"], false);
+      continue;
+    }
+    EXPECT_EQ(item["soft"], true) << technique;
+    EXPECT_EQ(item["filter"], "sat") << technique;
+    // Each pixel's kernel follows its penumbra: no fixed-kernel reference.
+    EXPECT_TRUE(item["filtered"].is_null()) << technique;
+    EXPECT_TRUE(fs::exists(fs::path(dir) / (technique + "-sat-w2-soft.png"))) << technique;
+  }
+  expect_compare_error("--soft --techniques hard,pcss", 2, "--soft");
+  expect_compare_error("--soft --techniques vsm,msm --filter gaussian", 2, "--soft");
+  expect_compare_error("--soft --techniques esm --filter all", 2, "--soft");
+}
+
 TEST(Compare, HelpListsItsOptions) {
   Result r = run("compare --help");
   EXPECT_EQ(r.status, 0);
@@ -161,6 +201,8 @@ TEST(Compare, HelpListsItsOptions) {
                              "--cache-dir", "--no-cache", "--light-index", "--width"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from --help";
   }
+  EXPECT_NE(r.out.find("--soft applies to vsm, msm and msm16 with --filter sat"), std::string::npos)
+      << r.out;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The filtered techniques on the default scene, measured against the
 // filtered hard-shadow reference (the unfiltered map's depth tests averaged
 // with the same kernel).
+#include <algorithm>
 #include <cmath>
 
 #include "gpu_fixture.hpp"
@@ -121,6 +122,25 @@ TEST_F(GpuTest, UnfilteredReferenceIsTheHardShadow) {
   // They differ only where the receiver-plane test and the single test
   // disagree: on a few pixels at silhouettes.
   EXPECT_LT(m.mean_absolute_error, 0.002);
+}
+
+// msm stores the moments of u = 2 z - 1; its map views show them as the
+// moments of z: unfiltered, (z, z^2, z^3) of the shadow-map view's depth.
+TEST_F(GpuTest, MsmMomentsViewShowsTheMomentsOfDepth) {
+  Renderer renderer(*builtin_scene("default"));
+  renderer.render(small_view(View::ShadowMap), filtered(Technique::Msm, Filter::Gaussian, 0));
+  const Image depth = renderer.read_view();
+  renderer.render(small_view(View::Moments), filtered(Technique::Msm, Filter::Gaussian, 0));
+  const Image moments = renderer.read_view();
+  ASSERT_EQ(depth.rgba.size(), moments.rgba.size());
+  double max_error = 0.0;
+  for (std::size_t p = 0; p < depth.rgba.size(); p += 4) {
+    const double z = depth.rgba[p];
+    for (int k = 0; k < 3; ++k) {
+      max_error = std::max(max_error, std::abs(moments.rgba[p + k] - std::pow(z, k + 1)));
+    }
+  }
+  EXPECT_LT(max_error, 1e-6);
 }
 
 }  // namespace

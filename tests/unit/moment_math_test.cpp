@@ -8,12 +8,14 @@
 #include <random>
 #include <vector>
 
+#include "core/settings.hpp"
 #include "filter/gaussian.hpp"
 
 namespace penumbra {
 namespace {
 
-// Moments (E[z], .., E[z^4]) of point masses `weights` at `depths`.
+// Moments (E[x], .., E[x^4]) of point masses `weights` at `depths` (in
+// whatever depth variable x the caller uses).
 glm::dvec4 moments_of(const std::vector<double>& depths, const std::vector<double>& weights) {
   glm::dvec4 b(0.0);
   for (std::size_t i = 0; i < depths.size(); ++i) {
@@ -25,6 +27,18 @@ glm::dvec4 moments_of(const std::vector<double>& depths, const std::vector<doubl
 
 glm::dvec4 moments_of(double z) {
   return moments_of({z}, {1.0});
+}
+
+// The signed depth u = 2 z - 1 the MSM moments are of.
+double signed_depth(double z) {
+  return 2.0 * z - 1.0;
+}
+
+// The MSM moments (of u) of point masses `weights` at relative depths `depths`.
+glm::dvec4 msm_moments_of(const std::vector<double>& depths, const std::vector<double>& weights) {
+  glm::dvec4 b(0.0);
+  for (std::size_t i = 0; i < depths.size(); ++i) b += weights[i] * msm_moments_of_depth(depths[i]);
+  return b;
 }
 
 // --- Gaussian weights --------------------------------------------------------
@@ -54,20 +68,21 @@ TEST(GaussianWeights, NormalizedSymmetricWithSigmaHalfWidth) {
 constexpr double kAlpha = 3e-5;
 
 // A single occluder depth d (a point mass): with the bias, the moments are
-// those of (1 - a) at d and a/2 at 0 and 1, so the sharp lower bound G is
-// at most a/2 in front of d and at least 1 - a/2 - (a small amount) behind.
+// those of (1 - a) at d and a (0.1875, 0.625, 0.1875) at u = -1, 0, 1, so
+// the sharp lower bound G is at most 0.8125 a in front of d and at least
+// 1 - 0.8125 a - (a small amount) behind.
 TEST(MsmReference, PointMassIsSharp) {
   double worst_front = 0.0, worst_behind = 0.0;
   for (double d : {0.1, 0.3, 0.5, 0.7, 0.9}) {
-    const glm::dvec4 b = moments_of(d);
+    const glm::dvec4 b = msm_moments_of_depth(d);
     for (double dz : {0.02, 0.05, 0.1, 0.3}) {
       if (d - dz >= 0.0) {
-        const double g = msm_hamburger_reference(b, d - dz, kAlpha);
+        const double g = msm_hamburger_reference(b, signed_depth(d - dz), kAlpha);
         worst_front = std::max(worst_front, g);
         EXPECT_LE(g, 1e-4) << "d = " << d << ", in front by " << dz;
       }
       if (d + dz <= 1.0) {
-        const double g = msm_hamburger_reference(b, d + dz, kAlpha);
+        const double g = msm_hamburger_reference(b, signed_depth(d + dz), kAlpha);
         worst_behind = std::max(worst_behind, 1.0 - g);
         EXPECT_GE(g, 1.0 - 2e-2) << "d = " << d << ", behind by " << dz;
         if (dz >= 0.1) {
@@ -128,10 +143,11 @@ TEST(MsmReference, TwoDepthsHalfAndHalf) {
   double worst_between = 0.0, worst_vs_three_point = 0.0;
   const double pairs[][2] = {{0.2, 0.6}, {0.3, 0.5}, {0.1, 0.9}, {0.4, 0.8}};
   for (const auto& pair : pairs) {
-    const double d1 = pair[0], d2 = pair[1];
+    // In the signed depth the moments are of.
+    const double d1 = signed_depth(pair[0]), d2 = signed_depth(pair[1]);
     const glm::dvec4 b = moments_of({d1, d2}, {0.5, 0.5});
-    EXPECT_LE(msm_hamburger_reference(b, d1 - 0.05, kAlpha), 1e-4);
-    EXPECT_GE(msm_hamburger_reference(b, d2 + 0.1, kAlpha), 1.0 - 5e-3);
+    EXPECT_LE(msm_hamburger_reference(b, d1 - 0.1, kAlpha), 1e-4);
+    EXPECT_GE(msm_hamburger_reference(b, d2 + 0.2, kAlpha), 1.0 - 5e-3);
     for (double t : {0.25, 0.5, 0.75}) {
       const double z_f = d1 + t * (d2 - d1);
       const double g = msm_hamburger_reference(b, z_f, kAlpha);
@@ -172,11 +188,11 @@ TEST(MsmReference, MonotoneInReceiverDepth) {
       total += weights[i];
     }
     for (double& w : weights) w /= total;
-    const glm::dvec4 b = moments_of(depths, weights);
+    const glm::dvec4 b = msm_moments_of(depths, weights);
     for (const glm::dvec4& bias : {kMsmBias32, kMsmBias16}) {
       double previous = 0.0;
       for (int k = 0; k <= 100; ++k) {
-        const double g = msm_hamburger_reference(b, k / 100.0, kAlpha, bias);
+        const double g = msm_hamburger_reference(b, signed_depth(k / 100.0), kAlpha, bias);
         ASSERT_GE(g, previous - 1e-9) << "trial " << trial << ", z_f = " << k / 100.0;
         ASSERT_LE(g, 1.0);
         previous = g;
@@ -187,23 +203,112 @@ TEST(MsmReference, MonotoneInReceiverDepth) {
 
 // --- Bias vectors --------------------------------------------------------------
 
-TEST(MsmBias, SixteenBitBiasIsPetersVectorInUnitDepth) {
-  // (0, 0.628, 0, 0.628) in [-1, 1] is 0.314 at -1 and 1, 0.372 at 0.
-  const glm::dvec4 expected = moments_of({0.0, 0.5, 1.0}, {0.314, 0.372, 0.314});
-  for (int k = 0; k < 4; ++k) EXPECT_NEAR(kMsmBias16[k], expected[k], 1e-15);
-  EXPECT_NEAR(kMsmBias16.y, 0.407, 1e-15);
-  EXPECT_NEAR(kMsmBias16.z, 0.3605, 1e-15);
-  EXPECT_NEAR(kMsmBias16.w, 0.33725, 1e-15);
-  const glm::dvec4 half = moments_of({0.0, 1.0}, {0.5, 0.5});
-  for (int k = 0; k < 4; ++k) EXPECT_EQ(kMsmBias32[k], half[k]);
+TEST(MsmBias, BiasVectorsArePetersDistributions) {
+  // 32-bit, (0, 0.375, 0, 0.375): 0.1875 at u = -1 and 1, 0.625 at 0.
+  const glm::dvec4 b32 = moments_of({-1.0, 0.0, 1.0}, {0.1875, 0.625, 0.1875});
+  // 16-bit, (0, 0.628, 0, 0.628): 0.314 at -1 and 1, 0.372 at 0.
+  const glm::dvec4 b16 = moments_of({-1.0, 0.0, 1.0}, {0.314, 0.372, 0.314});
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(kMsmBias32[k], b32[k], 1e-15);
+    EXPECT_NEAR(kMsmBias16[k], b16[k], 1e-15);
+  }
 }
 
 TEST(MsmBias, ConversionFromSignedDepthIsTheBinomialExpansion) {
-  for (double zs : {-1.0, -0.6, 0.0, 0.25, 1.0}) {
-    const glm::dvec4 converted = msm_moments_from_signed(moments_of(zs));
-    const glm::dvec4 direct = moments_of((zs + 1.0) / 2.0);
+  for (double z : {0.0, 0.2, 0.5, 0.625, 1.0}) {
+    const glm::dvec4 converted = msm_moments_from_signed(msm_moments_of_depth(z));
+    const glm::dvec4 direct = moments_of(z);
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(converted[k], direct[k], 1e-15);
   }
+}
+
+// The Hamburger bound does not depend on the depth variable: solving the
+// moments of u = 2 z - 1 against u_f gives, in exact arithmetic, what
+// solving the moments of z against z_f does, with the bias distribution
+// mapped along. (So storing u changes only the rounding, which is the point.)
+TEST(MsmReference, SignedDepthSolveEqualsUnitDepthSolve) {
+  std::mt19937 rng(2017);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  double worst = 0.0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const int n = 1 + trial % 4;
+    std::vector<double> depths(n), weights(n);
+    double total = 0.0;
+    for (int i = 0; i < n; ++i) {
+      depths[i] = u01(rng);
+      weights[i] = 0.05 + u01(rng);
+      total += weights[i];
+    }
+    for (double& w : weights) w /= total;
+    const glm::dvec4 signed_moments = msm_moments_of(depths, weights);
+    const glm::dvec4 unit_moments = moments_of(depths, weights);
+    for (const glm::dvec4& bias : {kMsmBias32, kMsmBias16}) {
+      for (double z_f : {0.1, 0.35, 0.5, 0.8, 0.97}) {
+        const double g_signed =
+            msm_hamburger_reference(signed_moments, signed_depth(z_f), kAlpha, bias);
+        const double g_unit =
+            msm_hamburger_reference(unit_moments, z_f, kAlpha, msm_moments_from_signed(bias));
+        worst = std::max(worst, std::abs(g_signed - g_unit));
+        EXPECT_NEAR(g_signed, g_unit, 1e-6) << "trial " << trial << ", z_f = " << z_f;
+      }
+    }
+  }
+  std::printf("Hamburger bound on u vs on z (double): max |dG| %.3g\n", worst);
+}
+
+// Why the moments are of u: near the far end of the depth range, float32
+// moments of z keep too little of a filtered edge. A receiver surface at
+// depth r, 5e-4 to 5e-3 behind an occluder at d in [0.97, 0.999] that
+// covers a fraction w of its filter region: the texels' moments are
+// computed and mixed in float as the resolve and the filter do, then solved
+// in double (so only the storage differs), against the same solve of the
+// exact mixture. With moments of z many shadows are off by more than 0.05;
+// with moments of u, at the default alpha, none.
+TEST(MsmPrecision, SignedDepthMomentsKeepNearFarEdgesInFloat) {
+  const double alpha = ShadowSettings{}.msm_alpha;
+  // The old convention's bias and alpha: half the mass at z = 0 and 1, 1e-5.
+  const glm::dvec4 unit_bias = msm_moments_from_signed({0.0, 1.0, 0.0, 1.0});
+  const double unit_alpha = 1e-5;
+  auto float_moments = [](float x) {
+    const float x2 = x * x;
+    return glm::vec4(x, x2, x2 * x, x2 * x2);
+  };
+  auto double_moments = [](double x) { return moments_of(x); };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const int count = 20000;
+  int off_unit = 0, off_signed = 0;
+  double worst_unit = 0.0, worst_signed = 0.0;
+  for (int i = 0; i < count; ++i) {
+    float d, r;
+    do {  // both depths in the map's range [0, 1]
+      d = static_cast<float>(0.97 + 0.029 * u01(rng));
+      r = static_cast<float>(d + 5e-4 * std::pow(10.0, u01(rng)));
+    } while (r > 1.0f);
+    const float w = static_cast<float>(u01(rng));
+    // Moments of z.
+    const glm::vec4 unit = w * float_moments(d) + (1.0f - w) * float_moments(r);
+    const glm::dvec4 unit_exact = double(w) * double_moments(d) + (1.0 - w) * double_moments(r);
+    const double e_unit =
+        std::abs(msm_hamburger_reference(glm::dvec4(unit), r, unit_alpha, unit_bias) -
+                 msm_hamburger_reference(unit_exact, r, unit_alpha, unit_bias));
+    // Moments of u (2 z - 1 is exact in float here).
+    const float ud = 2.0f * d - 1.0f, ur = 2.0f * r - 1.0f;
+    const glm::vec4 sgn = w * float_moments(ud) + (1.0f - w) * float_moments(ur);
+    const glm::dvec4 sgn_exact = double(w) * double_moments(ud) + (1.0 - w) * double_moments(ur);
+    const double e_signed = std::abs(msm_hamburger_reference(glm::dvec4(sgn), ur, alpha) -
+                                     msm_hamburger_reference(sgn_exact, ur, alpha));
+    off_unit += e_unit > 0.05;
+    off_signed += e_signed > 0.05;
+    worst_unit = std::max(worst_unit, e_unit);
+    worst_signed = std::max(worst_signed, e_signed);
+  }
+  std::printf(
+      "near-far edges in float32 storage: moments of z off by > 0.05 in %.2f%% (max %.3f); "
+      "moments of u (alpha %g) in %.2f%% (max %.3f)\n",
+      100.0 * off_unit / count, worst_unit, alpha, 100.0 * off_signed / count, worst_signed);
+  EXPECT_GT(off_unit, count / 100);
+  EXPECT_EQ(off_signed, 0);
 }
 
 // --- 16-bit quantization --------------------------------------------------------
@@ -260,7 +365,9 @@ std::vector<glm::dvec4> random_moment_vectors(int count, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   std::vector<glm::dvec4> result;
-  for (double z : {0.0, 1e-3, 0.25, 0.5, 0.75, 0.999, 1.0}) result.push_back(moments_of(z));
+  for (double z : {0.0, 1e-3, 0.25, 0.5, 0.75, 0.999, 1.0}) {
+    result.push_back(msm_moments_of_depth(z));
+  }
   for (int trial = 0; trial < count; ++trial) {
     const int n = 1 + trial % 4;
     std::vector<double> depths(n), weights(n);
@@ -271,7 +378,7 @@ std::vector<glm::dvec4> random_moment_vectors(int count, unsigned seed) {
       total += weights[i];
     }
     for (double& w : weights) w /= total;
-    result.push_back(moments_of(depths, weights));
+    result.push_back(msm_moments_of(depths, weights));
   }
   return result;
 }
@@ -307,9 +414,9 @@ TEST(MsmQuantize, RoundTripsThroughSixteenBits) {
 // A point mass anywhere in [0, 1] reaches the ends of the UNORM range: the
 // transform uses the whole of it (R = 0 at z = 0.25 and 1, R = 1 at 0 and 0.75).
 TEST(MsmQuantize, PointMassesSpanTheUnitRange) {
-  const glm::vec4 at0 = msm_quantize(glm::vec4(moments_of(0.0)));
-  const glm::vec4 at1 = msm_quantize(glm::vec4(moments_of(1.0)));
-  const glm::vec4 mid = msm_quantize(glm::vec4(moments_of(0.5)));
+  const glm::vec4 at0 = msm_quantize(glm::vec4(msm_moments_of_depth(0.0)));
+  const glm::vec4 at1 = msm_quantize(glm::vec4(msm_moments_of_depth(1.0)));
+  const glm::vec4 mid = msm_quantize(glm::vec4(msm_moments_of_depth(0.5)));
   EXPECT_NEAR(at0.x, 1.0f, 1e-6f);
   EXPECT_NEAR(at1.x, 0.0f, 1e-6f);
   EXPECT_NEAR(mid.x, 0.5f, 1e-6f);
