@@ -1,7 +1,6 @@
 #include "shadow/cube_views.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -94,26 +93,32 @@ float guard_band_texels(const ShadowSettings& settings, int map_size) {
 }
 
 bool radial_depth_range(const glm::vec3& center, std::span<const Vertex> vertices,
-                        std::span<const std::uint32_t> indices, float& zmin, float& zmax,
-                        std::span<const HalfSpace> inside) {
+                        std::span<const std::uint32_t> indices, float& zmin, float& zmax) {
   bool any = false;
-  for_each_clipped_triangle(vertices, indices, inside, [&](const std::vector<glm::vec3>& polygon) {
-    // A convex polygon as a fan of triangles.
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
-      const glm::vec3 nearest =
-          closest_point_on_triangle(center, polygon[0], polygon[k], polygon[k + 1]);
-      zmin = std::min(zmin, glm::length(nearest - center));
-    }
-    for (const glm::vec3& v : polygon) zmax = std::max(zmax, glm::length(v - center));
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const glm::vec3& a = vertices[indices[t]].position;
+    const glm::vec3& b = vertices[indices[t + 1]].position;
+    const glm::vec3& c = vertices[indices[t + 2]].position;
+    zmin = std::min(zmin, glm::length(closest_point_on_triangle(center, a, b, c) - center));
+    for (const glm::vec3* v : {&a, &b, &c}) zmax = std::max(zmax, glm::length(*v - center));
     any = true;
-  });
+  }
   return any;
 }
 
 std::vector<LightView> fit_cube_views(const Light& light, std::span<const Vertex> vertices,
                                       std::span<const std::uint32_t> indices, int map_size,
                                       float guard_texels) {
+  float zmin = 1e30f, zmax = 0.0f, z0 = 0.0f, z1 = 0.0f;
+  const bool found = radial_depth_range(light.position, vertices, indices, zmin, zmax);
+  padded_depth_range(found, zmin, zmax, z0, z1);
   const float t = guard_band_half_width(map_size, guard_texels);
+  // Clip planes: a point at distance z0 inside the face's frustum has axial
+  // depth at least z0 / sqrt(1 + 2 t^2) (at the frustum's corners), and
+  // axial depth never exceeds the distance.
+  const float near_plane = std::max(0.99f * z0 / std::sqrt(1.0f + 2.0f * t * t), z1 * 1e-4f);
+  const float far_plane = 1.01f * z1;
+  const glm::mat4 projection = glm::perspective(2.0f * std::atan(t), 1.0f, near_plane, far_plane);
   std::vector<LightView> views;
   for (int face = 0; face < kCubeFaces; ++face) {
     LightView lv;
@@ -121,24 +126,10 @@ std::vector<LightView> fit_cube_views(const Light& light, std::span<const Vertex
     lv.radial = true;
     lv.view =
         glm::lookAt(light.position, light.position + cube_face_axis(face), cube_face_up(face));
-    // The face's frustum: |x|, |y| <= t * depth, depth = -z in view space.
-    const glm::vec4 x(lv.view[0][0], lv.view[1][0], lv.view[2][0], lv.view[3][0]);
-    const glm::vec4 y(lv.view[0][1], lv.view[1][1], lv.view[2][1], lv.view[3][1]);
-    const glm::vec4 depth = -glm::vec4(lv.view[0][2], lv.view[1][2], lv.view[2][2], lv.view[3][2]);
-    const std::array<HalfSpace, 4> frustum = {
-        coordinate_at_least(t * depth - x, 0.0f), coordinate_at_least(t * depth + x, 0.0f),
-        coordinate_at_least(t * depth - y, 0.0f), coordinate_at_least(t * depth + y, 0.0f)};
-    float zmin = 1e30f, zmax = 0.0f;
-    const bool found =
-        radial_depth_range(light.position, vertices, indices, zmin, zmax, frustum);
-    padded_depth_range(found, zmin, zmax, lv.z0, lv.z1);
-    // Clip planes: a point at distance z0 inside the face's frustum has
-    // axial depth at least z0 / sqrt(1 + 2 t^2) (at the frustum's corners),
-    // and axial depth never exceeds the distance.
-    const float near_plane =
-        std::max(0.99f * lv.z0 / std::sqrt(1.0f + 2.0f * t * t), lv.z1 * 1e-4f);
-    lv.projection = glm::perspective(2.0f * std::atan(t), 1.0f, near_plane, 1.01f * lv.z1);
-    lv.view_projection = lv.projection * lv.view;
+    lv.projection = projection;
+    lv.view_projection = projection * lv.view;
+    lv.z0 = z0;
+    lv.z1 = z1;
     lv.texel_world = 2.0f * t / static_cast<float>(map_size);
     views.push_back(lv);
   }

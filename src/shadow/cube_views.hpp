@@ -19,7 +19,6 @@
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 #include "shadow/light_view.hpp"
-#include "shadow/polygon_clip.hpp"
 
 namespace penumbra {
 
@@ -46,18 +45,14 @@ float guard_band_fov(int map_size, float guard_texels);
 // texels (a quarter of the face's resolution spent on the band).
 float guard_band_texels(const ShadowSettings& settings, int map_size);
 
-// Nearest and farthest distance from `center` to the parts of the
-// triangles inside the half-spaces (all of them when none are given; the
+// Nearest and farthest distance from `center` to the triangles (the
 // nearest point may lie inside a triangle, the farthest is a vertex).
-// False if no part is inside.
+// False without triangles.
 bool radial_depth_range(const glm::vec3& center, std::span<const Vertex> vertices,
-                        std::span<const std::uint32_t> indices, float& zmin, float& zmax,
-                        std::span<const HalfSpace> inside = {});
+                        std::span<const std::uint32_t> indices, float& zmin, float& zmax);
 
-// The six face views of a point light at `light.position`, each with the
-// radial depth range of the geometry inside its own frustum (guard band
-// included), so a face looking at a distant wall does not cost the
-// precision of a face looking at the nearby floor.
+// The six face views of a point light at `light.position`, radial depth
+// range fitted to the scene and shared by all faces.
 std::vector<LightView> fit_cube_views(const Light& light, std::span<const Vertex> vertices,
                                       std::span<const std::uint32_t> indices, int map_size,
                                       float guard_texels);
