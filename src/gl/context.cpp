@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -78,6 +79,10 @@ std::string try_display(EGLDisplay display, bool debug, Attempt& out) {
 }  // namespace
 
 std::unique_ptr<Context> Context::create_headless(const ContextOptions& options) {
+  // Mesa's libEGL prints warnings of its own (a device it cannot open, a
+  // driver it cannot load) before a platform that works is found: only on
+  // request. A value the user set is kept.
+  if (!options.verbose) setenv("EGL_LOG_LEVEL", "fatal", 0);
   std::unique_ptr<Context> ctx(new Context());
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   std::string tried;

@@ -431,10 +431,19 @@ Model deserialize(const std::string& path, const std::string& bytes) {
 // How long the reader may take: far longer than a sound file needs (a
 // million-triangle OBJ, 50 MB, reads in under 2 s), short enough that a
 // reader caught in a loop is stopped.
-std::chrono::milliseconds read_time_limit(const std::string& path) {
-  std::error_code ec;
-  const auto megabytes = static_cast<double>(fs::file_size(path, ec)) / (1 << 20);
+std::chrono::milliseconds read_time_limit(std::uintmax_t file_size) {
+  const auto megabytes = static_cast<double>(file_size) / (1 << 20);
   return std::chrono::milliseconds(10'000 + static_cast<long long>(2'000.0 * megabytes));
+}
+
+// How much address space the reader may take: kReaderMemoryFloor, plus
+// kReaderMemoryPerFileByte per byte of the file. A sound file needs far
+// less (a million-triangle OBJ, 50 MB, peaks near 1 GB); a hostile one
+// (a 309-byte OFF file whose header promises billions of vertices) is
+// stopped at the floor instead of taking the machine's memory.
+std::size_t read_memory_limit(std::uintmax_t file_size) {
+  const std::uintmax_t limit = kReaderMemoryFloor + kReaderMemoryPerFileByte * file_size;
+  return static_cast<std::size_t>(std::min<std::uintmax_t>(limit, std::uintmax_t{1} << 46));
 }
 
 }  // namespace
@@ -446,9 +455,12 @@ std::chrono::milliseconds read_time_limit(const std::string& path) {
 Model load_model(const std::string& path) {
   check_readable(path);
   check_ply_header(path);
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
   try {
     return deserialize(path, run_in_child_process([&] { return serialize(read_model(path)); },
-                                                  read_time_limit(path)));
+                                                  {.time = read_time_limit(ec ? 0 : size),
+                                                   .memory_bytes = read_memory_limit(ec ? 0 : size)}));
   } catch (const ChildProcessError& e) {
     if (e.kind() == ChildProcessError::Kind::Threw) throw RuntimeError(e.what());
     fail(path, std::string("the model reader ") + e.what() + " on this file");
