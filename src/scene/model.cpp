@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <type_traits>
 
@@ -63,6 +64,14 @@ std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
   while (!text.empty() && (text.back() == ' ' || text.back() == '\r')) text.pop_back();
   return text;
+}
+
+// Assimp catches std::bad_alloc and reports it as its error text; it is
+// rethrown, so the reader reports the memory limit.
+[[noreturn]] void fail_import(const std::string& path, const Assimp::Importer& importer) {
+  const std::string error = one_line(importer.GetErrorString());
+  if (error.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
+  fail(path, "cannot read the model: " + error);
 }
 
 // Errors assimp would report vaguely ("no suitable reader") or not at all.
@@ -266,11 +275,11 @@ Model read_model(const std::string& path) {
   // Read, check what the reader gave, then post-process (and check again
   // while copying below).
   const aiScene* scene = importer.ReadFile(path, 0);
-  if (scene == nullptr) fail(path, "cannot read the model: " + one_line(importer.GetErrorString()));
+  if (scene == nullptr) fail_import(path, importer);
   warnings.check(path);
   check_raw(path, *scene);
   scene = importer.ApplyPostProcessing(kPostProcess);
-  if (scene == nullptr) fail(path, "cannot read the model: " + one_line(importer.GetErrorString()));
+  if (scene == nullptr) fail_import(path, importer);
   warnings.check(path);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mNumMeshes == 0) {
     fail(path, "the file holds no triangles");
@@ -463,6 +472,8 @@ Model load_model(const std::string& path) {
                                                    .memory_bytes = read_memory_limit(ec ? 0 : size)}));
   } catch (const ChildProcessError& e) {
     if (e.kind() == ChildProcessError::Kind::Threw) throw RuntimeError(e.what());
+    // A file that needs more than the limit is hostile or broken: no
+    // sound model of its size needs that much.
     fail(path, std::string("the model reader ") + e.what() + " on this file");
   }
 }
