@@ -33,7 +33,10 @@ struct Attempt {
 std::string try_display(EGLDisplay display, bool debug, Attempt& out) {
   if (display == EGL_NO_DISPLAY) return "no display";
   EGLint major = 0, minor = 0;
-  if (!eglInitialize(display, &major, &minor)) return "eglInitialize failed";
+  if (!eglInitialize(display, &major, &minor)) {
+    return eglGetError() == EGL_BAD_ALLOC ? "eglInitialize failed: out of memory"
+                                          : "eglInitialize failed";
+  }
   auto fail = [&](const std::string& why) {
     eglTerminate(display);
     return why;
@@ -118,9 +121,13 @@ std::unique_ptr<Context> Context::create_headless(const ContextOptions& options)
   }
   if (!ok) {
     tried.resize(tried.size() - 2);
-    throw RuntimeError(
-        "cannot create a headless OpenGL 4.5 core context (" + tried +
-        "); install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU driver with EGL");
+    // Advice on what to install only where something is missing, not
+    // where a present driver failed (out of memory under a ulimit).
+    const bool missing = tried.find("eglInitialize failed") == std::string::npos;
+    throw RuntimeError("cannot create a headless OpenGL 4.5 core context (" + tried + ")" +
+                       (missing ? "; install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU "
+                                  "driver with EGL"
+                                : ""));
   }
   ctx->display_ = attempt.display;
   ctx->context_ = attempt.context;

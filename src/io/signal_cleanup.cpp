@@ -3,6 +3,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -24,6 +25,8 @@ struct Slot {
 };
 constexpr int kSlots = 8;
 Slot slots[kSlots];
+// Read once at start: whether a crash may come from an address-space limit.
+bool address_space_limited = false;
 
 // Removes the files of a flat folder (what the commands write), then the
 // folder: open, getdents64, unlinkat and rmdir are all system calls.
@@ -50,7 +53,7 @@ void remove_folder(const char* path) {
   ::rmdir(path);
 }
 
-void on_signal(int signal) {
+void remove_registered() {
   for (Slot& slot : slots) {
     if (!slot.ready.load()) continue;
     if (slot.folder) {
@@ -59,7 +62,32 @@ void on_signal(int signal) {
       ::unlink(slot.path);
     }
   }
+}
+
+void on_signal(int signal) {
+  remove_registered();
   // End by the same signal, as if it had not been caught.
+  ::signal(signal, SIG_DFL);
+  ::raise(signal);
+}
+
+void write_text(const char* text) {
+  ssize_t ignored = ::write(2, text, std::strlen(text));
+  (void)ignored;
+}
+
+// A crash (in a driver under memory pressure: Mesa dereferences a failed
+// allocation) still leaves no temporary output, and says what happened in
+// one line; the signal then ends the program as it would have (a core dump
+// where enabled).
+void on_crash(int signal) {
+  remove_registered();
+  write_text("penumbra: error: crashed (");
+  write_text(sigdescr_np(signal) != nullptr ? sigdescr_np(signal) : "signal");
+  // Mesa's shader compiler, for one, crashes where an allocation fails.
+  write_text(address_space_limited
+                 ? "); the address space is limited (ulimit -v): too little for the GPU driver?\n"
+                 : ")\n");
   ::signal(signal, SIG_DFL);
   ::raise(signal);
 }
@@ -76,6 +104,14 @@ void install_signal_cleanup() {
   action.sa_flags = SA_RESETHAND;
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+
+  rlimit limit{};
+  address_space_limited = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+  struct sigaction crash {};
+  crash.sa_handler = &on_crash;
+  sigemptyset(&crash.sa_mask);
+  crash.sa_flags = SA_RESETHAND | SA_NODEFER;
+  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL}) sigaction(signal, &crash, nullptr);
 }
 
 RemoveOnSignal::RemoveOnSignal(const std::string& path, bool folder) {

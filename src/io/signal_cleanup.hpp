@@ -9,6 +9,8 @@ namespace penumbra {
 
 // Installs the SIGINT and SIGTERM handlers: they remove the registered
 // paths, then end the program by the same signal (so the parent sees it).
+// A crash (SIGSEGV, SIGBUS, SIGFPE, SIGILL) removes them too, after one
+// error line.
 void install_signal_cleanup();
 
 // Registers `path` (a file, or a folder of files) for removal while this

@@ -98,6 +98,14 @@ TEST(Hostile, OutOfGpuMemoryIsOneLine) {
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_TRUE(one_error_line(r.err, "out of")) << r.err;
   EXPECT_FALSE(fs::exists(out));
+  // The viewer too, in a window on its own X server where there is one.
+  if (shell("command -v xvfb-run").status != 0) {
+    GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb): view not tried";
+  }
+  const Result view = shell("timeout 120 xvfb-run -a sh -c 'ulimit -v 3000000; exec PENUMBRA view "
+                            "--frames 3 --width 16384 --height 16384 --shadow-map-size 256'");
+  EXPECT_EQ(view.status, 1) << view.err;
+  EXPECT_TRUE(one_error_line(view.err, "out of")) << view.err;
 }
 
 // 5. The model reader dies with penumbra (an OBJ whose material library is
