@@ -42,9 +42,12 @@ void confine_child(pid_t parent, std::size_t memory_limit) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   // The parent may have died before prctl: then nobody waits for the answer.
   if (::getppid() != parent) _exit(1);
-  // The parent's handlers (its clean-up on SIGINT, SIGTERM) are not ours.
-  ::signal(SIGINT, SIG_DFL);
-  ::signal(SIGTERM, SIG_DFL);
+  // The parent's handlers (its clean-up of outputs on SIGINT and SIGTERM,
+  // its one-line report of a crash) are not the child's: a crash here is
+  // the parent's to report.
+  for (const int signal : {SIGINT, SIGTERM, SIGSEGV, SIGBUS, SIGFPE, SIGILL}) {
+    ::signal(signal, SIG_DFL);
+  }
   if (memory_limit > 0) {
     const rlimit limit{memory_limit, memory_limit};
     ::setrlimit(RLIMIT_AS, &limit);
@@ -149,9 +152,9 @@ std::string run_in_child_process(const std::function<std::string()>& work,
                             "did not finish within " + limit.str() + " s");
   }
   if (answer.size() == 1 && answer.front() == kOutOfMemory) {
-    throw ChildProcessError(ChildProcessError::Kind::OutOfMemory,
-                            "ran out of memory (its limit is " +
-                                std::to_string(limits.memory_bytes >> 20) + " MiB)");
+    throw ChildProcessError(
+        ChildProcessError::Kind::OutOfMemory,
+        "ran out of memory (its limit is " + std::to_string(limits.memory_bytes >> 20) + " MiB)");
   }
   if (WIFSIGNALED(status)) {
     const int signal = WTERMSIG(status);

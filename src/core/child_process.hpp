@@ -12,9 +12,9 @@ namespace penumbra {
 class ChildProcessError : public std::runtime_error {
  public:
   enum class Kind {
-    Threw,     // the work threw: what() is its message
-    Crashed,   // the child died (a signal, or it exited without an answer)
-    TimedOut,  // it ran past the time limit and was killed
+    Threw,        // the work threw: what() is its message
+    Crashed,      // the child died (a signal, or it exited without an answer)
+    TimedOut,     // it ran past the time limit and was killed
     OutOfMemory,  // an allocation failed under the memory limit
   };
   ChildProcessError(Kind kind, const std::string& what) : std::runtime_error(what), kind_(kind) {}

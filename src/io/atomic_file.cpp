@@ -102,8 +102,7 @@ std::string temporary_name(const std::string& path) {
   const std::string suffix = ".tmp" + std::to_string(getpid());
   if (1 + stem.size() + suffix.size() > kNameMax) {
     char hash[24];
-    std::snprintf(hash, sizeof hash, "~%016llx",
-                  static_cast<unsigned long long>(name_hash(stem)));
+    std::snprintf(hash, sizeof hash, "~%016llx", static_cast<unsigned long long>(name_hash(stem)));
     stem.resize(kNameMax - 1 - suffix.size() - std::strlen(hash));
     stem += hash;
   }

@@ -7,8 +7,8 @@
 #include <cerrno>
 #include <cstring>
 
-#include "core/error.hpp"
 #include "core/display_name.hpp"
+#include "core/error.hpp"
 
 namespace penumbra {
 

@@ -56,8 +56,9 @@ void StagedFolder::publish() {
     for (const fs::directory_entry& entry : fs::directory_iterator(staging_)) {
       fs::rename(entry.path(), target / entry.path().filename(), ec);
       if (ec) {
-        throw RuntimeError("cannot write " + display_name((target / entry.path().filename()).string()) +
-                           ": " + ec.message());
+        throw RuntimeError("cannot write " +
+                           display_name((target / entry.path().filename()).string()) + ": " +
+                           ec.message());
       }
     }
     fs::remove(staging_, ec);

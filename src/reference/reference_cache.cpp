@@ -167,7 +167,8 @@ std::optional<Image> load_cached_reference(const std::string& dir, std::uint64_t
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) return std::nullopt;  // not cached
   auto warn = [&](const std::string& why) {
-    std::fprintf(stderr, "penumbra: warning: ignoring the cached reference %s: %s; tracing it anew\n",
+    std::fprintf(stderr,
+                 "penumbra: warning: ignoring the cached reference %s: %s; tracing it anew\n",
                  display_name(path).c_str(), why.c_str());
   };
   // Something else in its place (a folder, a FIFO): storing the new

@@ -253,12 +253,12 @@ TriangleMesh build_scene_mesh(const Scene& scene) {
     // no more memory than the budget to refuse.
     if (mesh_bytes(mesh) > budget ||
         mesh.vertices.size() > std::numeric_limits<std::uint32_t>::max()) {
-      throw UsageError("scene " + display_name(scene.name) + ": its geometry exceeds the budget of " +
-                       std::to_string(budget >> 20) + " MiB at object " + std::to_string(i) +
-                       " of " + std::to_string(scene.shapes.size()) + " (" +
-                       std::to_string(mesh.indices.size() / 3) + " triangles, " +
-                       std::to_string(mesh_bytes(mesh) >> 20) + " MiB so far; " +
-                       kGeometryBudgetVariable + " sets the budget in MiB)");
+      throw UsageError(
+          "scene " + display_name(scene.name) + ": its geometry exceeds the budget of " +
+          std::to_string(budget >> 20) + " MiB at object " + std::to_string(i) + " of " +
+          std::to_string(scene.shapes.size()) + " (" + std::to_string(mesh.indices.size() / 3) +
+          " triangles, " + std::to_string(mesh_bytes(mesh) >> 20) + " MiB so far; " +
+          kGeometryBudgetVariable + " sets the budget in MiB)");
     }
   }
   return mesh;

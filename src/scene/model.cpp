@@ -467,9 +467,10 @@ Model load_model(const std::string& path) {
   std::error_code ec;
   const std::uintmax_t size = fs::file_size(path, ec);
   try {
-    return deserialize(path, run_in_child_process([&] { return serialize(read_model(path)); },
-                                                  {.time = read_time_limit(ec ? 0 : size),
-                                                   .memory_bytes = read_memory_limit(ec ? 0 : size)}));
+    return deserialize(path,
+                       run_in_child_process([&] { return serialize(read_model(path)); },
+                                            {.time = read_time_limit(ec ? 0 : size),
+                                             .memory_bytes = read_memory_limit(ec ? 0 : size)}));
   } catch (const ChildProcessError& e) {
     if (e.kind() == ChildProcessError::Kind::Threw) throw RuntimeError(e.what());
     // A file that needs more than the limit is hostile or broken: no

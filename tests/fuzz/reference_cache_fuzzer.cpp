@@ -34,8 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Inputs ending in an odd byte get the checksum right, so that the
     // checks after it are reached too.
     if (data[size - 1] & 1) {
-      const std::uint64_t sum =
-          penumbra::cache_checksum(std::string_view(bytes).substr(kHeader));
+      const std::uint64_t sum = penumbra::cache_checksum(std::string_view(bytes).substr(kHeader));
       std::memcpy(bytes.data() + 32, &sum, sizeof sum);
     }
   }
@@ -55,11 +54,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::filesystem::create_directories(d);
       return d;
     }();
+    const std::string path = penumbra::cached_reference_path(dir, key);
     {
-      std::ofstream out(penumbra::cached_reference_path(dir, key), std::ios::binary);
+      std::ofstream out(path, std::ios::binary);
       out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     }
     penumbra::load_cached_reference(dir, key, width, height);
+    std::filesystem::remove(path);
   }
   return 0;
 }

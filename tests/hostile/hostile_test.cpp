@@ -92,9 +92,10 @@ TEST(Hostile, CacheFifoDoesNotBlock) {
 // 4. A view too large for memory ends in one error line, promptly.
 TEST(Hostile, OutOfGpuMemoryIsOneLine) {
   const std::string out = fresh_dir("huge") + "/huge.png";
-  const Result r = shell("ulimit -v 3000000; timeout 120 PENUMBRA render --width 16384 "
-                         "--height 16384 --shadow-map-size 256 -o " +
-                         out);
+  const Result r = shell(
+      "ulimit -v 3000000; timeout 120 PENUMBRA render --width 16384 "
+      "--height 16384 --shadow-map-size 256 -o " +
+      out);
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_TRUE(one_error_line(r.err, "out of")) << r.err;
   EXPECT_FALSE(fs::exists(out));
@@ -102,8 +103,9 @@ TEST(Hostile, OutOfGpuMemoryIsOneLine) {
   if (shell("command -v xvfb-run").status != 0) {
     GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb): view not tried";
   }
-  const Result view = shell("timeout 120 xvfb-run -a sh -c 'ulimit -v 3000000; exec PENUMBRA view "
-                            "--frames 3 --width 16384 --height 16384 --shadow-map-size 256'");
+  const Result view = shell(
+      "timeout 120 xvfb-run -a sh -c 'ulimit -v 3000000; exec PENUMBRA view "
+      "--frames 3 --width 16384 --height 16384 --shadow-map-size 256'");
   EXPECT_EQ(view.status, 1) << view.err;
   EXPECT_TRUE(one_error_line(view.err, "out of")) << view.err;
 }
@@ -164,8 +166,8 @@ TEST(Hostile, FailedWritesPublishNothing) {
   const std::string dir = fresh_dir("full");
   // ulimit -f 1: 512 bytes, enough for the error line on stderr (a file
   // here), less than any of the images.
-  const Result r = shell("ulimit -f 1; timeout 60 PENUMBRA render" + kSmall + " -o " + dir +
-                         "/r.png");
+  const Result r =
+      shell("ulimit -f 1; timeout 60 PENUMBRA render" + kSmall + " -o " + dir + "/r.png");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_TRUE(one_error_line(r.err, "File too large")) << r.err;
   const Result c = shell(
@@ -184,8 +186,8 @@ TEST(Hostile, NonRegularOutputsAreWrittenInPlace) {
   fs::create_symlink("/dev/null", dir + "/null.png");
   fs::create_symlink(dir + "/target.json", dir + "/link.json");
   write_text(dir + "/target.json", "old");
-  const std::string bench = "timeout 60 PENUMBRA bench --frames 1 --warmup 0 --technique hard" +
-                            kSmall + " --json ";
+  const std::string bench =
+      "timeout 60 PENUMBRA bench --frames 1 --warmup 0 --technique hard" + kSmall + " --json ";
   ASSERT_EQ(shell("timeout 60 PENUMBRA render" + kSmall + " -o " + dir + "/null.png").status, 0);
   EXPECT_TRUE(fs::is_symlink(dir + "/null.png"));
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
@@ -236,8 +238,8 @@ TEST(Hostile, EmptyValuesAreUsageErrors) {
   const std::string dir = fresh_dir("empty");
   for (const std::string args :
        {"render --model '' -o x.png", "render --light '' -o x.png",
-        "render --camera-position '' -o x.png", "render --camera-fov '' -o x.png",
-        "render -o ''", "compare -o ''", "compare --json ''", "report -o ''"}) {
+        "render --camera-position '' -o x.png", "render --camera-fov '' -o x.png", "render -o ''",
+        "compare -o ''", "compare --json ''", "report -o ''"}) {
     const Result r = shell("cd " + dir + " && timeout 60 PENUMBRA " + args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_TRUE(one_error_line(r.err, "empty")) << args << "\n" << r.err;
@@ -248,11 +250,10 @@ TEST(Hostile, EmptyValuesAreUsageErrors) {
 // 13. Degenerate cameras and light directions are refused as a scene file
 // refuses them; --light-index must name a light, whatever the view.
 TEST(Hostile, DegenerateCamerasAndLightsAreUsageErrors) {
-  for (const std::string args :
-       {"--camera-position 0,10,0 --camera-target 0,0,0",
-        "--camera-position 1,2,3 --camera-target 1,2,3",
-        "--camera-position 0,0,0 --camera-target 1e-30,0,1e-30",
-        "--light-direction 0,-1e-25,0", "--light-index 3"}) {
+  for (const std::string args : {"--camera-position 0,10,0 --camera-target 0,0,0",
+                                 "--camera-position 1,2,3 --camera-target 1,2,3",
+                                 "--camera-position 0,0,0 --camera-target 1e-30,0,1e-30",
+                                 "--light-direction 0,-1e-25,0", "--light-index 3"}) {
     const Result r = shell("timeout 60 PENUMBRA render " + args + " -o x.png");
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_TRUE(one_error_line(r.err, args.substr(0, args.find(' ')))) << args << "\n" << r.err;
@@ -276,10 +277,9 @@ TEST(Hostile, StandardOutputErrorsAreReported) {
   int fds[2];
   ASSERT_EQ(pipe(fds), 0);
   close(fds[0]);
-  const pid_t pid =
-      spawn({"bench", "--frames", "1", "--warmup", "0", "--technique", "hard", "--width", "32",
-             "--height", "24", "--shadow-map-size", "256"},
-            fds[1]);
+  const pid_t pid = spawn({"bench", "--frames", "1", "--warmup", "0", "--technique", "hard",
+                           "--width", "32", "--height", "24", "--shadow-map-size", "256"},
+                          fds[1]);
   close(fds[1]);
   int status = 0;
   waitpid(pid, &status, 0);
@@ -334,8 +334,9 @@ TEST(Hostile, MessagesAreOneCleanLine) {
   EXPECT_NE(folder.err.find("it is a folder"), std::string::npos) << folder.err;
   EXPECT_EQ(folder.err.find("Success"), std::string::npos) << folder.err;
 
-  const Result memory = shell("ulimit -v 3000000; timeout 120 PENUMBRA render --width 16384 "
-                              "--height 16384 --shadow-map-size 256 -o x.png");
+  const Result memory = shell(
+      "ulimit -v 3000000; timeout 120 PENUMBRA render --width 16384 "
+      "--height 16384 --shadow-map-size 256 -o x.png");
   EXPECT_EQ(memory.err.find("libEGL"), std::string::npos) << memory.err;
   EXPECT_EQ(memory.err.find("GL error"), std::string::npos) << memory.err;
 }
