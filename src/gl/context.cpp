@@ -1,6 +1,7 @@
 #include "gl/context.hpp"
 
 #include <epoxy/gl.h>
+#include <sys/resource.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -124,10 +125,15 @@ std::unique_ptr<Context> Context::create_headless(const ContextOptions& options)
     // Advice on what to install only where something is missing, not
     // where a present driver failed (out of memory under a ulimit).
     const bool missing = tried.find("eglInitialize failed") == std::string::npos;
-    throw RuntimeError("cannot create a headless OpenGL 4.5 core context (" + tried + ")" +
-                       (missing ? "; install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU "
-                                  "driver with EGL"
-                                : ""));
+    rlimit limit{};
+    const bool limited = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+    std::string advice;
+    if (missing) {
+      advice = "; install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU driver with EGL";
+    } else if (limited) {
+      advice = "; the address space is limited (ulimit -v): too little for the driver?";
+    }
+    throw RuntimeError("cannot create a headless OpenGL 4.5 core context (" + tried + ")" + advice);
   }
   ctx->display_ = attempt.display;
   ctx->context_ = attempt.context;

@@ -344,6 +344,10 @@ TEST(Hostile, MessagesAreOneCleanLine) {
       "--height 16384 --shadow-map-size 256 -o x.png");
   EXPECT_EQ(memory.err.find("libEGL"), std::string::npos) << memory.err;
   EXPECT_EQ(memory.err.find("GL error"), std::string::npos) << memory.err;
+  // Too little memory for the driver to load: one line, no loader chatter.
+  const Result egl = shell("ulimit -v 150000; timeout 60 PENUMBRA render" + kSmall + " -o x.png");
+  EXPECT_EQ(egl.status, 1);
+  EXPECT_TRUE(one_error_line(egl.err, "ulimit -v")) << egl.err;
 }
 
 }  // namespace
