@@ -59,7 +59,9 @@ std::uint64_t name_hash(std::string_view text) {
 // Writes into an existing file that cannot be replaced (a device, a FIFO):
 // opened for writing as it is.
 void write_in_place(const std::string& path, std::string_view bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+  // O_APPEND: a redirected regular file behind /dev/fd/N keeps what was
+  // written to it before.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NOCTTY);
   if (fd < 0) fail_errno(path, errno);
   const int error = write_all(fd, bytes);
   const int close_error = ::close(fd) != 0 ? errno : 0;
@@ -123,8 +125,14 @@ void write_file_atomically(const std::string& path, std::string_view bytes,
     write_and_rename(path, bytes, path);
     return;
   }
-  if (path == "-") {
+  if (path == "-" || path == "/dev/stdout") {
     write_standard_output(bytes);
+    return;
+  }
+  // /dev/stderr, /dev/fd/N, /proc/self/fd/N: links to an open file, which
+  // may be regular (a redirection); written in place, never replaced.
+  if (path.rfind("/dev/", 0) == 0 || path.rfind("/proc/", 0) == 0) {
+    write_in_place(path, bytes);
     return;
   }
   struct stat st {};

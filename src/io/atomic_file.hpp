@@ -8,9 +8,11 @@
 // - nothing, or a regular file: the atomic write above;
 // - a symbolic link: the file it points to is written (atomically, if a
 //   regular file), the link itself is kept;
-// - a device, FIFO or socket (/dev/null, /dev/stdout, a named pipe):
-//   written in place, as it cannot be replaced;
-// - "-": standard output.
+// - a device, FIFO or socket (/dev/null, a named pipe), or any path under
+//   /dev or /proc (/dev/fd/2 may be a redirected regular file): written in
+//   place, as it cannot be replaced;
+// - "-" or /dev/stdout: standard output (through stdio, after what the
+//   program printed there).
 #include <string>
 #include <string_view>
 

@@ -45,6 +45,16 @@ ImageFormat image_format_for(const std::string& path) {
 }
 
 void check_output_path(const std::string& path) {
+  if (path == "-") return;  // standard output
+  std::error_code status_ec;
+  const fs::file_status status = fs::status(path, status_ec);
+  if (fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)) {
+    // A device or FIFO, written in place: its folder need not be writable.
+    if (access(path.c_str(), W_OK) != 0) {
+      throw UsageError("output " + display_name(path) + " is not writable");
+    }
+    return;
+  }
   fs::path parent = fs::path(path).parent_path();
   if (parent.empty()) parent = ".";
   std::error_code ec;
