@@ -122,16 +122,17 @@ std::unique_ptr<Context> Context::create_headless(const ContextOptions& options)
   }
   if (!ok) {
     tried.resize(tried.size() - 2);
-    // Advice on what to install only where something is missing, not
-    // where a present driver failed (out of memory under a ulimit).
+    // Under an address-space limit, drivers fail to load or initialize
+    // (a dlopen or an allocation fails): that limit is the likely cause.
+    // Otherwise advice on what to install, where something is missing.
     const bool missing = tried.find("eglInitialize failed") == std::string::npos;
     rlimit limit{};
     const bool limited = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
     std::string advice;
-    if (missing) {
-      advice = "; install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU driver with EGL";
-    } else if (limited) {
+    if (limited) {
       advice = "; the address space is limited (ulimit -v): too little for the driver?";
+    } else if (missing) {
+      advice = "; install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU driver with EGL";
     }
     throw RuntimeError("cannot create a headless OpenGL 4.5 core context (" + tried + ")" + advice);
   }
