@@ -103,7 +103,9 @@ void expect_image_or_one_line(const Result& r, const std::string& out) {
   EXPECT_TRUE(r.err.find("out of") != std::string::npos ||
               r.err.find("ulimit -v") != std::string::npos)
       << r.err;
-  if (!out.empty()) EXPECT_FALSE(fs::exists(out));
+  if (!out.empty()) {
+    EXPECT_FALSE(fs::exists(out));
+  }
 }
 
 TEST(Hostile, OutOfGpuMemoryIsOneLine) {
