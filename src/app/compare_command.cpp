@@ -230,8 +230,8 @@ std::vector<Item> plan_items(const CompareArgs& args) {
 }
 
 // Renders each item's shadow (and its filtered reference), measures them
-// against the references and writes the images into `output_dir` (none
-// if empty).
+// against the references and writes the images into `folder` (none if
+// null), naming their final paths in the items.
 void measure_items(Renderer& renderer, const CompareArgs& args, const Image& traced,
                    std::vector<Item>& items, const StagedFolder* folder) {
   auto write = [&](const Image& image, const std::string& name, Item* item, const char* role) {
