@@ -1,8 +1,9 @@
 #pragma once
 // A folder of outputs (`compare -o DIR`, `report -o DIR`) built where
-// nobody sees it half done: in a temporary sibling ".DIR.tmpPID", moved
-// into place only when complete. On failure (an exception, or SIGINT or
-// SIGTERM) the temporary folder is removed and DIR is as it was.
+// nobody sees it half done: in a temporary sibling ".DIR.tmpPID" (or, when
+// DIR exists, in "DIR/.staged.tmpPID"), moved into place only when
+// complete. On failure (an exception, or SIGINT or SIGTERM) the temporary
+// folder is removed and DIR is as it was.
 #include <memory>
 #include <string>
 
