@@ -334,7 +334,8 @@ TEST(Hostile, DamagedCacheEntryIsRetraced) {
 }
 
 // 16. Messages: names with control characters are printed escaped; a folder
-// in the cache's way gets a reason, not "Success"; no driver chatter.
+// in the cache's way gets a reason, not "Success"; no driver chatter (the
+// GL errors of a huge view are left out of its one line: test 4).
 TEST(Hostile, MessagesAreOneCleanLine) {
   const Result name =
       shell("timeout 20 PENUMBRA render --scene \"$(printf 'bad\\n\\033[31m.json')\" -o x.png");
@@ -354,11 +355,6 @@ TEST(Hostile, MessagesAreOneCleanLine) {
   EXPECT_NE(folder.err.find("it is a folder"), std::string::npos) << folder.err;
   EXPECT_EQ(folder.err.find("Success"), std::string::npos) << folder.err;
 
-  const Result memory = shell(
-      "ulimit -v 3000000; timeout 120 PENUMBRA render --width 16384 "
-      "--height 16384 --shadow-map-size 256 -o x.png");
-  EXPECT_EQ(memory.err.find("libEGL"), std::string::npos) << memory.err;
-  EXPECT_EQ(memory.err.find("GL error"), std::string::npos) << memory.err;
   // Too little memory for the driver to load: one line, no loader chatter.
   const Result egl = shell("ulimit -v 150000; timeout 60 PENUMBRA render" + kSmall + " -o x.png");
   EXPECT_EQ(egl.status, 1);
