@@ -140,6 +140,7 @@ int run_bench_command(BenchArgs& args) {
   validate(args.render);
   Scene scene = resolve_scene_source(args.scene, args.model);
   apply_light_choice(args.light, scene);
+  check_light_index(args.render.light_index, scene);
 
   auto context = gl::Context::create_headless();
   std::printf("penumbra bench: %s (%s, %s)\n", context->renderer().c_str(),

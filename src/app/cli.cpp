@@ -1,8 +1,13 @@
 #include "app/cli.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <functional>
 #include <memory>
+#include <new>
 
 #include "app/bench_command.hpp"
 #include "app/compare_command.hpp"
@@ -10,7 +15,9 @@
 #include "app/render_command.hpp"
 #include "app/report_command.hpp"
 #include "app/view_command.hpp"
+#include "core/display_name.hpp"
 #include "core/error.hpp"
+#include "io/signal_cleanup.hpp"
 
 namespace penumbra {
 
@@ -18,8 +25,14 @@ namespace {
 
 void print_error(const std::string& message) {
   // One line: later lines of a multi-line message (a shader log) are kept
-  // but indented under it.
-  std::string text = message;
+  // but indented under it. Other control characters (a terminal escape
+  // sequence in a file name) are printed escaped.
+  std::string text;
+  std::size_t start = 0;
+  for (std::size_t end; (end = message.find('\n', start)) != std::string::npos; start = end + 1) {
+    text += escape_control(message.substr(start, end - start)) + "\n";
+  }
+  text += escape_control(message.substr(start));
   for (std::size_t pos = 0; (pos = text.find('\n', pos)) != std::string::npos; pos += 3) {
     if (pos + 1 == text.size()) {
       text.erase(pos);
@@ -30,9 +43,58 @@ void print_error(const std::string& message) {
   std::fprintf(stderr, "penumbra: error: %s\n", text.c_str());
 }
 
+// An option given an empty value ("--model ''") is a usage error: every
+// option's empty value would otherwise read as "not given".
+void reject_empty_values(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->get_type_size() == 0) continue;  // a flag
+    for (const std::string& value : option->results()) {
+      if (value.empty()) throw UsageError(option->get_name() + ": the value is empty");
+    }
+  }
+}
+
+// Standard output is checked once the command is done: a full device or a
+// reader that went away is an error, not a silent loss.
+int check_standard_output(int status) {
+  errno = 0;
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    const int error = errno;
+    print_error(std::string("cannot write to standard output") +
+                (error != 0 ? std::string(": ") + std::strerror(error) : std::string()));
+    return status == 0 ? 1 : status;
+  }
+  return status;
+}
+
+// Runs the command; its errors become one line and the exit status.
+int run_guarded(const std::function<int()>& command) {
+  try {
+    return command();
+  } catch (const UsageError& e) {
+    print_error(e.what());
+    return 2;
+  } catch (const RuntimeError& e) {
+    print_error(e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    print_error("out of memory (a size, a scene or a model too large for this machine's memory)");
+    return 1;
+  } catch (const std::exception& e) {
+    print_error(std::string("internal error: ") + e.what());
+    return 1;
+  }
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+  // A closed pipe or a file-size limit is a write error to report, not a
+  // signal that ends the program silently.
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
+  install_signal_cleanup();
+
   CLI::App app{"penumbra: real-time shadow techniques, rendered headless and measured"};
   app.name("penumbra");
   app.require_subcommand(1);
@@ -78,23 +140,15 @@ int run_cli(int argc, char** argv) {
     return 2;
   }
 
-  try {
+  return check_standard_output(run_guarded([&] {
+    for (const CLI::App* command : app.get_subcommands()) reject_empty_values(*command);
     if (render->parsed()) return run_render_command(render_args);
     if (compare->parsed()) return run_compare_command(compare_args);
     if (bench->parsed()) return run_bench_command(bench_args);
     if (report->parsed()) return run_report_command(report_args);
     if (view->parsed()) return run_view_command(view_args);
-  } catch (const UsageError& e) {
-    print_error(e.what());
-    return 2;
-  } catch (const RuntimeError& e) {
-    print_error(e.what());
-    return 1;
-  } catch (const std::exception& e) {
-    print_error(std::string("internal error: ") + e.what());
-    return 1;
-  }
-  return 0;
+    return 0;
+  }));
 }
 
 }  // namespace penumbra

@@ -18,6 +18,7 @@
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/progress_bar.hpp"
+#include "io/staged_folder.hpp"
 #include "reference/error_image.hpp"
 #include "reference/reference_cache.hpp"
 #include "reference/shadow_metrics.hpp"
@@ -251,16 +252,14 @@ std::vector<Item> plan_items(const CompareArgs& args) {
 }
 
 // Renders each item's shadow (and its filtered reference), measures them
-// against the references and writes the images into `output_dir` (none
-// if empty).
+// against the references and writes the images into `folder` (none if
+// null), naming their final paths in the items.
 void measure_items(Renderer& renderer, const CompareArgs& args, const Image& traced,
-                   std::vector<Item>& items) {
-  const std::string& dir = args.output_dir;
+                   std::vector<Item>& items, const StagedFolder* folder) {
   auto write = [&](const Image& image, const std::string& name, Item* item, const char* role) {
-    if (dir.empty()) return;
-    const std::string path = (fs::path(dir) / (name + ".png")).string();
-    write_png(image, path, PngEncoding::Linear);
-    if (item != nullptr) item->images[role] = path;
+    if (folder == nullptr) return;
+    write_png(image, (fs::path(folder->path()) / (name + ".png")).string(), PngEncoding::Linear);
+    if (item != nullptr) item->images[role] = folder->final_path(name + ".png");
   };
   write(traced, "reference-traced", nullptr, "");
   RenderSettings view = args.render;
@@ -409,18 +408,16 @@ int run_compare_command(CompareArgs& args) {
   Renderer renderer(scene);
   const TracedReference reference =
       traced_reference(renderer, args.render, args.shadow, args.reference.samples, cache_dir);
-  if (!args.output_dir.empty()) {
-    std::error_code ec;
-    fs::create_directories(args.output_dir, ec);
-    if (ec) {
-      throw RuntimeError("cannot create folder '" + args.output_dir + "': " + ec.message());
-    }
-  }
-  measure_items(renderer, args, reference.image, items);
+  // The images go to a temporary folder, moved into place once all are
+  // written: a failure or an interrupt leaves no partial folder.
+  std::optional<StagedFolder> folder;
+  if (!args.output_dir.empty()) folder.emplace(args.output_dir);
+  measure_items(renderer, args, reference.image, items, folder ? &*folder : nullptr);
   if (context->error_count() > 0) {
     throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
                        " error(s); last: " + context->last_error());
   }
+  if (folder) folder->publish();
   print_report(args, scene, reference, items);
   if (!args.json.empty()) {
     write_file_atomically(args.json, json_report(args, scene, reference, items).dump(2) + "\n");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/display_name.hpp"
 #include "core/error.hpp"
 #include "scene/mesh.hpp"
 
@@ -85,6 +86,14 @@ void apply_light_choice(const std::string& choice, Scene& scene) {
                      "' has no light to start from");
   }
   scene.lights = {single_light(scene, *type)};
+}
+
+void check_light_index(int light_index, const Scene& scene) {
+  if (light_index >= static_cast<int>(scene.lights.size())) {
+    throw UsageError("--light-index " + std::to_string(light_index) + ": scene " +
+                     display_name(scene.name) + " has " + std::to_string(scene.lights.size()) +
+                     " light(s)");
+  }
 }
 
 }  // namespace penumbra

@@ -25,4 +25,8 @@ Light single_light(const Scene& scene, LightType type);
 // scene without lights.
 void apply_light_choice(const std::string& choice, Scene& scene);
 
+// Throws UsageError when --light-index names a light the scene (after
+// --light) does not have, whatever the view.
+void check_light_index(int light_index, const Scene& scene);
+
 }  // namespace penumbra

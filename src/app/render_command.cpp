@@ -35,6 +35,7 @@ int run_render_command(RenderArgs& args) {
   check_output_path(args.output);
   Scene scene = resolve_scene_source(args.scene, args.model);
   apply_light_choice(args.light, scene);
+  check_light_index(args.render.light_index, scene);
   apply_scene_options(args.scene_options, args.render.light_index, scene);
 
   auto context = gl::Context::create_headless({.debug = true, .verbose = args.verbose});

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "io/image.hpp"
+#include "io/staged_folder.hpp"
 #include "report/study.hpp"
 #include "scene/scene_file.hpp"
 
@@ -35,18 +36,23 @@ int run_report_command(const ReportArgs& args) {
   Scene scene = resolve_scene_source(args.scene, args.model);
   apply_light_choice(args.light, scene);
   auto context = gl::Context::create_headless();
+  // Built in a temporary folder, moved into place when the page is
+  // written: a failure or an interrupt leaves no partial report.
+  StagedFolder folder(args.output);
   const StudyResult result = write_study(scene,
                                          {.scene_argument = args.scene,
                                           .model_argument = args.model,
                                           .light_choice = args.light,
-                                          .output_dir = args.output,
+                                          .output_dir = folder.path(),
                                           .quick = args.quick},
                                          *context);
-  std::printf("%s\n", result.index_path.c_str());
+  folder.publish();
+  const std::string index_path = folder.final_path("index.html");
+  std::printf("%s\n", index_path.c_str());
   if (result.failed > 0) {
     std::fprintf(stderr,
                  "penumbra: error: %d of %d report items failed; the report says which: %s\n",
-                 result.failed, result.items, result.index_path.c_str());
+                 result.failed, result.items, index_path.c_str());
     return 1;
   }
   return 0;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "scene/scene_checks.hpp"
 
 namespace penumbra {
 
@@ -127,8 +128,18 @@ void apply_scene_options(const SceneOptions& options, int light_index, Scene& sc
     if (options.camera_scalars[i].empty()) continue;
     scene.camera.*(p.field) = parse_scalar(p.name, options.camera_scalars[i], p.min, p.max);
   }
-  if (camera_changed && scene.camera.position == scene.camera.target) {
-    throw UsageError("--camera-position and --camera-target are the same point");
+  if (camera_changed) {
+    switch (camera_defect(scene.camera)) {
+      case CameraDefect::TargetAtPosition:
+        throw UsageError("--camera-position and --camera-target are the same point");
+      case CameraDefect::UpAlongView:
+        throw UsageError(
+            "--camera-position and --camera-target: the view direction is parallel to the "
+            "camera's up vector " +
+            vector_text(scene.camera.up));
+      case CameraDefect::None:
+        break;
+    }
   }
   for (std::size_t i = 0; i < kLightVectorParams.size(); ++i) {
     const auto& p = kLightVectorParams[i];
@@ -136,8 +147,9 @@ void apply_scene_options(const SceneOptions& options, int light_index, Scene& sc
       std::string_view text = value;
       Light& light = target_light(p.name, text, light_index, p.scope, scene);
       const glm::vec3 v = parse_vector(p.name, text);
-      if (p.field == &Light::direction && v == glm::vec3(0.0f)) {
-        throw UsageError(flag(p.name) + ": a direction cannot be 0,0,0");
+      if (p.field == &Light::direction && !is_usable_direction(v)) {
+        throw UsageError(flag(p.name) + ": '" + std::string(text) +
+                         "' is too short to be a direction");
       }
       if (p.field == &Light::color && (v.x < 0.0f || v.y < 0.0f || v.z < 0.0f)) {
         throw UsageError(flag(p.name) + ": a colour cannot be negative (got '" + std::string(text) +

@@ -68,7 +68,7 @@ inline constexpr std::array<VectorParam<Light>, 3> kLightVectorParams{{
     {"light-position", "[I:]X,Y,Z: a spot or point light's position", &Light::position,
      LightScope::Positional},
     {"light-direction",
-     "[I:]X,Y,Z: the direction a spot or directional light shines in (any length but 0)",
+     "[I:]X,Y,Z: the direction a spot or directional light shines in (any length from 1e-6)",
      &Light::direction, LightScope::Directed},
     {"light-color", "[I:]R,G,B: a light's linear colour", &Light::color},
 }};

@@ -143,6 +143,7 @@ int run_view_command(ViewArgs& args) {
   }
   Scene loaded = resolve_scene_source(args.scene, args.model);
   apply_light_choice(args.light, loaded);
+  check_light_index(args.render.light_index, loaded);
   Scene start = loaded;
   apply_scene_options(args.scene_options, args.render.light_index, start);
 
@@ -223,6 +224,9 @@ int run_view_command(ViewArgs& args) {
       profiler.begin_frame();
       try {
         render_frame(renderer, frame, &profiler);
+        // An OpenGL error (out of memory for a huge view) ends the viewer
+        // with one message, rather than a loop of failing frames.
+        check_gl_errors(window.debug_output());
         rendered = true;
       } catch (const UsageError& e) {
         if (scripted) throw;  // nobody is there to change the settings

@@ -1,8 +1,10 @@
 #include "gl/context.hpp"
 
 #include <epoxy/gl.h>
+#include <sys/resource.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -32,7 +34,10 @@ struct Attempt {
 std::string try_display(EGLDisplay display, bool debug, Attempt& out) {
   if (display == EGL_NO_DISPLAY) return "no display";
   EGLint major = 0, minor = 0;
-  if (!eglInitialize(display, &major, &minor)) return "eglInitialize failed";
+  if (!eglInitialize(display, &major, &minor)) {
+    return eglGetError() == EGL_BAD_ALLOC ? "eglInitialize failed: out of memory"
+                                          : "eglInitialize failed";
+  }
   auto fail = [&](const std::string& why) {
     eglTerminate(display);
     return why;
@@ -78,6 +83,10 @@ std::string try_display(EGLDisplay display, bool debug, Attempt& out) {
 }  // namespace
 
 std::unique_ptr<Context> Context::create_headless(const ContextOptions& options) {
+  // Mesa's libEGL prints warnings of its own (a device it cannot open, a
+  // driver it cannot load) before a platform that works is found: only on
+  // request. A value the user set is kept.
+  if (!options.verbose) setenv("EGL_LOG_LEVEL", "fatal", 0);
   std::unique_ptr<Context> ctx(new Context());
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   std::string tried;
@@ -113,9 +122,19 @@ std::unique_ptr<Context> Context::create_headless(const ContextOptions& options)
   }
   if (!ok) {
     tried.resize(tried.size() - 2);
-    throw RuntimeError(
-        "cannot create a headless OpenGL 4.5 core context (" + tried +
-        "); install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU driver with EGL");
+    // Under an address-space limit, drivers fail to load or initialize
+    // (a dlopen or an allocation fails): that limit is the likely cause.
+    // Otherwise advice on what to install, where something is missing.
+    const bool missing = tried.find("eglInitialize failed") == std::string::npos;
+    rlimit limit{};
+    const bool limited = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+    std::string advice;
+    if (limited) {
+      advice = "; the address space is limited (ulimit -v): too little for the driver?";
+    } else if (missing) {
+      advice = "; install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU driver with EGL";
+    }
+    throw RuntimeError("cannot create a headless OpenGL 4.5 core context (" + tried + ")" + advice);
   }
   ctx->display_ = attempt.display;
   ctx->context_ = attempt.context;

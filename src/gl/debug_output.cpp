@@ -18,7 +18,9 @@ void GLAPIENTRY DebugOutput::on_message(GLenum /*source*/, GLenum type, GLuint i
   if (type == GL_DEBUG_TYPE_ERROR) {
     ++self->error_count_;
     self->last_error_ = message;
-    std::fprintf(stderr, "penumbra: GL error %u: %s\n", id, message);
+    // The command ends with one error line naming the last of them; each
+    // is printed only on request.
+    if (self->verbose_) std::fprintf(stderr, "penumbra: GL error %u: %s\n", id, message);
     return;
   }
   if (self->verbose_ && severity != GL_DEBUG_SEVERITY_NOTIFICATION) {

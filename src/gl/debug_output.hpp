@@ -1,6 +1,7 @@
 #pragma once
 // The driver's KHR_debug messages: errors are counted (tests and commands
-// fail when the count grows) and printed; with `verbose`, warnings too.
+// fail when the count grows, with one message naming the last); with
+// `verbose`, each error and warning is printed as it comes.
 // Shared by the headless context and the viewer's window.
 #include <epoxy/gl.h>
 

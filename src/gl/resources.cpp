@@ -108,6 +108,11 @@ void Framebuffer::set_draw_buffers(int count) {
 
 void Framebuffer::check_complete() const {
   GLenum status = glCheckNamedFramebufferStatus(handle_.id(), GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE && glGetError() == GL_OUT_OF_MEMORY) {
+    // Its textures could not be allocated: say so, not the status it left.
+    throw RuntimeError("out of GPU memory for the framebuffer '" + label_ +
+                       "' (a smaller --width, --height or --shadow-map-size may fit)");
+  }
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     throw RuntimeError("framebuffer '" + label_ + "' is incomplete (status 0x" + [&] {
       char hex[16];

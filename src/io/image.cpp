@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
+#include "core/display_name.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 
@@ -43,6 +45,16 @@ ImageFormat image_format_for(const std::string& path) {
 }
 
 void check_output_path(const std::string& path) {
+  if (path == "-") return;  // standard output
+  std::error_code status_ec;
+  const fs::file_status status = fs::status(path, status_ec);
+  if (fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)) {
+    // A device or FIFO, written in place: its folder need not be writable.
+    if (access(path.c_str(), W_OK) != 0) {
+      throw UsageError("output " + display_name(path) + " is not writable");
+    }
+    return;
+  }
   fs::path parent = fs::path(path).parent_path();
   if (parent.empty()) parent = ".";
   std::error_code ec;
@@ -66,14 +78,18 @@ void write_png(const Image& image, const std::string& path, PngEncoding encoding
           static_cast<std::uint8_t>(std::lround(v * 255.0f));
     }
   }
-  const std::string temporary = temporary_name(path);
-  if (!stbi_write_png(temporary.c_str(), image.width, image.height, 3, bytes.data(),
-                      image.width * 3)) {
-    std::error_code ec;
-    fs::remove(temporary, ec);
-    throw RuntimeError("cannot write '" + path + "'");
+  // Encoded in memory, then written by write_file_atomically, which checks
+  // every write (stbi_write_png ignores fwrite's and fclose's results).
+  std::string png;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, image.width, image.height, 3, bytes.data(),
+                              image.width * 3)) {
+    throw RuntimeError("cannot write " + display_name(path) + ": the PNG encoder failed");
   }
-  commit_temporary(temporary, path);
+  write_file_atomically(path, png);
 }
 
 void write_exr(const Image& image, const std::string& path) {
@@ -107,17 +123,18 @@ void write_exr(const Image& image, const std::string& path) {
   header.requested_pixel_types = requested;
   header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
 
-  const std::string temporary = temporary_name(path);
+  unsigned char* memory = nullptr;
   const char* err = nullptr;
-  int result = SaveEXRImageToFile(&exr, &header, temporary.c_str(), &err);
-  if (result != TINYEXR_SUCCESS) {
+  const std::size_t size = SaveEXRImageToMemory(&exr, &header, &memory, &err);
+  if (size == 0 || memory == nullptr) {
     std::string why = err ? err : "unknown error";
     if (err) FreeEXRErrorMessage(err);
-    std::error_code ec;
-    fs::remove(temporary, ec);
-    throw RuntimeError("cannot write '" + path + "': " + why);
+    std::free(memory);
+    throw RuntimeError("cannot write " + display_name(path) + ": " + why);
   }
-  commit_temporary(temporary, path);
+  const std::string exr_bytes(reinterpret_cast<const char*>(memory), size);
+  std::free(memory);
+  write_file_atomically(path, exr_bytes);
 }
 
 void write_image(const Image& image, const std::string& path, PngEncoding png_encoding) {

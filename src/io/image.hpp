@@ -33,7 +33,8 @@ enum class ImageFormat { Png, Exr };
 ImageFormat image_format_for(const std::string& path);
 
 // Throws UsageError when the folder `path` would be written to does not
-// exist or is not a writable folder.
+// exist or is not a writable folder; a device or FIFO `path` must itself be
+// writable; "-" (standard output) always passes.
 void check_output_path(const std::string& path);
 
 // Writes atomically: to a temporary name beside the target, then renamed,

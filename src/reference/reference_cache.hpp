@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "io/image.hpp"
 #include "reference/shadow_ray_tracer.hpp"
@@ -29,10 +30,22 @@ std::string default_cache_dir();
 // The file a reference of that key lives in, inside `dir`.
 std::string cached_reference_path(const std::string& dir, std::uint64_t key);
 
-// The cached reference, or nullopt if there is none of this key and size
-// (or it cannot be read: a damaged entry is a miss, never an error).
+// The cached reference, or nullopt if there is none of this key and size.
+// An entry is read only if it is a regular file of exactly the size its
+// image needs; a damaged one (its payload does not match the checksum in
+// its header, a value is not a visibility in [0, 1]) is a miss with one
+// warning on stderr, never an error, and is replaced when re-traced.
 std::optional<Image> load_cached_reference(const std::string& dir, std::uint64_t key, int width,
                                            int height);
+
+// The entry's image from its bytes, or nullopt; `problem` says what is
+// wrong with a damaged entry (empty for one of another format version,
+// which is a plain miss).
+std::optional<Image> parse_cached_reference(std::string_view bytes, std::uint64_t key, int width,
+                                            int height, std::string& problem);
+
+// 64-bit FNV-1a of an entry's payload, as its header keeps it.
+std::uint64_t cache_checksum(std::string_view payload);
 
 // Stores the reference atomically, creating `dir` as needed. Throws
 // RuntimeError if it cannot.

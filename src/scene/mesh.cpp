@@ -1,9 +1,16 @@
 #include "scene/mesh.hpp"
 
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
+#include "core/display_name.hpp"
+#include "core/error.hpp"
 #include "scene/model.hpp"
 
 namespace penumbra {
@@ -218,9 +225,42 @@ void append_shape(TriangleMesh& mesh, const Shape& shape) {
   append_transformed(mesh, b.local, shape, false);
 }
 
+std::size_t mesh_bytes(const TriangleMesh& mesh) {
+  return mesh.vertices.size() * sizeof(Vertex) + mesh.indices.size() * sizeof(std::uint32_t);
+}
+
+std::size_t geometry_budget_bytes() {
+  std::size_t megabytes = kDefaultGeometryBudgetMiB;
+  if (const char* text = std::getenv(kGeometryBudgetVariable); text != nullptr && *text != '\0') {
+    std::size_t value = 0;
+    const char* end = text + std::strlen(text);
+    const auto [ptr, ec] = std::from_chars(text, end, value);
+    if (ec != std::errc() || ptr != end || value == 0 || value > (std::size_t{1} << 30)) {
+      throw UsageError(std::string(kGeometryBudgetVariable) + "='" + text +
+                       "' is not a number of MiB in [1, 2^30]");
+    }
+    megabytes = value;
+  }
+  return megabytes << 20;
+}
+
 TriangleMesh build_scene_mesh(const Scene& scene) {
+  const std::size_t budget = geometry_budget_bytes();
   TriangleMesh mesh;
-  for (const Shape& shape : scene.shapes) append_shape(mesh, shape);
+  for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
+    append_shape(mesh, scene.shapes[i]);
+    // Checked as the mesh grows, so that a scene far over the budget costs
+    // no more memory than the budget to refuse.
+    if (mesh_bytes(mesh) > budget ||
+        mesh.vertices.size() > std::numeric_limits<std::uint32_t>::max()) {
+      throw UsageError(
+          "scene " + display_name(scene.name) + ": its geometry exceeds the budget of " +
+          std::to_string(budget >> 20) + " MiB at object " + std::to_string(i) + " of " +
+          std::to_string(scene.shapes.size()) + " (" + std::to_string(mesh.indices.size() / 3) +
+          " triangles, " + std::to_string(mesh_bytes(mesh) >> 20) + " MiB so far; " +
+          kGeometryBudgetVariable + " sets the budget in MiB)");
+    }
+  }
   return mesh;
 }
 

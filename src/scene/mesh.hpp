@@ -3,6 +3,7 @@
 // static, so every shape is transformed once at build time and the whole
 // scene draws with one call per pass (and the reference ray tracer sees the
 // very same triangles).
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
@@ -30,7 +31,22 @@ inline constexpr int kCurveSegments = 48;
 // been loaded (scene/model.hpp: attach_model).
 void append_shape(TriangleMesh& mesh, const Shape& shape);
 
-// All of a scene's shapes in one mesh.
+// The most vertex and index data a scene may have, in MiB: about 40
+// million triangles, far above any scene or model this renders at
+// interactive rates, and below what makes drivers fail (a scene of 70,000
+// spheres, 160 million triangles, crashed Mesa's llvmpipe). The variable
+// kGeometryBudgetVariable sets another budget in MiB.
+inline constexpr std::size_t kDefaultGeometryBudgetMiB = 1024;
+inline constexpr const char* kGeometryBudgetVariable = "PENUMBRA_GEOMETRY_BUDGET";
+
+// The budget in bytes. Throws UsageError for a malformed variable.
+std::size_t geometry_budget_bytes();
+
+// Bytes of a mesh's vertices and indices, as uploaded.
+std::size_t mesh_bytes(const TriangleMesh& mesh);
+
+// All of a scene's shapes in one mesh. Throws UsageError naming the
+// numbers when the mesh would exceed geometry_budget_bytes().
 TriangleMesh build_scene_mesh(const Scene& scene);
 
 // The shape's model matrix: translate * rotate(z) * rotate(y) * rotate(x) * scale.

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <type_traits>
 
@@ -63,6 +64,14 @@ std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
   while (!text.empty() && (text.back() == ' ' || text.back() == '\r')) text.pop_back();
   return text;
+}
+
+// Assimp catches std::bad_alloc and reports it as its error text; it is
+// rethrown, so the reader reports the memory limit.
+[[noreturn]] void fail_import(const std::string& path, const Assimp::Importer& importer) {
+  const std::string error = one_line(importer.GetErrorString());
+  if (error.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
+  fail(path, "cannot read the model: " + error);
 }
 
 // Errors assimp would report vaguely ("no suitable reader") or not at all.
@@ -266,11 +275,11 @@ Model read_model(const std::string& path) {
   // Read, check what the reader gave, then post-process (and check again
   // while copying below).
   const aiScene* scene = importer.ReadFile(path, 0);
-  if (scene == nullptr) fail(path, "cannot read the model: " + one_line(importer.GetErrorString()));
+  if (scene == nullptr) fail_import(path, importer);
   warnings.check(path);
   check_raw(path, *scene);
   scene = importer.ApplyPostProcessing(kPostProcess);
-  if (scene == nullptr) fail(path, "cannot read the model: " + one_line(importer.GetErrorString()));
+  if (scene == nullptr) fail_import(path, importer);
   warnings.check(path);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mNumMeshes == 0) {
     fail(path, "the file holds no triangles");
@@ -431,10 +440,19 @@ Model deserialize(const std::string& path, const std::string& bytes) {
 // How long the reader may take: far longer than a sound file needs (a
 // million-triangle OBJ, 50 MB, reads in under 2 s), short enough that a
 // reader caught in a loop is stopped.
-std::chrono::milliseconds read_time_limit(const std::string& path) {
-  std::error_code ec;
-  const auto megabytes = static_cast<double>(fs::file_size(path, ec)) / (1 << 20);
+std::chrono::milliseconds read_time_limit(std::uintmax_t file_size) {
+  const auto megabytes = static_cast<double>(file_size) / (1 << 20);
   return std::chrono::milliseconds(10'000 + static_cast<long long>(2'000.0 * megabytes));
+}
+
+// How much address space the reader may take: kReaderMemoryFloor, plus
+// kReaderMemoryPerFileByte per byte of the file. A sound file needs far
+// less (a million-triangle OBJ, 50 MB, peaks near 1 GB); a hostile one
+// (a 309-byte OFF file whose header promises billions of vertices) is
+// stopped at the floor instead of taking the machine's memory.
+std::size_t read_memory_limit(std::uintmax_t file_size) {
+  const std::uintmax_t limit = kReaderMemoryFloor + kReaderMemoryPerFileByte * file_size;
+  return static_cast<std::size_t>(std::min<std::uintmax_t>(limit, std::uintmax_t{1} << 46));
 }
 
 }  // namespace
@@ -446,11 +464,17 @@ std::chrono::milliseconds read_time_limit(const std::string& path) {
 Model load_model(const std::string& path) {
   check_readable(path);
   check_ply_header(path);
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
   try {
-    return deserialize(path, run_in_child_process([&] { return serialize(read_model(path)); },
-                                                  read_time_limit(path)));
+    return deserialize(path,
+                       run_in_child_process([&] { return serialize(read_model(path)); },
+                                            {.time = read_time_limit(ec ? 0 : size),
+                                             .memory_bytes = read_memory_limit(ec ? 0 : size)}));
   } catch (const ChildProcessError& e) {
     if (e.kind() == ChildProcessError::Kind::Threw) throw RuntimeError(e.what());
+    // A file that needs more than the limit is hostile or broken: no
+    // sound model of its size needs that much.
     fail(path, std::string("the model reader ") + e.what() + " on this file");
   }
 }

@@ -2,6 +2,7 @@
 // Triangle models read from files (OBJ, PLY, glTF 2.0, STL, OFF and the
 // other formats Open Asset Import Library reads), checked so that a bad
 // file ends in one error naming it rather than a crash or a broken image.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,12 @@
 #include "scene/scene.hpp"
 
 namespace penumbra {
+
+// The model reader (assimp, in a child process) runs under an address-space
+// limit of kReaderMemoryFloor plus kReaderMemoryPerFileByte per byte of the
+// file; a file that needs more is an error naming it.
+inline constexpr std::size_t kReaderMemoryFloor = std::size_t{2} << 30;
+inline constexpr std::size_t kReaderMemoryPerFileByte = 48;
 
 struct Model {
   std::string path;  // as given to load_model

@@ -2,15 +2,16 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/bounded_read.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/model.hpp"
+#include "scene/scene_checks.hpp"
 
 namespace penumbra {
 
@@ -102,10 +103,14 @@ Camera read_camera(Reader r, Camera camera) {
   camera.target = r.vec3("target", camera.target);
   camera.up = r.vec3("up", camera.up);
   camera.fov_y_degrees = r.number("fov", camera.fov_y_degrees, 1.0f, 170.0f);
-  if (glm::length(camera.target - camera.position) < 1e-6f)
-    r.fail(r.child("target"), "must differ from the position");
-  if (glm::length(glm::cross(camera.up, camera.target - camera.position)) < 1e-6f)
-    r.fail(r.child("up"), "must not be parallel to the viewing direction");
+  switch (camera_defect(camera)) {
+    case CameraDefect::TargetAtPosition:
+      r.fail(r.child("target"), "must differ from the position");
+    case CameraDefect::UpAlongView:
+      r.fail(r.child("up"), "must not be parallel to the viewing direction");
+    case CameraDefect::None:
+      break;
+  }
   r.reject_unknown_keys();
   return camera;
 }
@@ -139,12 +144,12 @@ Light read_light(Reader r) {
   if (r.has("target")) {
     if (l.type != LightType::Spot) r.fail(r.child("target"), "only spot lights have a target");
     glm::vec3 target = r.vec3("target", {});
-    if (glm::length(target - l.position) < 1e-6f)
+    if (!is_usable_direction(target - l.position))
       r.fail(r.child("target"), "must differ from the position");
     l.direction = glm::normalize(target - l.position);
   } else if (l.type != LightType::Point) {  // a point light shines every way
     glm::vec3 d = r.vec3("direction", l.direction);
-    if (glm::length(d) < 1e-6f) r.fail(r.child("direction"), "must not be zero");
+    if (!is_usable_direction(d)) r.fail(r.child("direction"), "must not be zero");
     l.direction = glm::normalize(d);
   }
   l.color = r.vec3("color", l.color, 0.0f, 1e3f);
@@ -280,12 +285,7 @@ Scene parse_scene_json(const std::string& text, const std::string& origin) {
 }
 
 Scene load_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw RuntimeError("cannot open scene file '" + path + "'");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw RuntimeError("cannot read scene file '" + path + "'");
-  return parse_scene_json(buffer.str(), path);
+  return parse_scene_json(read_bounded_file(path, kMaxSceneFileBytes, "scene file"), path);
 }
 
 Scene resolve_scene(const std::string& name_or_path) {

@@ -20,6 +20,7 @@
 //
 // Unknown keys and bad values are errors naming the file and the key's path
 // (e.g. "scene.json: /objects/2/radius: must be > 0").
+#include <cstddef>
 #include <string>
 
 #include "scene/scene.hpp"
@@ -31,7 +32,13 @@ namespace penumbra {
 // Throws RuntimeError.
 Scene parse_scene_json(const std::string& text, const std::string& origin);
 
-// Reads and parses a scene file. Throws RuntimeError.
+// The largest scene file read: far above any hand-written scene (the
+// bundled ones are a few kB), far below what would exhaust memory.
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{16} << 20;
+
+// Reads and parses a scene file: a regular file of at most
+// kMaxSceneFileBytes (a FIFO, a device or a folder is refused unread).
+// Throws RuntimeError.
 Scene load_scene_file(const std::string& path);
 
 // A built-in scene name or a path to a .json file. Throws UsageError for an

@@ -31,6 +31,9 @@ Window::Window(const WindowOptions& options) : debug_(options.verbose) {
         "no display: 'view' opens a window, and neither $DISPLAY nor $WAYLAND_DISPLAY is set "
         "(use 'render' for images without one)");
   }
+  // Mesa's libEGL warnings (a driver it cannot load) only on request, as
+  // for the headless context.
+  if (!options.verbose) setenv("EGL_LOG_LEVEL", "fatal", 0);
   if (!glfwInit()) throw RuntimeError("cannot open a window: " + glfw_error());
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);

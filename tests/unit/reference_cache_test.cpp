@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -59,6 +60,36 @@ TEST(ReferenceCache, DamagedEntryIsAMiss) {
   EXPECT_FALSE(load_cached_reference(dir.string(), 7, 4, 4));
   std::ofstream(file, std::ios::binary) << "not a reference";
   EXPECT_FALSE(load_cached_reference(dir.string(), 7, 4, 4));
+}
+
+// Data damaged at the same size (zeroed, NaN, out of range) is caught by
+// the checksum, and a value outside [0, 1] even with a matching checksum.
+TEST(ReferenceCache, ChecksumCatchesDamageOfTheSameSize) {
+  const fs::path dir = fresh_dir("checksum");
+  store_cached_reference(dir.string(), 9, sample_reference(4, 4));
+  const std::string file = cached_reference_path(dir.string(), 9);
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  std::string problem;
+  ASSERT_TRUE(parse_cached_reference(bytes, 9, 4, 4, problem)) << problem;
+  constexpr std::size_t kHeader = 40;
+  std::string zeroed = bytes;
+  std::fill(zeroed.begin() + kHeader, zeroed.end(), '\0');
+  EXPECT_FALSE(parse_cached_reference(zeroed, 9, 4, 4, problem));
+  EXPECT_EQ(problem, "its checksum does not match its data");
+  std::string huge = bytes;
+  const float big = 1e30f;
+  std::memcpy(huge.data() + kHeader, &big, sizeof big);
+  EXPECT_FALSE(parse_cached_reference(huge, 9, 4, 4, problem));
+  const std::uint64_t sum = cache_checksum(std::string_view(huge).substr(kHeader));
+  std::memcpy(huge.data() + 32, &sum, sizeof sum);
+  EXPECT_FALSE(parse_cached_reference(huge, 9, 4, 4, problem));
+  EXPECT_EQ(problem, "it holds a value that is not a visibility");
+  std::ofstream(file, std::ios::binary) << zeroed;
+  EXPECT_FALSE(load_cached_reference(dir.string(), 9, 4, 4));
 }
 
 // The key follows everything that decides the reference: the light, its

@@ -1,0 +1,365 @@
+// The binary against hostile input and failures, one test per kind found:
+// no hang, no crash, no truncated file published, no orphaned reader, no
+// corrupted cache trusted, and one clear error line. Commands that could
+// hang run under `timeout`, so that a regression fails rather than stalls.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+
+#include "hostile/hostile_run.hpp"
+
+namespace penumbra::hostile {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+// Small renders: llvmpipe on a few shared cores.
+const std::string kSmall = " --width 32 --height 24 --shadow-map-size 256";
+
+// Waits up to `limit` for `done`, polling; true if it came.
+template <class Done>
+bool eventually(Done done, std::chrono::milliseconds limit) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < end) {
+    if (done()) return true;
+    std::this_thread::sleep_for(20ms);
+  }
+  return done();
+}
+
+// The one cache entry a compare run left in `cache`.
+std::string cache_entry(const std::string& cache) {
+  std::string found;
+  for (const auto& entry : fs::directory_iterator(cache)) {
+    if (entry.path().filename().string().rfind("reference-", 0) == 0) found = entry.path().string();
+  }
+  return found;
+}
+
+// 1. A scene path that is a device is refused before anything is read.
+TEST(Hostile, SceneDevicesAreRefusedUnread) {
+  for (const std::string device : {"/dev/urandom", "/dev/zero"}) {
+    const Result r = shell("timeout 20 PENUMBRA render --scene " + device + " -o x.png");
+    EXPECT_EQ(r.status, 1) << device << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, "is not a regular file")) << r.err;
+  }
+  // A regular file above the limit is refused unread too (sparse: no disk).
+  const std::string big = fresh_dir("scene_size") + "/big.json";
+  std::ofstream(big).close();
+  fs::resize_file(big, (16u << 20) + 1);
+  const Result r = shell("timeout 20 PENUMBRA render --scene " + big + " -o x.png");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(one_error_line(r.err, "larger than the limit of 16 MiB")) << r.err;
+}
+
+// 2. A FIFO as the scene file does not block.
+TEST(Hostile, SceneFifoIsRefused) {
+  const std::string fifo = fresh_dir("scene_fifo") + "/scene.json";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const Result r = shell("timeout 20 PENUMBRA render --scene " + fifo + " -o x.png");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(one_error_line(r.err, "is not a regular file")) << r.err;
+}
+
+// 3. A FIFO in place of a cache entry does not block compare; the entry is
+// replaced by the traced reference.
+TEST(Hostile, CacheFifoDoesNotBlock) {
+  const std::string dir = fresh_dir("cache_fifo");
+  const std::string compare =
+      "timeout 60 PENUMBRA compare --techniques hard" + kSmall + " --cache-dir " + dir;
+  ASSERT_EQ(shell(compare).status, 0);
+  const std::string entry = cache_entry(dir);
+  ASSERT_FALSE(entry.empty());
+  fs::remove(entry);
+  ASSERT_EQ(mkfifo(entry.c_str(), 0600), 0);
+  const Result r = shell(compare);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(entry)) << "the FIFO was not replaced";
+  EXPECT_EQ(shell(compare).out.find(", cached;") != std::string::npos, true) << "not reused";
+}
+
+// 4. A view too large for memory ends in one error line, promptly. (Where
+// the GPU has the memory, as a large discrete one may, the image is
+// written instead; the address-space limit may also stop its driver at the
+// start, which is the same one line.)
+void expect_image_or_one_line(const Result& r, const std::string& out) {
+  if (r.status == 0) {
+    EXPECT_TRUE(out.empty() || fs::is_regular_file(out));
+    return;
+  }
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(one_error_line(r.err, "penumbra: error: ")) << r.err;
+  EXPECT_TRUE(r.err.find("out of") != std::string::npos ||
+              r.err.find("ulimit -v") != std::string::npos)
+      << r.err;
+  if (!out.empty()) {
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST(Hostile, OutOfGpuMemoryIsOneLine) {
+  const std::string out = fresh_dir("huge") + "/huge.png";
+  const Result r = shell(
+      "ulimit -v 3000000; timeout 120 PENUMBRA render --width 16384 "
+      "--height 16384 --shadow-map-size 256 -o " +
+      out);
+  expect_image_or_one_line(r, out);
+  // The viewer too, in a window on an X server of its own where there is
+  // one (-displayfd: the server picks a free display and writes it).
+  if (shell("command -v Xvfb").status != 0) {
+    GTEST_SKIP() << "Xvfb is not installed (Debian package xvfb): view not tried";
+  }
+  const std::string display = fresh_dir("huge_view") + "/display";
+  const Result view =
+      shell("Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>" + display +
+            " 2>/dev/null & x=$!; for i in $(seq 200); do [ -s " + display +
+            " ] && break; sleep 0.05; done; DISPLAY=:$(cat " + display +
+            ") sh -c 'ulimit -v 3000000; exec timeout 120 PENUMBRA view --frames 3 --width 16384 "
+            "--height 16384 --shadow-map-size 256'; s=$?; kill $x; wait $x; exit $s");
+  expect_image_or_one_line(view, "");
+}
+
+// 5. The model reader dies with penumbra (an OBJ whose material library is
+// a FIFO blocks assimp's reader).
+TEST(Hostile, ModelReaderDiesWithItsParent) {
+  const std::string dir = fresh_dir("reader_orphan");
+  ASSERT_EQ(mkfifo((dir + "/blocks.mtl").c_str(), 0600), 0);
+  write_text(dir + "/model.obj", "mtllib blocks.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  for (const int signal : {SIGKILL, SIGTERM}) {
+    const pid_t penumbra = spawn({"render", "--model", dir + "/model.obj", "-o", dir + "/m.png"});
+    std::vector<pid_t> readers;
+    ASSERT_TRUE(eventually([&] { return !(readers = children_of(penumbra)).empty(); }, 10s));
+    kill(penumbra, signal);
+    waitpid(penumbra, nullptr, 0);
+    // The reader would otherwise wait on the FIFO for ever: nothing is
+    // left to stop it.
+    EXPECT_TRUE(eventually([&] { return !running(readers.front()); }, 5s))
+        << "the model reader outlived penumbra (signal " << signal << ")";
+    kill(readers.front(), SIGKILL);
+  }
+}
+
+// 6. The reader's memory is capped: an OFF header promising 150 million
+// faces ends in an out-of-memory error, not gigabytes taken.
+TEST(Hostile, ModelReaderMemoryIsCapped) {
+  const std::string dir = fresh_dir("reader_memory");
+  write_text(dir + "/faces.off", "OFF\n3 150000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const Result r =
+      shell("timeout 60 PENUMBRA render --model " + dir + "/faces.off -o " + dir + "/m.png");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(one_error_line(r.err, "ran out of memory (its limit is 2048 MiB)")) << r.err;
+}
+
+// 7. Geometry beyond the budget is a usage error naming the numbers, before
+// any of it reaches the driver.
+TEST(Hostile, GeometryBudgetHolds) {
+  const std::string dir = fresh_dir("geometry");
+  std::string objects = "{\"shape\": \"plane\"}";
+  for (int i = 0; i < 100; ++i) {
+    objects += ", {\"shape\": \"sphere\", \"position\": [" + std::to_string(i % 10) + ", 1, " +
+               std::to_string(i / 10) + "]}";
+  }
+  write_text(dir + "/spheres.json",
+             "{\"lights\": [{\"type\": \"directional\"}], \"objects\": [" + objects + "]}");
+  const Result r = shell("PENUMBRA_GEOMETRY_BUDGET=1 timeout 60 PENUMBRA render --scene " + dir +
+                         "/spheres.json" + kSmall + " -o " + dir + "/s.png");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(one_error_line(r.err, "exceeds the budget of 1 MiB at object")) << r.err;
+  EXPECT_NE(r.err.find("PENUMBRA_GEOMETRY_BUDGET"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/s.png"));
+}
+
+// 8. A write that fails (a file-size limit, as a full disk) is an error and
+// publishes nothing: neither a truncated image nor zero-byte ones.
+TEST(Hostile, FailedWritesPublishNothing) {
+  const std::string dir = fresh_dir("full");
+  // ulimit -f 1: 512 bytes, enough for the error line on stderr (a file
+  // here), less than any of the images.
+  const Result r =
+      shell("ulimit -f 1; timeout 60 PENUMBRA render" + kSmall + " -o " + dir + "/r.png");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(one_error_line(r.err, "File too large")) << r.err;
+  const Result c = shell(
+      "ulimit -f 1; timeout 60 PENUMBRA compare --techniques hard --no-cache --width 200 "
+      "--height 150 --shadow-map-size 256 -o " +
+      dir + "/c");
+  EXPECT_EQ(c.status, 1) << c.err;
+  EXPECT_TRUE(one_error_line(c.err, "File too large")) << c.err;
+  EXPECT_TRUE(fs::is_empty(dir)) << "output left in " << dir;
+}
+
+// 9. An output that is a link or a device is written through, never
+// replaced; "-" is standard output.
+TEST(Hostile, NonRegularOutputsAreWrittenInPlace) {
+  const std::string dir = fresh_dir("in_place");
+  fs::create_symlink("/dev/null", dir + "/null.png");
+  fs::create_symlink(dir + "/target.json", dir + "/link.json");
+  write_text(dir + "/target.json", "old");
+  const std::string bench =
+      "timeout 60 PENUMBRA bench --frames 1 --warmup 0 --technique hard" + kSmall + " --json ";
+  ASSERT_EQ(shell("timeout 60 PENUMBRA render" + kSmall + " -o " + dir + "/null.png").status, 0);
+  EXPECT_TRUE(fs::is_symlink(dir + "/null.png"));
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  ASSERT_EQ(shell(bench + dir + "/link.json").status, 0);
+  EXPECT_TRUE(fs::is_symlink(dir + "/link.json")) << "the link was replaced";
+  EXPECT_TRUE(nlohmann::json::accept(read_text(dir + "/target.json")));
+  const Result r = shell("cd " + dir + " && " + bench + "-");
+  ASSERT_NE(r.out.find("\n{"), std::string::npos) << r.out;
+  EXPECT_TRUE(nlohmann::json::accept(r.out.substr(r.out.find("\n{") + 1))) << r.out;
+  EXPECT_FALSE(fs::exists(dir + "/-"));
+}
+
+// 10. A legal 255-byte file name is written (its temporary name is
+// shortened to fit the limit).
+TEST(Hostile, LongestFileNameIsWritten) {
+  const std::string dir = fresh_dir("long_name");
+  const std::string name = std::string(251, 'n') + ".png";
+  const Result r = shell("timeout 60 PENUMBRA render" + kSmall + " -o " + dir + "/" + name);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(dir + "/" + name));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+// 11. An interrupted report leaves neither a partial folder nor its
+// temporary one.
+TEST(Hostile, InterruptedFolderOutputLeavesNothing) {
+  const std::string dir = fresh_dir("interrupted");
+  const std::string report = dir + "/report";
+  const pid_t penumbra = spawn({"report", "--quick", "-o", report});
+  // Interrupted once it has written some images.
+  auto staged_files = [&] {
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.is_directory() && !fs::is_empty(entry.path())) return true;
+    }
+    return false;
+  };
+  const bool started = eventually(staged_files, 120s);
+  kill(penumbra, SIGTERM);
+  int status = 0;
+  waitpid(penumbra, &status, 0);
+  ASSERT_TRUE(started) << "the report wrote nothing within 120 s";
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_TRUE(fs::is_empty(dir)) << "left behind: " << fs::directory_iterator(dir)->path();
+}
+
+// 12. Empty values are usage errors, not "not given".
+TEST(Hostile, EmptyValuesAreUsageErrors) {
+  const std::string dir = fresh_dir("empty");
+  for (const std::string args :
+       {"render --model '' -o x.png", "render --light '' -o x.png",
+        "render --camera-position '' -o x.png", "render --camera-fov '' -o x.png", "render -o ''",
+        "compare -o ''", "compare --json ''", "report -o ''"}) {
+    const Result r = shell("cd " + dir + " && timeout 60 PENUMBRA " + args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, "empty")) << args << "\n" << r.err;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+// 13. Degenerate cameras and light directions are refused as a scene file
+// refuses them; --light-index must name a light, whatever the view.
+TEST(Hostile, DegenerateCamerasAndLightsAreUsageErrors) {
+  for (const std::string args : {"--camera-position 0,10,0 --camera-target 0,0,0",
+                                 "--camera-position 1,2,3 --camera-target 1,2,3",
+                                 "--camera-position 0,0,0 --camera-target 1e-30,0,1e-30",
+                                 "--light-direction 0,-1e-25,0", "--light-index 3"}) {
+    const Result r = shell("timeout 60 PENUMBRA render " + args + " -o x.png");
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, args.substr(0, args.find(' ')))) << args << "\n" << r.err;
+  }
+}
+
+// 14. Standard output is checked: a full device or a closed pipe is an
+// error (status 1), not success or death by SIGPIPE.
+TEST(Hostile, StandardOutputErrorsAreReported) {
+  const std::string bench =
+      "timeout 60 PENUMBRA bench --frames 1 --warmup 0 --technique hard" + kSmall;
+  const Result full = shell(bench + " > /dev/full");
+  EXPECT_EQ(full.status, 1) << full.err;
+  EXPECT_TRUE(one_error_line(full.err, "standard output: No space left on device")) << full.err;
+  const Result compare =
+      shell("timeout 60 PENUMBRA compare --techniques hard --no-cache" + kSmall + " > /dev/full");
+  EXPECT_EQ(compare.status, 1) << compare.err;
+  EXPECT_TRUE(one_error_line(compare.err, "standard output")) << compare.err;
+
+  // A reader that has gone: the pipe's read end closed before the run.
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  close(fds[0]);
+  const pid_t pid = spawn({"bench", "--frames", "1", "--warmup", "0", "--technique", "hard",
+                           "--width", "32", "--height", "24", "--shadow-map-size", "256"},
+                          fds[1]);
+  close(fds[1]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+}
+
+// 15. A cache entry whose data was damaged (same size) is not trusted: one
+// warning, traced anew, the same numbers as before.
+TEST(Hostile, DamagedCacheEntryIsRetraced) {
+  const std::string dir = fresh_dir("cache_damage");
+  const std::string compare = "timeout 60 PENUMBRA compare --techniques hard" + kSmall +
+                              " --cache-dir " + dir + " --json -";
+  const Result first = shell(compare);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::string entry = cache_entry(dir);
+  std::string bytes = read_text(entry);
+  ASSERT_GT(bytes.size(), 64u);
+  std::fill(bytes.begin() + 64, bytes.end(), '\0');
+  write_text(entry, bytes);
+  const Result second = shell(compare);
+  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_EQ(std::count(second.err.begin(), second.err.end(), '\n'), 1) << second.err;
+  EXPECT_NE(second.err.find("penumbra: warning: ignoring the cached reference"), std::string::npos)
+      << second.err;
+  auto mae = [](const std::string& out) {
+    const nlohmann::json j = nlohmann::json::parse(out.substr(out.find("\n{") + 1));
+    EXPECT_FALSE(j["reference"]["cached"].get<bool>());
+    return j["results"][0]["traced"]["mae"].get<double>();
+  };
+  EXPECT_EQ(mae(second.out), mae(first.out));
+}
+
+// 16. Messages: names with control characters are printed escaped; a folder
+// in the cache's way gets a reason, not "Success"; no driver chatter (the
+// GL errors of a huge view are left out of its one line: test 4).
+TEST(Hostile, MessagesAreOneCleanLine) {
+  const Result name =
+      shell("timeout 20 PENUMBRA render --scene \"$(printf 'bad\\n\\033[31m.json')\" -o x.png");
+  EXPECT_EQ(name.status, 1);
+  EXPECT_TRUE(one_error_line(name.err, "'bad\\n\\x1b[31m.json'")) << name.err;
+
+  const std::string dir = fresh_dir("cache_folder");
+  const std::string compare =
+      "timeout 60 PENUMBRA compare --techniques hard" + kSmall + " --cache-dir " + dir;
+  ASSERT_EQ(shell(compare).status, 0);
+  const std::string entry = cache_entry(dir);
+  fs::remove(entry);
+  fs::create_directory(entry);
+  const Result folder = shell(compare);
+  EXPECT_EQ(folder.status, 0);
+  EXPECT_EQ(std::count(folder.err.begin(), folder.err.end(), '\n'), 1) << folder.err;
+  EXPECT_NE(folder.err.find("it is a folder"), std::string::npos) << folder.err;
+  EXPECT_EQ(folder.err.find("Success"), std::string::npos) << folder.err;
+
+  // Too little memory for the driver to load: one line, no loader chatter.
+  const Result egl = shell("ulimit -v 150000; timeout 60 PENUMBRA render" + kSmall + " -o x.png");
+  EXPECT_EQ(egl.status, 1);
+  EXPECT_TRUE(one_error_line(egl.err, "ulimit -v")) << egl.err;
+}
+
+}  // namespace
+}  // namespace penumbra::hostile
