@@ -234,13 +234,18 @@ std::vector<Item> plan_items(const CompareArgs& args) {
 void measure_items(Renderer& renderer, const CompareArgs& args, const Image& traced,
                    std::vector<Item>& items) {
   const std::string& dir = args.output_dir;
-  auto write = [&](const Image& image, const std::string& name, Item* item, const char* role) {
+  // The images compared (shadows and references) also go out as 32-bit
+  // float EXR, unclamped and unquantized, for measuring them elsewhere;
+  // the error images are colour maps and go out as PNG only.
+  auto write = [&](const Image& image, const std::string& name, Item* item, const char* role,
+                   bool compared) {
     if (dir.empty()) return;
     const std::string path = (fs::path(dir) / (name + ".png")).string();
     write_png(image, path, PngEncoding::Linear);
+    if (compared) write_exr(image, (fs::path(dir) / (name + ".exr")).string());
     if (item != nullptr) item->images[role] = path;
   };
-  write(traced, "reference-traced", nullptr, "");
+  write(traced, "reference-traced", nullptr, "", true);
   RenderSettings view = args.render;
   for (Item& item : items) {
     if (!item.skipped.empty()) continue;
@@ -250,16 +255,17 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
     Image shadow = renderer.read_view();
     restrict_to(shadow, traced);
     item.traced = compare_shadow(shadow, traced);
-    write(shadow, stem, &item, "shadow");
-    write(error_image(shadow, traced), stem + "-error-traced", &item, "error_traced");
+    write(shadow, stem, &item, "shadow", true);
+    write(error_image(shadow, traced), stem + "-error-traced", &item, "error_traced", false);
     if (has_filtered_reference(item.settings)) {
       view.view = View::ShadowReference;
       renderer.render(view, item.settings);
       Image filtered = renderer.read_view();
       restrict_to(filtered, traced);
       item.filtered = compare_shadow(shadow, filtered);
-      write(filtered, stem + "-reference-filtered", &item, "reference_filtered");
-      write(error_image(shadow, filtered), stem + "-error-filtered", &item, "error_filtered");
+      write(filtered, stem + "-reference-filtered", &item, "reference_filtered", true);
+      write(error_image(shadow, filtered), stem + "-error-filtered", &item, "error_filtered",
+            false);
     }
   }
 }

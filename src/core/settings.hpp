@@ -246,7 +246,7 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloa
      0.0f, 100.0f, &ShadowSettings::light_size},
     {"sun-angle",
      "angular diameter of a directional light's source in degrees (0: a point); the reference "
-     "traces a square of directions 2 tan(angle / 2) wide at unit distance",
+     "traces the disc of directions this wide",
      0.0f, 45.0f, &ShadowSettings::sun_angle},
     {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
      &ShadowSettings::pcf_width},

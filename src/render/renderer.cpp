@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "filter/gaussian.hpp"
+#include "render/depth_position_error.hpp"
 #include "shadow/poisson_disc.hpp"
 #include "shadow/representation.hpp"
 #include "shared/bindings.h"
@@ -409,6 +410,8 @@ SurfacePoints Renderer::read_surfaces() const {
   const Image depth = read_texture(gbuffer_pass_.depth().id(), width, height, GL_DEPTH_COMPONENT);
   const Image normal = read_texture(gbuffer_pass_.normal().id(), width, height, GL_RGBA);
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(last_view_projection_));
+  GLint subpixel_bits = 4;  // the least OpenGL allows
+  glGetIntegerv(GL_SUBPIXEL_BITS, &subpixel_bits);
   SurfacePoints surfaces(width, height);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
@@ -423,6 +426,9 @@ SurfacePoints Renderer::read_surfaces() const {
       surfaces.position[i] = glm::vec3(glm::dvec3(p) / p.w);
       surfaces.normal[i] = glm::normalize(glm::vec3(n[0], n[1], n[2]));
       surfaces.covered[i] = 1;
+      surfaces.position_error[i] =
+          depth_position_error(inverse, glm::dvec2(ndc), double(depth.pixel(x, y)[0]),
+                               surfaces.normal[i], width, height, subpixel_bits);
     }
   }
   return surfaces;
