@@ -80,6 +80,33 @@ bool occluded(RTCScene scene, const glm::vec3& origin, const glm::vec3& directio
   return ray.tfar < 0.0f;
 }
 
+// The geometric normal of the triangle under p (which lies within
+// `reach` of it along n), facing n's side; n itself if no triangle is
+// there (a point not on the mesh).
+glm::vec3 facet_normal(RTCScene scene, const glm::vec3& p, const glm::vec3& n, float reach) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit hit{};
+  const glm::vec3 origin = p + reach * n;
+  hit.ray.org_x = origin.x;
+  hit.ray.org_y = origin.y;
+  hit.ray.org_z = origin.z;
+  hit.ray.dir_x = -n.x;
+  hit.ray.dir_y = -n.y;
+  hit.ray.dir_z = -n.z;
+  hit.ray.tnear = 0.0f;
+  hit.ray.tfar = 2.0f * reach;
+  hit.ray.mask = 0xffffffffu;
+  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene, &context, &hit);
+  if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return n;
+  glm::vec3 ng(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z);
+  const float length = glm::length(ng);
+  if (!(length > 0.0f)) return n;
+  ng /= length;
+  return glm::dot(ng, n) < 0.0f ? -ng : ng;
+}
+
 }  // namespace
 
 ReferenceLight make_reference_light(const Light& light, const LightView& view,
@@ -238,12 +265,23 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
     // pbrt-v4's spawned ray origin: p moved along the normal by the bound
     // of its error, so that the ray starts on the light's side of the
     // surface it lies on however the rounding fell.
-    const glm::vec3 origin = p + (error + rounding_error(p, n)) * n;
+    const float offset = error + rounding_error(p, n);
+    const glm::vec3 origin = p + offset * n;
+    // The G-buffer's normal is interpolated from the vertices' (a smooth
+    // sphere's), while the rays meet the flat triangles: near a terminator
+    // a direction above the shading normal's tangent plane can be below
+    // the triangle's own, and would be shadowed by the object's far side
+    // (the "shadow terminator" artefact; Hanika, "Hacking the Shadow
+    // Terminator", Ray Tracing Gems II, 2021). Such directions send no
+    // light with or without occluders, as a path tracer's reflection
+    // treats them (Cycles: no reflection below the geometric normal).
+    const glm::vec3 ng = facet_normal(scene_, p, n, 2.0f * offset + 1e-6f);
     double with = 0.0, without = 0.0;
     for (std::uint32_t s = 0; s < count; ++s) {
       const SourcePoint q = source_point(p, n, cmj_sample(s, count, pattern));
-      // Below the tangent plane, or the source's back: no light either way.
-      if (!(q.weight > 0.0f)) continue;
+      // Below either tangent plane, or the source's back: no light either
+      // way.
+      if (!(q.weight > 0.0f) || glm::dot(ng, q.direction) <= 0.0f) continue;
       without += q.weight;
       if (q.distance == 0.0f) {
         with += q.weight;

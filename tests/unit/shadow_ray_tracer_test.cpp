@@ -226,6 +226,31 @@ TEST(ShadowRayTracer, LightBehindTheTangentPlaneCountsInNeitherSum) {
   EXPECT_NEAR(half.trace(s, spot_down(2.0f, 1.0f), 1024).pixel(0, 0)[0], 0.5f, 0.01f);
 }
 
+// A smooth-shaded surface whose interpolated normal leans towards a low
+// sun: the part of the sun above the shading normal's horizon but below
+// the triangle's own plane would be shadowed by the triangle itself (the
+// shadow terminator); it counts in neither sum, so the point reads 1 from
+// what remains above both planes.
+TEST(ShadowRayTracer, LightBelowTheTrianglesPlaneCountsInNeitherSum) {
+  TriangleMesh mesh;
+  add_quad(mesh, -5.0f, 5.0f, -5.0f, 5.0f, 0.0f);
+  const ShadowRayTracer tracer(mesh);
+  SurfacePoints s = ground_points({{0.1f, 0.0f, 0.2f}});
+  s.position_error[0] = 1e-4f;
+  const float tilt = glm::radians(10.0f);
+  s.normal[0] = glm::vec3(-std::sin(tilt), std::cos(tilt), 0.0f);
+  ReferenceLight sun;
+  sun.type = LightType::Directional;
+  // Towards the light: 1 degree below the horizon, from -x; 10 degrees
+  // across, so part of it is above the plane.
+  const float elevation = glm::radians(-1.0f);
+  sun.direction = glm::vec3(std::cos(elevation), -std::sin(elevation), 0.0f);
+  sun.axis_u = glm::vec3(0.0f, 0.0f, 1.0f);
+  sun.axis_v = glm::normalize(glm::cross(sun.direction, sun.axis_u));
+  sun.size = glm::radians(10.0f);
+  EXPECT_EQ(tracer.trace(s, sun, 256).pixel(0, 0)[0], 1.0f);
+}
+
 // A square source emits from its front only: a point above a downward
 // spot light, facing it, gets no light (0, as a surface facing away).
 TEST(ShadowRayTracer, SquareLightSendsNothingBehindIt) {
