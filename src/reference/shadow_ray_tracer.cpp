@@ -297,7 +297,11 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       }
       if (!occluded(scene_, origin, direction, distance)) with += q.weight;
     }
-    return without > 0.0 ? static_cast<float>(with / without) : 0.0f;
+    // No light reaches the point, occluders or not: the ratio is
+    // undefined (-1: not judged). On a smooth mesh's terminator the
+    // triangle can face away from all of the source while the
+    // interpolated normal a rasterizer shades with sees some of it.
+    return without > 0.0 ? static_cast<float>(with / without) : -1.0f;
   };
 
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
@@ -313,10 +317,10 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
         const glm::vec3 p = surfaces.position[i], n = surfaces.normal[i];
         const float error = i < surfaces.position_error.size() ? surfaces.position_error[i] : 0.0f;
         const float v = shadow_factor(p, n, error, hash_pixel(static_cast<std::uint32_t>(i)));
-        out[0] = out[1] = out[2] = v;
+        out[0] = out[1] = out[2] = std::max(v, 0.0f);
         const bool inside_cone = !spot || glm::dot(glm::normalize(p - light.position),
                                                    light.direction) >= light.cos_cone;
-        out[3] = inside_cone ? 1.0f : 0.0f;
+        out[3] = inside_cone && v >= 0.0f ? 1.0f : 0.0f;
       }
       const std::int64_t done = ++rows_done;
       if (progress) progress(done, height);

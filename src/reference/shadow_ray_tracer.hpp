@@ -71,13 +71,14 @@ class ShadowRayTracer {
 
   // The shadow factor of each pixel's surface point (1 = lit) in r, g and
   // b: irradiance from the light's source with occluders over without.
-  // 0 where no part of the source is above the surface's tangent plane (as
-  // the `shadow` view has it). Alpha: 1 where the pixel sees geometry the
-  // light reaches (inside a spot's cone), 0 elsewhere; background pixels
-  // read (1, 1, 1, 0), as in the `shadow` view. `samples` rays per pixel
-  // for an area light, 1 for a point. Shadow rays start above the surface
-  // by the surface point's position_error plus the rounding bound below.
-  // Uses every core.
+  // Alpha: 1 where the pixel sees geometry the light reaches (inside a
+  // spot's cone, and some of the source above the surface's tangent
+  // plane and its triangle's), 0 elsewhere; where no light arrives the
+  // factor is undefined and reads 0 (as the `shadow` view has surfaces
+  // facing away); background pixels read (1, 1, 1, 0), as in the `shadow`
+  // view. `samples` rays per pixel for an area light, 1 for a point.
+  // Shadow rays start above the surface by the surface point's
+  // position_error plus the rounding bound below. Uses every core.
   [[nodiscard]] Image trace(const SurfacePoints& surfaces, const ReferenceLight& light, int samples,
                             const TraceProgress& progress = {}) const;
 

@@ -57,7 +57,9 @@ TEST(ShadowRayTracer, PointLightGivesTheExactHardShadow) {
   s.normal[3] = glm::vec3(0.0f, -1.0f, 0.0f);
   s.covered[4] = 0;
   const Image image = tracer.trace(s, spot_down(3.0f, 0.0f), 64);
-  const float expected[6][2] = {{0, 1}, {1, 1}, {0, 1}, {0, 1}, {1, 0}, {1, 0}};
+  // Value and alpha: the point facing away gets no light at all, so its
+  // factor is not judged.
+  const float expected[6][2] = {{0, 1}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 0}};
   for (int x = 0; x < 6; ++x) {
     EXPECT_EQ(image.pixel(x, 0)[0], expected[x][0]) << "point " << x;
     EXPECT_EQ(image.pixel(x, 0)[3], expected[x][1]) << "point " << x;
@@ -249,15 +251,26 @@ TEST(ShadowRayTracer, LightBelowTheTrianglesPlaneCountsInNeitherSum) {
   sun.axis_v = glm::normalize(glm::cross(sun.direction, sun.axis_u));
   sun.size = glm::radians(10.0f);
   EXPECT_EQ(tracer.trace(s, sun, 256).pixel(0, 0)[0], 1.0f);
+  // Lower, the sun is all below the triangle's plane though part of it is
+  // above the shading normal's horizon: no light arrives, not judged.
+  const float lower = glm::radians(-6.0f);
+  sun.direction = glm::vec3(std::cos(lower), -std::sin(lower), 0.0f);
+  sun.axis_v = glm::normalize(glm::cross(sun.direction, sun.axis_u));
+  const Image hidden = tracer.trace(s, sun, 256);
+  EXPECT_EQ(hidden.pixel(0, 0)[0], 0.0f);
+  EXPECT_EQ(hidden.pixel(0, 0)[3], 0.0f);
 }
 
 // A square source emits from its front only: a point above a downward
-// spot light, facing it, gets no light (0, as a surface facing away).
+// spot light, facing it, gets no light (0 and not judged, as a surface
+// facing away).
 TEST(ShadowRayTracer, SquareLightSendsNothingBehindIt) {
   const ShadowRayTracer tracer(TriangleMesh{});
   SurfacePoints s = ground_points({{0.5f, 3.0f, 0.0f}});
   s.normal[0] = glm::vec3(0.0f, -1.0f, 0.0f);
-  EXPECT_EQ(tracer.trace(s, spot_down(2.0f, 1.0f), 64).pixel(0, 0)[0], 0.0f);
+  const Image image = tracer.trace(s, spot_down(2.0f, 1.0f), 64);
+  EXPECT_EQ(image.pixel(0, 0)[0], 0.0f);
+  EXPECT_EQ(image.pixel(0, 0)[3], 0.0f) << "no light arrives: not judged";
 }
 
 // Shadow rays start above the point by its position error: a point that
