@@ -23,6 +23,7 @@
 #include "reference/shadow_metrics.hpp"
 #include "reference/shadow_ray_tracer.hpp"
 #include "reference/traced_reference.hpp"
+#include "render/accumulation.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
 
@@ -198,6 +199,7 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
   command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
   add_render_parameters(command, args.render);
   add_shadow_parameters(command, args.shadow);
+  add_accumulate_option(command, args.shadow);
   add_reference_options(command, args.reference);
 }
 
@@ -251,8 +253,7 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
     if (!item.skipped.empty()) continue;
     const std::string stem = item_stem(item.settings);
     view.view = View::Shadow;
-    renderer.render(view, item.settings);
-    Image shadow = renderer.read_view();
+    Image shadow = render_accumulated(renderer, view, item.settings);
     restrict_to(shadow, traced);
     item.traced = compare_shadow(shadow, traced);
     write(shadow, stem, &item, "shadow", true);

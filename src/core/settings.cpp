@@ -30,6 +30,7 @@ void check_ranges(const Settings& settings,
 void validate(const ShadowSettings& settings) {
   check_ranges(settings, kShadowFloatParams);
   check_ranges(settings, kShadowIntParams);
+  check_ranges(settings, kAccumulateParams);
   if (settings.soft && (!is_filterable(settings.technique) || settings.filter != Filter::Sat ||
                         settings.technique == Technique::Esm)) {
     throw UsageError(

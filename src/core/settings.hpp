@@ -130,6 +130,11 @@ struct ShadowSettings {
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
 
+  // Accumulated soft shadows (render, compare): this many sub-frames, each
+  // with the shadow maps rendered from another point of the light's source
+  // (light_size, sun_angle), averaged. 1: one frame from the light's centre.
+  int accumulate = 1;
+
   // Directional lights: shadow cascades along the camera's view (1-4).
   int cascades = 3;
   // Split scheme of the cascades: the blend lambda log + (1 - lambda)
@@ -280,6 +285,17 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntPara
      &ShadowSettings::pcss_filter_samples},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
      &ShadowSettings::cascades},
+}};
+
+inline constexpr int kMaxAccumulate = 4096;
+
+// Only render and compare take it, so it is a table of its own.
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kAccumulateParams{{
+    {"accumulate",
+     "average this many sub-frames, each with the shadow maps rendered from another point of "
+     "the light's source (--light-size, --sun-angle; stratified, the same points every run); "
+     "1: off",
+     1, kMaxAccumulate, &ShadowSettings::accumulate},
 }};
 
 inline constexpr int kMaxSsaoSamples = 64;  // SSAO_MAX_SAMPLES in shaders/shared/bindings.h
