@@ -134,6 +134,13 @@ struct ShadowSettings {
   // with the shadow maps rendered from another point of the light's source
   // (light_size, sun_angle), averaged. 1: one frame from the light's centre.
   int accumulate = 1;
+  // Set for each sub-frame by render_accumulated, not by the user: the
+  // sub-frame's index and its point of a spot light's square, in
+  // [0, 1]^2; the hard test dithers each pixel's point within its
+  // stratum (shaders/shadow/accumulate.glsl).
+  int subframe = 0;
+  float subframe_u = 0.5f;
+  float subframe_v = 0.5f;
 
   // Directional lights: shadow cascades along the camera's view (1-4).
   int cascades = 3;

@@ -78,11 +78,19 @@ Image render_accumulated(Renderer& renderer, const RenderSettings& render,
     std::vector<Light> lights = original;
     std::vector<SourceSample> samples;
     for (std::size_t l = 0; l < lights.size(); ++l) {
-      samples.push_back(source_sample(original[l], shadow, k, n, static_cast<int>(l)));
+      samples.push_back(source_sample(original[l], shadow, k, n, 0));
       lights[l] = samples.back().light;
     }
     renderer.set_lights(lights);
-    renderer.render(render, shadow, ssao);
+    ShadowSettings subframe = shadow;
+    subframe.subframe = k;
+    // Every light takes the same pattern, so the shaders' one point is
+    // each spot light's.
+    const glm::vec2 u =
+        cmj_sample(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n), 0u);
+    subframe.subframe_u = u.x;
+    subframe.subframe_v = u.y;
+    renderer.render(render, subframe, ssao);
     const Image image = renderer.read_view();
     if (!weighted) {
       for (std::size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += image.rgba[i] / n;

@@ -21,7 +21,7 @@ namespace penumbra {
 static_assert(sizeof(gpu::GpuLight) == 6 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuShadowView) == 3 * 64 + 2 * 16, "GpuShadowView must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
-static_assert(sizeof(gpu::GpuShadow) == 64, "GpuShadow must match std140");
+static_assert(sizeof(gpu::GpuShadow) == 80, "GpuShadow must match std140");
 
 namespace {
 
@@ -291,6 +291,11 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.pcf_samples = shadow.pcf_samples;
   shadow_block.pcss_blocker_samples = shadow.pcss_blocker_samples;
   shadow_block.pcss_filter_samples = shadow.pcss_filter_samples;
+  shadow_block.accumulate_u = shadow.subframe_u;
+  shadow_block.accumulate_v = shadow.subframe_v;
+  shadow_block.accumulate_cell =
+      shadow.accumulate > 1 ? 1.0f / std::sqrt(static_cast<float>(shadow.accumulate)) : 0.0f;
+  shadow_block.accumulate_frame = shadow.subframe;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
