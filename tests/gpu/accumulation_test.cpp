@@ -16,10 +16,11 @@ namespace {
 
 using testing::GpuTest;
 
-// On the default scene with a 1.5-wide spot light, 32 hard sub-frames
-// come within 0.016 RMSE of the traced reference (measured 0.0125 at this
-// small size), a fifth of one hard frame's error (0.087), and the
-// renderer's lights are left as they were.
+// On the default scene with a 1.5-wide spot light, 32 dithered hard
+// sub-frames come within 0.018 RMSE of the traced reference (measured
+// 0.0148 at this small size, most of it the dither's noise), under a
+// quarter of one hard frame's error (0.087), and the renderer's lights
+// are left as they were.
 TEST_F(GpuTest, AccumulatedHardShadowsApproachTheReference) {
   const Scene scene = *builtin_scene("default");
   Renderer renderer(scene);
@@ -41,8 +42,8 @@ TEST_F(GpuTest, AccumulatedHardShadowsApproachTheReference) {
   const double accumulated_rmse = compare_shadow(accumulated, reference.image).rmse;
   std::printf("RMSE against the reference: one hard frame %.4f, 32 accumulated %.4f\n",
               single_rmse, accumulated_rmse);
-  EXPECT_LT(accumulated_rmse, 0.016);
-  EXPECT_LT(accumulated_rmse, 0.2 * single_rmse);
+  EXPECT_LT(accumulated_rmse, 0.018);
+  EXPECT_LT(accumulated_rmse, 0.25 * single_rmse);
   EXPECT_EQ(renderer.scene().lights, scene.lights);
 }
 
