@@ -270,15 +270,13 @@ def main():
     diff_image.file_format = "PNG"
     diff_image.save()
 
-    # The pixels measured: inside the spot's cone (penumbra's alpha), seeing
-    # the same surface in both (normals within 0.03: not a silhouette that
-    # passes within a rasterizer's vertex snap of the pixel's centre), and
-    # receiving at least 10 % of the median unshadowed light. Below that
-    # the factor is a ratio of small numbers, and on a smooth-shaded
-    # tessellated sphere's terminator the two tracers differ by design:
-    # penumbra cuts the source at the shading normal's tangent plane (the
-    # G-buffer holds no other) and lets the facets shadow the rest, while
-    # Cycles also drops light below the facet's own plane.
+    # The pixels measured: judged by penumbra (inside the spot's cone,
+    # reached by some light), seeing the same surface in both (normals
+    # within 0.03: not a silhouette that passes within a rasterizer's
+    # vertex snap of the pixel's centre), and receiving at least 10 % of
+    # the median unshadowed light: below that the factor is a ratio of
+    # small numbers (along a smooth-shaded terminator) that a stray sample
+    # decides.
     judged = [i for i in range(width * height) if ref[4 * i + 3] >= 0.5]
     median = sorted(unshadowed[4 * i] for i in judged)[len(judged) // 2]
     aligned = [i for i in judged if same_surface(i)]
