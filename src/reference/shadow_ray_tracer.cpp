@@ -119,8 +119,8 @@ ReferenceLight make_reference_light(const Light& light, const LightView& view,
   // space.
   r.axis_u = glm::normalize(glm::vec3(view.view[0][0], view.view[1][0], view.view[2][0]));
   r.axis_v = glm::normalize(glm::vec3(view.view[0][1], view.view[1][1], view.view[2][1]));
-  r.size = light.type != LightType::Directional ? settings.light_size
-                                                : glm::radians(settings.sun_angle);
+  r.size =
+      light.type != LightType::Directional ? settings.light_size : glm::radians(settings.sun_angle);
   r.cos_cone = light.type == LightType::Spot ? std::cos(glm::radians(light.cone_degrees)) : -1.0f;
   return r;
 }
@@ -210,7 +210,8 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       q.direction = -light.direction;
       if (area) {
         const glm::vec3 c = uniform_cone(u, sun_one_minus_cos);
-        q.direction = glm::normalize(c.x * light.axis_u + c.y * light.axis_v - c.z * light.direction);
+        q.direction =
+            glm::normalize(c.x * light.axis_u + c.y * light.axis_v - c.z * light.direction);
       }
       q.distance = infinity;
       q.weight = glm::dot(n, q.direction);
@@ -235,8 +236,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       const glm::vec3 c = uniform_cone(u, cone);
       q.direction = glm::normalize(c.x * a + c.y * b + c.z * w);
       const float along = d * glm::dot(q.direction, w);
-      q.distance =
-          along - std::sqrt(std::max(0.0f, radius * radius - (d * d - along * along)));
+      q.distance = along - std::sqrt(std::max(0.0f, radius * radius - (d * d - along * along)));
       q.weight = glm::dot(n, q.direction);
     } else {
       // A square facing `direction` (spot), or a point: each point weighs

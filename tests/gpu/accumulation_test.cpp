@@ -40,8 +40,8 @@ TEST_F(GpuTest, AccumulatedHardShadowsApproachTheReference) {
   const Image accumulated = render_accumulated(renderer, rs, shadow);
   const double single_rmse = compare_shadow(single, reference.image).rmse;
   const double accumulated_rmse = compare_shadow(accumulated, reference.image).rmse;
-  std::printf("RMSE against the reference: one hard frame %.4f, 32 accumulated %.4f\n",
-              single_rmse, accumulated_rmse);
+  std::printf("RMSE against the reference: one hard frame %.4f, 32 accumulated %.4f\n", single_rmse,
+              accumulated_rmse);
   EXPECT_LT(accumulated_rmse, 0.018);
   EXPECT_LT(accumulated_rmse, 0.25 * single_rmse);
   EXPECT_EQ(renderer.scene().lights, scene.lights);

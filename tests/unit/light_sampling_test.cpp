@@ -63,8 +63,8 @@ TEST(LightSampling, UniformConeIsUniformInSolidAngle) {
     float widest = 0.0f;
     for (int i = 0; i < 64; ++i) {
       for (int j = 0; j < 64; ++j) {
-        const glm::vec3 w = uniform_cone(glm::vec2((i + 0.5f) / 64.0f, (j + 0.5f) / 64.0f),
-                                         one_minus_cos_max);
+        const glm::vec3 w =
+            uniform_cone(glm::vec2((i + 0.5f) / 64.0f, (j + 0.5f) / 64.0f), one_minus_cos_max);
         EXPECT_NEAR(glm::length(w), 1.0f, 1e-6f);
         const float sin_theta = glm::length(glm::vec2(w));
         EXPECT_LE(sin_theta, sin_max * (1.0f + 1e-5f));

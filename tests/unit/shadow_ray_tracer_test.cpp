@@ -105,8 +105,7 @@ TEST(ShadowRayTracer, SquareLightGivesTheFormFactorRatio) {
     const double whole = rectangle_form_factor(-0.5 - p, 0.5 - p, -0.5 - z0, 0.5 - z0, 2.0);
     const double visible =
         lo >= 0.5 ? 0.0 : rectangle_form_factor(lo - p, 0.5 - p, -0.5 - z0, 0.5 - z0, 2.0);
-    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], visible / whole, 0.004)
-        << "offset " << p;
+    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], visible / whole, 0.004) << "offset " << p;
   }
   // The weighting is what the test checks: at p = 0.25 it differs from
   // the unweighted fraction 0.75.
@@ -130,8 +129,8 @@ double cone_ratio(double p, glm::dvec3 axis, double alpha) {
     const double theta = alpha * (i + 0.5) / kTheta;
     for (int j = 0; j < kPhi; ++j) {
       const double phi = 2.0 * 3.14159265358979 * (j + 0.5) / kPhi;
-      const glm::dvec3 w = std::sin(theta) * (std::cos(phi) * u + std::sin(phi) * v) +
-                           std::cos(theta) * axis;
+      const glm::dvec3 w =
+          std::sin(theta) * (std::cos(phi) * u + std::sin(phi) * v) + std::cos(theta) * axis;
       const double weight = std::max(w.y, 0.0) * std::sin(theta);
       all += weight;
       if (p + w.x / w.y >= 0.0) lit += weight;
@@ -157,10 +156,9 @@ TEST(ShadowRayTracer, SphericalPointLightGivesTheWeightedFraction) {
   const Image image = tracer.trace(ground_points(points), light, 1024);
   for (std::size_t i = 0; i < offsets.size(); ++i) {
     const glm::dvec3 to_centre(-offsets[i], 2.0, 0.0);
-    const double expected = cone_ratio(offsets[i], glm::normalize(to_centre),
-                                       std::asin(0.5 / glm::length(to_centre)));
-    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 0.004)
-        << "offset " << offsets[i];
+    const double expected =
+        cone_ratio(offsets[i], glm::normalize(to_centre), std::asin(0.5 / glm::length(to_centre)));
+    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 0.004) << "offset " << offsets[i];
     EXPECT_EQ(image.pixel(static_cast<int>(i), 0)[3], 1.0f) << "a point light has no cone";
   }
 }
@@ -181,8 +179,7 @@ TEST(ShadowRayTracer, DirectionalAreaLightGivesTheWeightedDiscFraction) {
   const Image image = tracer.trace(ground_points(points), sun, 1024);
   for (std::size_t i = 0; i < offsets.size(); ++i) {
     const double expected = cone_ratio(offsets[i], glm::dvec3(0.0, 1.0, 0.0), 0.2);
-    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 0.004)
-        << "offset " << offsets[i];
+    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 0.004) << "offset " << offsets[i];
     EXPECT_EQ(image.pixel(static_cast<int>(i), 0)[3], 1.0f);
   }
 }

@@ -68,7 +68,7 @@ TEST(SourceSample, WeightsFollowTheFormFactorKernel) {
   EXPECT_NEAR(source_weight(spot, s, glm::vec3(0.0f), up), 0.25f, 1e-6f);  // 1 * 1 / 4
   // 45 degrees off: cos^2 = 1/2 over d^2 = 8.
   EXPECT_NEAR(source_weight(spot, s, glm::vec3(2.0f, 0.0f, 0.0f), up), 0.5f / 8.0f, 1e-6f);
-  EXPECT_EQ(source_weight(spot, s, glm::vec3(0.0f), -up), 0.0f);             // faces away
+  EXPECT_EQ(source_weight(spot, s, glm::vec3(0.0f), -up), 0.0f);              // faces away
   EXPECT_EQ(source_weight(spot, s, glm::vec3(0.0f, 3.0f, 0.0f), -up), 0.0f);  // behind the light
 }
 
