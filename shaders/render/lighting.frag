@@ -17,6 +17,7 @@
 #include "../shadow/noise.glsl"
 #include "../shadow/penumbra.glsl"
 #include "../shadow/pcf.glsl"
+#include "../shadow/accumulate.glsl"
 
 layout(std140, binding = BINDING_SHADOW_UBO) uniform ShadowBlock { GpuShadow shadow_params; };
 
@@ -277,6 +278,17 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
   }
   float z = s.depth - bias;
 #if SHADOW_TECHNIQUE == TECHNIQUE_HARD
+  if (shadow_params.accumulate_cell > 0.0 && view.perspective != 0 && view.radial_depth == 0) {
+    // An --accumulate sub-frame of a spot light: dithered within its stratum.
+    vec3 random = accumulate_hash(ivec2(gl_FragCoord.xy), shadow_params.accumulate_frame);
+    return shadow_hard_dithered(shadow_depth, v, view, s, z,
+                                receiver_depth_gradient(view, s, normal, shadow_params.max_slope),
+                                accumulate_light_offset(view, random.xy,
+                                                        vec2(shadow_params.accumulate_u,
+                                                             shadow_params.accumulate_v),
+                                                        shadow_params.accumulate_cell),
+                                random.z);
+  }
   return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);

@@ -83,6 +83,14 @@ struct GpuShadow {
   int pcss_blocker_samples;
   int pcss_filter_samples;
   int unused;
+  // --accumulate (src/render/accumulation.hpp): the sub-frame's point of a
+  // spot light's square, in [0, 1]^2; the width of its stratum as a
+  // fraction of the square (1/sqrt(N); 0: not accumulating); the sub-frame
+  // index, which seeds each pixel's dither.
+  float accumulate_u;
+  float accumulate_v;
+  float accumulate_cell;
+  int accumulate_frame;
 };
 
 // Screen-space ambient occlusion (see SsaoSettings in src/core/settings.hpp).

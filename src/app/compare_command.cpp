@@ -24,6 +24,7 @@
 #include "reference/shadow_metrics.hpp"
 #include "reference/shadow_ray_tracer.hpp"
 #include "reference/traced_reference.hpp"
+#include "render/accumulation.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
 
@@ -206,6 +207,7 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
   command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
   add_render_parameters(command, args.render);
   add_shadow_parameters(command, args.shadow);
+  add_accumulate_option(command, args.shadow);
   add_reference_options(command, args.reference);
   command.footer(
       "--soft applies to vsm, msm and msm16 with --filter sat, which are then measured soft "
@@ -256,31 +258,36 @@ std::vector<Item> plan_items(const CompareArgs& args) {
 // null), naming their final paths in the items.
 void measure_items(Renderer& renderer, const CompareArgs& args, const Image& traced,
                    std::vector<Item>& items, const StagedFolder* folder) {
-  auto write = [&](const Image& image, const std::string& name, Item* item, const char* role) {
+  // The images compared (shadows and references) also go out as 32-bit
+  // float EXR, unclamped and unquantized, for measuring them elsewhere;
+  // the error images are colour maps and go out as PNG only.
+  auto write = [&](const Image& image, const std::string& name, Item* item, const char* role,
+                   bool compared) {
     if (folder == nullptr) return;
     write_png(image, (fs::path(folder->path()) / (name + ".png")).string(), PngEncoding::Linear);
+    if (compared) write_exr(image, (fs::path(folder->path()) / (name + ".exr")).string());
     if (item != nullptr) item->images[role] = folder->final_path(name + ".png");
   };
-  write(traced, "reference-traced", nullptr, "");
+  write(traced, "reference-traced", nullptr, "", true);
   RenderSettings view = args.render;
   for (Item& item : items) {
     if (!item.skipped.empty()) continue;
     const std::string stem = item_stem(item.settings);
     view.view = View::Shadow;
-    renderer.render(view, item.settings);
-    Image shadow = renderer.read_view();
+    Image shadow = render_accumulated(renderer, view, item.settings);
     restrict_to(shadow, traced);
     item.traced = compare_shadow(shadow, traced);
-    write(shadow, stem, &item, "shadow");
-    write(error_image(shadow, traced), stem + "-error-traced", &item, "error_traced");
+    write(shadow, stem, &item, "shadow", true);
+    write(error_image(shadow, traced), stem + "-error-traced", &item, "error_traced", false);
     if (has_filtered_reference(item.settings)) {
       view.view = View::ShadowReference;
       renderer.render(view, item.settings);
       Image filtered = renderer.read_view();
       restrict_to(filtered, traced);
       item.filtered = compare_shadow(shadow, filtered);
-      write(filtered, stem + "-reference-filtered", &item, "reference_filtered");
-      write(error_image(shadow, filtered), stem + "-error-filtered", &item, "error_filtered");
+      write(filtered, stem + "-reference-filtered", &item, "reference_filtered", true);
+      write(error_image(shadow, filtered), stem + "-error-filtered", &item, "error_filtered",
+            false);
     }
   }
 }

@@ -125,6 +125,10 @@ void add_shadow_parameters(CLI::App& app, ShadowSettings& settings) {
   add_params(app, settings, kShadowFloatParams);
 }
 
+void add_accumulate_option(CLI::App& app, ShadowSettings& settings) {
+  add_params(app, settings, kAccumulateParams);
+}
+
 void add_render_parameters(CLI::App& app, RenderSettings& settings) {
   add_params(app, settings, kRenderIntParams);
 }

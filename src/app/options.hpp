@@ -27,6 +27,8 @@ void add_ssao_options(CLI::App& app, SsaoSettings& settings, NamedOptions& named
 // The numeric parameters alone, for commands that take the technique,
 // filter or view their own way.
 void add_shadow_parameters(CLI::App& app, ShadowSettings& settings);
+// --accumulate (render and compare only).
+void add_accumulate_option(CLI::App& app, ShadowSettings& settings);
 void add_render_parameters(CLI::App& app, RenderSettings& settings);
 void add_reference_options(CLI::App& app, ReferenceSettings& settings);
 

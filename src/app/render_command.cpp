@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "io/image.hpp"
+#include "render/accumulation.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/scene_file.hpp"
@@ -22,6 +23,7 @@ void add_render_command_options(CLI::App& command, RenderArgs& args) {
   command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
+  add_accumulate_option(command, args.shadow);
   add_ssao_options(command, args.ssao, args.named);
   add_scene_options(command, args.scene_options);
 }
@@ -44,8 +46,7 @@ int run_render_command(RenderArgs& args) {
                  context->platform().c_str(), context->version().c_str());
   }
   Renderer renderer(scene);
-  renderer.render(args.render, args.shadow, args.ssao);
-  Image image = renderer.read_view();
+  Image image = render_accumulated(renderer, args.render, args.shadow, args.ssao);
   if (context->error_count() > 0) {
     throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
                        " error(s); last: " + context->last_error());

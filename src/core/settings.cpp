@@ -30,6 +30,7 @@ void check_ranges(const Settings& settings,
 void validate(const ShadowSettings& settings) {
   check_ranges(settings, kShadowFloatParams);
   check_ranges(settings, kShadowIntParams);
+  check_ranges(settings, kAccumulateParams);
   if (settings.soft && !supports_soft_shadows(settings.technique, settings.filter)) {
     throw UsageError(
         "--soft needs --technique vsm, msm or msm16 with --filter sat (the penumbra-sized "

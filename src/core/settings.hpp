@@ -150,6 +150,18 @@ struct ShadowSettings {
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
 
+  // Accumulated soft shadows (render, compare): this many sub-frames, each
+  // with the shadow maps rendered from another point of the light's source
+  // (light_size, sun_angle), averaged. 1: one frame from the light's centre.
+  int accumulate = 1;
+  // Set for each sub-frame by render_accumulated, not by the user: the
+  // sub-frame's index and its point of a spot light's square, in
+  // [0, 1]^2; the hard test dithers each pixel's point within its
+  // stratum (shaders/shadow/accumulate.glsl).
+  int subframe = 0;
+  float subframe_u = 0.5f;
+  float subframe_v = 0.5f;
+
   // Directional lights: shadow cascades along the camera's view (1-4).
   int cascades = 3;
   // Split scheme of the cascades: the blend lambda log + (1 - lambda)
@@ -267,7 +279,7 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloa
      0.0f, 100.0f, &ShadowSettings::light_size},
     {"sun-angle",
      "angular diameter of a directional light's source in degrees (0: a point); the reference "
-     "traces a square of directions 2 tan(angle / 2) wide at unit distance",
+     "traces the disc of directions this wide",
      0.0f, 45.0f, &ShadowSettings::sun_angle},
     {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
      &ShadowSettings::pcf_width},
@@ -310,6 +322,17 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntPara
      kMaxShadowSamples, &ShadowSettings::pcss_filter_samples},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
      &ShadowSettings::cascades},
+}};
+
+inline constexpr int kMaxAccumulate = 4096;
+
+// Only render and compare take it, so it is a table of its own.
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kAccumulateParams{{
+    {"accumulate",
+     "average this many sub-frames, each with the shadow maps rendered from another point of "
+     "the light's source (--light-size, --sun-angle; stratified, the same points every run); "
+     "1: off",
+     1, kMaxAccumulate, &ShadowSettings::accumulate},
 }};
 
 inline constexpr int kMaxSsaoSamples = 64;  // SSAO_MAX_SAMPLES in shaders/shared/bindings.h

@@ -1,5 +1,6 @@
 #include "reference/light_sampling.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace penumbra {
@@ -71,6 +72,34 @@ glm::vec2 cmj_sample(std::uint32_t s, std::uint32_t n, std::uint32_t pattern) {
   const float y = (static_cast<float>(s) + jy) / static_cast<float>(n);
   // Float rounding can reach 1 exactly; the square is half-open.
   return glm::min(glm::vec2(x, y), glm::vec2(1.0f - 0x1p-24f));
+}
+
+glm::vec2 concentric_disk(glm::vec2 u) {
+  const glm::vec2 a = 2.0f * u - 1.0f;
+  if (a.x == 0.0f && a.y == 0.0f) return glm::vec2(0.0f);
+  const float quarter_pi = 0.78539816f;
+  float r = 0.0f, phi = 0.0f;
+  if (std::abs(a.x) > std::abs(a.y)) {
+    r = a.x;
+    phi = quarter_pi * (a.y / a.x);
+  } else {
+    r = a.y;
+    phi = 2.0f * quarter_pi - quarter_pi * (a.x / a.y);
+  }
+  return r * glm::vec2(std::cos(phi), std::sin(phi));
+}
+
+glm::vec3 uniform_cone(glm::vec2 u, float one_minus_cos_max) {
+  const glm::vec2 d = concentric_disk(u);
+  const float r2 = glm::dot(d, d);
+  if (r2 == 0.0f) return glm::vec3(0.0f, 0.0f, 1.0f);
+  // 1 - cos(theta) and sin(theta) from it without cancellation:
+  // sin^2 = (1 - cos)(1 + cos).
+  const float one_minus_cos = r2 * one_minus_cos_max;
+  const float cos_theta = 1.0f - one_minus_cos;
+  const float sin_theta = std::sqrt(std::max(0.0f, one_minus_cos * (2.0f - one_minus_cos)));
+  const glm::vec2 xy = d * (sin_theta / std::sqrt(r2));
+  return glm::vec3(xy, cos_theta);
 }
 
 }  // namespace penumbra

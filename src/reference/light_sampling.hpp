@@ -14,4 +14,18 @@ namespace penumbra {
 // Point s (0 <= s < n) of pattern `pattern`'s n points, in [0, 1)^2.
 glm::vec2 cmj_sample(std::uint32_t s, std::uint32_t n, std::uint32_t pattern);
 
+// A point of the unit disk from a point of the unit square, area-uniform
+// and keeping strata apart (Shirley & Chiu, "A Low Distortion Map Between
+// Disk and Square", JGT 1997: concentric squares to concentric circles).
+glm::vec2 concentric_disk(glm::vec2 u);
+
+// A unit direction uniform in solid angle over the cone of directions
+// within angle theta_max of +z, from a point of the unit square; the cone
+// is given by 1 - cos(theta_max) (accurate for small cones, where cos is
+// 1 to float precision). The disk's area maps to the cone's solid angle in
+// proportion (1 - cos(theta) = r^2 (1 - cos(theta_max)); pbrt-v4,
+// SampleUniformCone, through the concentric disk), so the square's strata
+// stay strata of the cone.
+glm::vec3 uniform_cone(glm::vec2 u, float one_minus_cos_max);
+
 }  // namespace penumbra

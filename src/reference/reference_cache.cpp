@@ -89,6 +89,7 @@ std::uint64_t reference_key(const TriangleMesh& mesh, const SurfacePoints& surfa
     if (!surfaces.covered[i]) continue;
     h.value(surfaces.position[i]);
     h.value(surfaces.normal[i]);
+    h.value(surfaces.position_error[i]);
   }
   return h.digest();
 }

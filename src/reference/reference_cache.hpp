@@ -17,8 +17,10 @@
 
 namespace penumbra {
 
-// Bumped whenever the tracer's output for the same inputs changes.
-inline constexpr std::uint32_t kReferenceFormatVersion = 1;
+// Bumped whenever the tracer's output for the same inputs changes (2: the
+// radiometric shadow factor and ray origins offset by the position's error
+// bound).
+inline constexpr std::uint32_t kReferenceFormatVersion = 2;
 
 std::uint64_t reference_key(const TriangleMesh& mesh, const SurfacePoints& surfaces,
                             const ReferenceLight& light, int samples);

@@ -3,11 +3,16 @@
 // the surfaces the camera sees (rebuilt from the G-buffer) to the light,
 // traced with Intel Embree 3 through the very triangles the GPU draws.
 //
-// A point light (size 0) takes one ray per pixel: the exact hard shadow. An
-// area light takes stratified rays to points spread over it: the fraction
-// of the light visible, the physically right soft shadow (the visibility
-// alone, not weighted by distance or angle, so it stays comparable with a
-// shadow factor).
+// The shadow factor is radiometric: the irradiance a point receives from
+// the light's source with the occluders, over the irradiance without them.
+// Each point of a Lambertian source adds L cos(theta_source)
+// cos(theta_receiver) / d^2 dA (the point-to-area form factor's kernel);
+// parts of the source below the receiver's tangent plane, or whose
+// emitting side faces away from the receiver, add nothing with or without
+// occluders, so they are in neither sum. Both sums use the same stratified
+// samples (a ratio estimator): an unoccluded point reads exactly 1, and
+// only the occluded part carries noise. A point light (size 0) takes one
+// ray per pixel: the exact hard shadow.
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
@@ -35,21 +40,21 @@ struct ReferenceLight {
   // shadow map's x and y, so the square lines up with the map's texels.
   glm::vec3 axis_u{1.0f, 0.0f, 0.0f};
   glm::vec3 axis_v{0.0f, 0.0f, 1.0f};
-  // Spot: the square's width in world units. Point: the diameter of a
-  // spherical source. Directional: the square of directions' width at unit
-  // distance (2 tan(angular width / 2)). 0: a point.
+  // Spot: the width of a square source facing `direction`, in world
+  // units. Point: the diameter of a spherical source. Directional: the
+  // angular diameter, in radians, of the disc of directions the sun fills
+  // (a cone around -direction). 0: a point.
   float size = 0.0f;
   // Spot: cos of the cone's half-angle; points outside the cone receive no
   // light, so their shadow is not judged (alpha 0). -1: no cone.
   float cos_cone = -1.0f;
 };
 
-// The scene's light with the source size the techniques give it (as PCSS
-// models it, shaders/shadow/penumbra.glsl): a spot light's square is
-// `light_size` wide, a point light's sphere `light_size` in diameter; a
-// directional light's square of directions is
-// 2 tan(sun_angle / 2) wide at unit distance. Oriented like its fitted
-// shadow map.
+// The scene's light with the source size the techniques give it: a spot
+// light's square is `light_size` wide, a point light's sphere
+// `light_size` in diameter, a directional light's disc of directions
+// `sun_angle` degrees across. The square is oriented like the light's
+// fitted shadow map.
 ReferenceLight make_reference_light(const Light& light, const LightView& view,
                                     const ShadowSettings& settings);
 
@@ -64,25 +69,32 @@ class ShadowRayTracer {
   ShadowRayTracer(const ShadowRayTracer&) = delete;
   ShadowRayTracer& operator=(const ShadowRayTracer&) = delete;
 
-  // The visible fraction of the light from each pixel's surface point (1 =
-  // lit) in r, g and b; 0 where the surface faces away from the light (as
-  // the `shadow` view has it), and for an area light, the samples below the
-  // surface's tangent plane count as hidden. Alpha: 1 where the pixel sees
-  // geometry the light reaches (inside a spot's cone), 0 elsewhere;
-  // background pixels read (1, 1, 1, 0), as in the `shadow` view.
-  // `samples` rays per pixel for an area light, 1 for a point. Uses every
-  // core.
+  // The shadow factor of each pixel's surface point (1 = lit) in r, g and
+  // b: irradiance from the light's source with occluders over without.
+  // Alpha: 1 where the pixel sees geometry the light reaches (inside a
+  // spot's cone, and some of the source above the surface's tangent
+  // plane and its triangle's), 0 elsewhere; where no light arrives the
+  // factor is undefined and reads 0 (as the `shadow` view has surfaces
+  // facing away); background pixels read (1, 1, 1, 0), as in the `shadow`
+  // view. `samples` rays per pixel for an area light, 1 for a point.
+  // Shadow rays start above the surface by the surface point's
+  // position_error plus the rounding bound below. Uses every core.
   [[nodiscard]] Image trace(const SurfacePoints& surfaces, const ReferenceLight& light, int samples,
                             const TraceProgress& progress = {}) const;
 
-  // How far shadow rays start from the surface, along its normal, to clear
-  // the surface's own triangles: 1e-4 of the scene's bounding-box diagonal.
-  [[nodiscard]] float ray_offset() const { return ray_offset_; }
+  // A bound of the rounding error of the point p (normal n) as stored and
+  // as Embree tests a ray from it against a triangle, along n: pbrt-v4's
+  // gamma(7) times the point's coordinates seen along n (its bound for a
+  // point interpolated on a triangle), plus gamma(7) of the largest vertex
+  // coordinate, since Embree's robust test works in coordinates relative
+  // to the ray's origin that reach the far corners of a large triangle
+  // such as a ground plane.
+  [[nodiscard]] float rounding_error(const glm::vec3& p, const glm::vec3& n) const;
 
  private:
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
-  float ray_offset_ = 0.0f;
+  float max_coordinate_ = 0.0f;  // the largest |x|, |y| or |z| of a vertex
 };
 
 }  // namespace penumbra

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "filter/gaussian.hpp"
+#include "render/depth_position_error.hpp"
 #include "shadow/moment_math.hpp"
 #include "shadow/poisson_disc.hpp"
 #include "shadow/representation.hpp"
@@ -21,7 +22,7 @@ namespace penumbra {
 static_assert(sizeof(gpu::GpuLight) == 6 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuShadowView) == 3 * 64 + 2 * 16, "GpuShadowView must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
-static_assert(sizeof(gpu::GpuShadow) == 64, "GpuShadow must match std140");
+static_assert(sizeof(gpu::GpuShadow) == 80, "GpuShadow must match std140");
 
 namespace {
 
@@ -292,6 +293,11 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.pcf_samples = shadow.pcf_samples;
   shadow_block.pcss_blocker_samples = shadow.pcss_blocker_samples;
   shadow_block.pcss_filter_samples = shadow.pcss_filter_samples;
+  shadow_block.accumulate_u = shadow.subframe_u;
+  shadow_block.accumulate_v = shadow.subframe_v;
+  shadow_block.accumulate_cell =
+      shadow.accumulate > 1 ? 1.0f / std::sqrt(static_cast<float>(shadow.accumulate)) : 0.0f;
+  shadow_block.accumulate_frame = shadow.subframe;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
@@ -422,6 +428,8 @@ SurfacePoints Renderer::read_surfaces() const {
   const Image depth = read_texture(gbuffer_pass_.depth().id(), width, height, GL_DEPTH_COMPONENT);
   const Image normal = read_texture(gbuffer_pass_.normal().id(), width, height, GL_RGBA);
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(last_view_projection_));
+  GLint subpixel_bits = 4;  // the least OpenGL allows
+  glGetIntegerv(GL_SUBPIXEL_BITS, &subpixel_bits);
   SurfacePoints surfaces(width, height);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
@@ -436,6 +444,9 @@ SurfacePoints Renderer::read_surfaces() const {
       surfaces.position[i] = glm::vec3(glm::dvec3(p) / p.w);
       surfaces.normal[i] = glm::normalize(glm::vec3(n[0], n[1], n[2]));
       surfaces.covered[i] = 1;
+      surfaces.position_error[i] =
+          depth_position_error(inverse, glm::dvec2(ndc), double(depth.pixel(x, y)[0]),
+                               surfaces.normal[i], width, height, subpixel_bits);
     }
   }
   return surfaces;

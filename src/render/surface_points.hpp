@@ -17,6 +17,12 @@ struct SurfacePoints {
   std::vector<glm::vec3> position;    // world space
   std::vector<glm::vec3> normal;      // unit, facing the camera's side of the surface
   std::vector<std::uint8_t> covered;  // 1 where the pixel sees geometry
+  // A bound of the distance along the normal between `position` and the
+  // triangle the pixel was rasterized from: the error of rebuilding it from
+  // the depth buffer (render/depth_position_error.hpp). 0 for points known
+  // exactly. The reference tracer starts shadow rays at least this far
+  // above the surface.
+  std::vector<float> position_error;
 
   SurfacePoints() = default;
   SurfacePoints(int w, int h)
@@ -24,7 +30,8 @@ struct SurfacePoints {
         height(h),
         position(static_cast<std::size_t>(w) * h),
         normal(static_cast<std::size_t>(w) * h),
-        covered(static_cast<std::size_t>(w) * h, 0) {}
+        covered(static_cast<std::size_t>(w) * h, 0),
+        position_error(static_cast<std::size_t>(w) * h, 0) {}
   [[nodiscard]] std::size_t size() const { return covered.size(); }
 };
 

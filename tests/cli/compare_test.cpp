@@ -129,6 +129,19 @@ TEST(Compare, WritesTableJsonImagesAndCache) {
   EXPECT_EQ(ok, 4);
   EXPECT_TRUE(fs::exists(fs::path(dir) / "reference-traced.png"));
   EXPECT_TRUE(fs::exists(fs::path(dir) / "msm-sat-w2-error-filtered.png"));
+  // The compared images also as OpenEXR (magic 76 2f 31 01); the
+  // colour-mapped error images only as PNG.
+  for (const char* name :
+       {"reference-traced", "hard", "msm-sat-w2", "msm-sat-w2-reference-filtered"}) {
+    const fs::path exr = fs::path(dir) / (std::string(name) + ".exr");
+    std::ifstream file(exr, std::ios::binary);
+    ASSERT_TRUE(file) << exr;
+    unsigned char magic[4] = {};
+    file.read(reinterpret_cast<char*>(magic), 4);
+    EXPECT_TRUE(magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01)
+        << exr;
+  }
+  EXPECT_FALSE(fs::exists(fs::path(dir) / "hard-error-traced.exr"));
   int cached = 0;
   for (const auto& entry : fs::directory_iterator(cache)) {
     EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);

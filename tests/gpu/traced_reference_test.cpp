@@ -34,8 +34,8 @@ TEST_F(GpuTest, SurfacePointsLieOnTheScene) {
   ASSERT_EQ(s.width, 192);
   ASSERT_EQ(s.height, 128);
   const Bounds bounds = renderer.mesh().bounds();
-  long covered = 0, ground = 0;
-  double worst_ground = 0.0;
+  long covered = 0, ground = 0, outside_bound = 0;
+  double worst_ground = 0.0, worst_ratio = 0.0, largest_bound = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (!s.covered[i]) continue;
     ++covered;
@@ -47,13 +47,22 @@ TEST_F(GpuTest, SurfacePointsLieOnTheScene) {
     if (s.normal[i].y > 0.999f && p.y < 0.1f) {
       ++ground;
       worst_ground = std::max(worst_ground, std::abs(double(p.y)));
+      // The rebuilt point lies within its error bound of the ground's plane
+      // (shadow rays start that far above it).
+      const double ratio = std::abs(double(p.y)) / s.position_error[i];
+      worst_ratio = std::max(worst_ratio, ratio);
+      largest_bound = std::max(largest_bound, double(s.position_error[i]));
+      outside_bound += ratio > 1.0;
     }
   }
   EXPECT_GT(ground, covered / 2) << "the ground fills most of the default view";
   // The depth buffer's rounding, a few millionths of the distance to the
-  // camera, well below the tracer's ray offset (3.4e-3 here).
-  std::printf("ground pixels off the ground by up to %.2e\n", worst_ground);
+  // camera.
+  std::printf(
+      "ground pixels off the ground by up to %.2e, %.2f of their error bound (at most %.2e)\n",
+      worst_ground, worst_ratio, largest_bound);
   EXPECT_LT(worst_ground, 1e-4);
+  EXPECT_EQ(outside_bound, 0) << "ground points farther off the plane than their error bound";
 }
 
 // A 4096^2 map's hard shadow agrees with the traced hard shadow on at

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -49,6 +50,34 @@ TEST(LightSampling, PatternsAreDeterministicAndDistinct) {
   mean /= 256.0;
   EXPECT_NEAR(mean.x, 0.5, 0.01);
   EXPECT_NEAR(mean.y, 0.5, 0.01);
+}
+
+// The cone map is uniform in solid angle: on a 64 x 64 grid of the
+// square, every direction is unit and inside the cone, and half of them
+// lie inside the inner cone of half the solid angle. On a cone as narrow
+// as a 1-degree sun its rim keeps sin(theta_max) to float precision.
+TEST(LightSampling, UniformConeIsUniformInSolidAngle) {
+  for (float one_minus_cos_max : {0.5f, 0.05f, 3.8e-5f}) {
+    const float sin_max = std::sqrt(one_minus_cos_max * (2.0f - one_minus_cos_max));
+    int inner = 0, total = 0;
+    float widest = 0.0f;
+    for (int i = 0; i < 64; ++i) {
+      for (int j = 0; j < 64; ++j) {
+        const glm::vec3 w =
+            uniform_cone(glm::vec2((i + 0.5f) / 64.0f, (j + 0.5f) / 64.0f), one_minus_cos_max);
+        EXPECT_NEAR(glm::length(w), 1.0f, 1e-6f);
+        const float sin_theta = glm::length(glm::vec2(w));
+        EXPECT_LE(sin_theta, sin_max * (1.0f + 1e-5f));
+        widest = std::max(widest, sin_theta);
+        // 1 - cos(theta) from sin without cancellation.
+        const float one_minus_cos = sin_theta * sin_theta / (1.0f + w.z);
+        inner += one_minus_cos < 0.5f * one_minus_cos_max;
+        ++total;
+      }
+    }
+    EXPECT_NEAR(static_cast<double>(inner) / total, 0.5, 0.02) << one_minus_cos_max;
+    EXPECT_NEAR(widest, sin_max, 0.03f * sin_max) << one_minus_cos_max;
+  }
 }
 
 }  // namespace

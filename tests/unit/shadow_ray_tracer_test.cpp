@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/builtin_scenes.hpp"
@@ -56,39 +57,92 @@ TEST(ShadowRayTracer, PointLightGivesTheExactHardShadow) {
   s.normal[3] = glm::vec3(0.0f, -1.0f, 0.0f);
   s.covered[4] = 0;
   const Image image = tracer.trace(s, spot_down(3.0f, 0.0f), 64);
-  const float expected[6][2] = {{0, 1}, {1, 1}, {0, 1}, {0, 1}, {1, 0}, {1, 0}};
+  // Value and alpha: the point facing away gets no light at all, so its
+  // factor is not judged.
+  const float expected[6][2] = {{0, 1}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 0}};
   for (int x = 0; x < 6; ++x) {
     EXPECT_EQ(image.pixel(x, 0)[0], expected[x][0]) << "point " << x;
     EXPECT_EQ(image.pixel(x, 0)[3], expected[x][1]) << "point " << x;
   }
 }
 
-// A square light 1 wide at height 2 over an occluding half-plane x < 0 at
-// height 1: from the point (p, 0, 0), rays cross height 1 at (p + l) / 2,
-// so the light's part l < -p is hidden and the visible fraction is
-// 0.5 + p (for |p| <= 0.5). Stratified samples get it to within 1/N, plus
-// what the ray offset (here 7e-4 up) shifts.
-TEST(ShadowRayTracer, AreaLightGivesTheVisibleFraction) {
+// The form factor from a point to a rectangle parallel to its surface,
+// with one corner straight above the point, X and Y its sides over the
+// height (the standard closed form; e.g. Howell's catalogue, C-11), times
+// pi: the irradiance a Lambertian rectangle of unit radiance gives.
+double corner_form_factor(double x, double y) {
+  const double a = std::sqrt(1.0 + x * x), b = std::sqrt(1.0 + y * y);
+  return 0.5 * (x / a * std::atan(y / a) + y / b * std::atan(x / b));
+}
+
+// The same for the rectangle [x0, x1] x [z0, z1] (relative to the point)
+// at height h, by signed corner rectangles.
+double rectangle_form_factor(double x0, double x1, double z0, double z1, double h) {
+  auto corner = [h](double x, double z) {
+    const double sign = (x < 0.0 ? -1.0 : 1.0) * (z < 0.0 ? -1.0 : 1.0);
+    return sign * corner_form_factor(std::abs(x) / h, std::abs(z) / h);
+  };
+  return corner(x1, z1) - corner(x0, z1) - corner(x1, z0) + corner(x0, z0);
+}
+
+// A square light 1 wide at height 2, facing down, over an occluding
+// half-plane x < 0 at height 1: from the point (p, 0, 0.3), rays cross
+// height 1 at (p + l) / 2, so the light's part l < -p is hidden. The
+// shadow factor is the form factor of the visible part over the whole
+// square's; the old unweighted visible fraction 0.5 + p is off by 0.027 at
+// p = +-0.25, beyond the tolerance.
+TEST(ShadowRayTracer, SquareLightGivesTheFormFactorRatio) {
   TriangleMesh mesh;
   add_quad(mesh, -5.0f, 0.0f, -2.5f, 2.5f, 1.0f);
   const ShadowRayTracer tracer(mesh);
   const std::vector<float> offsets = {-0.6f, -0.25f, 0.0f, 0.1f, 0.25f, 0.6f};
   std::vector<glm::vec3> points;
   for (float p : offsets) points.push_back({p, 0.0f, 0.3f});
-  const Image image = tracer.trace(ground_points(points), spot_down(2.0f, 1.0f), 256);
+  const Image image = tracer.trace(ground_points(points), spot_down(2.0f, 1.0f), 1024);
   for (std::size_t i = 0; i < offsets.size(); ++i) {
-    const float expected = std::clamp(0.5f + offsets[i], 0.0f, 1.0f);
-    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 2.0f / 256.0f)
-        << "offset " << offsets[i];
+    const double p = offsets[i], z0 = 0.3;
+    const double lo = std::max(-0.5, -p);
+    const double whole = rectangle_form_factor(-0.5 - p, 0.5 - p, -0.5 - z0, 0.5 - z0, 2.0);
+    const double visible =
+        lo >= 0.5 ? 0.0 : rectangle_form_factor(lo - p, 0.5 - p, -0.5 - z0, 0.5 - z0, 2.0);
+    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], visible / whole, 0.004) << "offset " << p;
   }
+  // The weighting is what the test checks: at p = 0.25 it differs from
+  // the unweighted fraction 0.75.
+  EXPECT_GT(std::abs(rectangle_form_factor(-0.5, 0.25, -0.8, 0.2, 2.0) /
+                         rectangle_form_factor(-0.75, 0.25, -0.8, 0.2, 2.0) -
+                     0.75),
+            0.02);
+}
+
+// The cos(theta_receiver)-weighted fraction of a cone of directions
+// (around `axis`, half-angle `alpha`) that a receiver at (p, 0, .) facing
+// up sees past a half-plane x < 0 at height 1, by quadrature over the
+// cone: a direction w crosses height 1 at x = p + w.x / w.y.
+double cone_ratio(double p, glm::dvec3 axis, double alpha) {
+  const glm::dvec3 helper =
+      std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+  const glm::dvec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
+  constexpr int kTheta = 400, kPhi = 800;
+  double lit = 0.0, all = 0.0;
+  for (int i = 0; i < kTheta; ++i) {
+    const double theta = alpha * (i + 0.5) / kTheta;
+    for (int j = 0; j < kPhi; ++j) {
+      const double phi = 2.0 * 3.14159265358979 * (j + 0.5) / kPhi;
+      const glm::dvec3 w =
+          std::sin(theta) * (std::cos(phi) * u + std::sin(phi) * v) + std::cos(theta) * axis;
+      const double weight = std::max(w.y, 0.0) * std::sin(theta);
+      all += weight;
+      if (p + w.x / w.y >= 0.0) lit += weight;
+    }
+  }
+  return lit / all;
 }
 
 // A point light with a spherical source 1 in diameter at height 2 over the
-// same half-plane: from (p, 0, 0) the sphere is a disk of radius 0.5 facing
-// the point, of which the part beyond the edge's image at -p is visible:
-// the disk-segment fraction 1/2 + (asin(a) + a sqrt(1 - a^2)) / pi, a = 2p
-// (exact at p = 0; for p != 0 the disk tilts by atan(p / 2), within 0.02).
-TEST(ShadowRayTracer, SphericalPointLightGivesTheVisibleFraction) {
+// same half-plane: the sphere fills a cone of directions, each weighted by
+// cos(theta_receiver).
+TEST(ShadowRayTracer, SphericalPointLightGivesTheWeightedFraction) {
   TriangleMesh mesh;
   add_quad(mesh, -5.0f, 0.0f, -2.5f, 2.5f, 1.0f);
   const ShadowRayTracer tracer(mesh);
@@ -101,18 +155,17 @@ TEST(ShadowRayTracer, SphericalPointLightGivesTheVisibleFraction) {
   for (float p : offsets) points.push_back({p, 0.0f, 0.3f});
   const Image image = tracer.trace(ground_points(points), light, 1024);
   for (std::size_t i = 0; i < offsets.size(); ++i) {
-    const double a = std::clamp(2.0 * offsets[i], -1.0, 1.0);
-    const double expected = 0.5 + (std::asin(a) + a * std::sqrt(1.0 - a * a)) / 3.14159265358979;
-    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 0.02) << "offset " << offsets[i];
+    const glm::dvec3 to_centre(-offsets[i], 2.0, 0.0);
+    const double expected =
+        cone_ratio(offsets[i], glm::normalize(to_centre), std::asin(0.5 / glm::length(to_centre)));
+    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 0.004) << "offset " << offsets[i];
     EXPECT_EQ(image.pixel(static_cast<int>(i), 0)[3], 1.0f) << "a point light has no cone";
   }
 }
 
-// A directional light whose square of directions is 0.4 wide at unit
-// distance, shining straight down past the same half-plane: from (p, 0, 0)
-// a ray leaving at tangent u crosses height 1 at p + u, so the visible
-// fraction is (0.2 + p) / 0.4.
-TEST(ShadowRayTracer, DirectionalAreaLightGivesTheVisibleFraction) {
+// A directional light whose disc of directions is 0.4 radians across,
+// shining straight down past the same half-plane.
+TEST(ShadowRayTracer, DirectionalAreaLightGivesTheWeightedDiscFraction) {
   TriangleMesh mesh;
   add_quad(mesh, -5.0f, 0.0f, -2.5f, 2.5f, 1.0f);
   const ShadowRayTracer tracer(mesh);
@@ -120,27 +173,115 @@ TEST(ShadowRayTracer, DirectionalAreaLightGivesTheVisibleFraction) {
   sun.type = LightType::Directional;
   sun.direction = {0.0f, -1.0f, 0.0f};
   sun.size = 0.4f;
-  const std::vector<float> offsets = {-0.3f, -0.1f, 0.0f, 0.05f, 0.3f};
+  const std::vector<float> offsets = {-0.3f, -0.1f, 0.0f, 0.05f, 0.15f, 0.3f};
   std::vector<glm::vec3> points;
   for (float p : offsets) points.push_back({p, 0.0f, 0.0f});
-  const Image image = tracer.trace(ground_points(points), sun, 400);
+  const Image image = tracer.trace(ground_points(points), sun, 1024);
   for (std::size_t i = 0; i < offsets.size(); ++i) {
-    const float expected = std::clamp((0.2f + offsets[i]) / 0.4f, 0.0f, 1.0f);
-    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 2.0f / 400.0f)
-        << "offset " << offsets[i];
+    const double expected = cone_ratio(offsets[i], glm::dvec3(0.0, 1.0, 0.0), 0.2);
+    EXPECT_NEAR(image.pixel(static_cast<int>(i), 0)[0], expected, 0.004) << "offset " << offsets[i];
     EXPECT_EQ(image.pixel(static_cast<int>(i), 0)[3], 1.0f);
   }
 }
 
-// Samples of the light below a receiver's tangent plane are hidden by the
-// receiver itself: a wall facing +x whose plane cuts the light in half
-// sees half of it.
-TEST(ShadowRayTracer, ReceiverHidesTheLightBehindItsTangentPlane) {
+// A point nothing occludes reads exactly 1 from every kind of source,
+// whatever part of the source its tangent plane cuts off: the same samples
+// make both sums.
+TEST(ShadowRayTracer, UnoccludedPointsReadExactlyOne) {
   const ShadowRayTracer tracer(TriangleMesh{});
+  SurfacePoints s = ground_points({{0.0f, 0.0f, 0.0f}, {0.3f, 0.0f, 0.2f}, {-1.0f, 0.5f, 0.0f}});
+  s.normal[1] = glm::normalize(glm::vec3(1.0f, 0.2f, 0.0f));
+  s.normal[2] = glm::normalize(glm::vec3(-0.3f, 0.1f, 1.0f));
+  ReferenceLight sphere;
+  sphere.type = LightType::Point;
+  sphere.position = {0.2f, 2.0f, 0.1f};
+  sphere.size = 1.5f;
+  ReferenceLight sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+  sun.size = 0.3f;
+  for (const ReferenceLight& light : {spot_down(2.0f, 1.5f), sphere, sun}) {
+    const Image image = tracer.trace(s, light, 64);
+    for (int x = 0; x < 3; ++x) {
+      EXPECT_EQ(image.pixel(x, 0)[0], 1.0f)
+          << "light type " << static_cast<int>(light.type) << ", point " << x;
+    }
+  }
+}
+
+// Parts of the light below a receiver's tangent plane send it no light
+// with or without occluders: a wall facing +x whose plane cuts the square
+// light in half is fully lit (the old fraction read 0.5), and an occluder
+// hiding the half z < 0 of the light leaves half of what the wall sees
+// (by symmetry in z), not a quarter.
+TEST(ShadowRayTracer, LightBehindTheTangentPlaneCountsInNeitherSum) {
   SurfacePoints s = ground_points({{0.0f, 0.0f, 0.0f}});
   s.normal[0] = glm::vec3(1.0f, 0.0f, 0.0f);
-  const Image image = tracer.trace(s, spot_down(2.0f, 1.0f), 256);
-  EXPECT_NEAR(image.pixel(0, 0)[0], 0.5f, 1.0f / 256.0f);
+  const ShadowRayTracer open(TriangleMesh{});
+  EXPECT_EQ(open.trace(s, spot_down(2.0f, 1.0f), 256).pixel(0, 0)[0], 1.0f);
+  TriangleMesh mesh;
+  add_quad(mesh, -5.0f, 5.0f, -5.0f, 0.0f, 1.0f);
+  const ShadowRayTracer half(mesh);
+  EXPECT_NEAR(half.trace(s, spot_down(2.0f, 1.0f), 1024).pixel(0, 0)[0], 0.5f, 0.01f);
+}
+
+// A smooth-shaded surface whose interpolated normal leans towards a low
+// sun: the part of the sun above the shading normal's horizon but below
+// the triangle's own plane would be shadowed by the triangle itself (the
+// shadow terminator); it counts in neither sum, so the point reads 1 from
+// what remains above both planes.
+TEST(ShadowRayTracer, LightBelowTheTrianglesPlaneCountsInNeitherSum) {
+  TriangleMesh mesh;
+  add_quad(mesh, -5.0f, 5.0f, -5.0f, 5.0f, 0.0f);
+  const ShadowRayTracer tracer(mesh);
+  SurfacePoints s = ground_points({{0.1f, 0.0f, 0.2f}});
+  s.position_error[0] = 1e-4f;
+  const float tilt = glm::radians(10.0f);
+  s.normal[0] = glm::vec3(-std::sin(tilt), std::cos(tilt), 0.0f);
+  ReferenceLight sun;
+  sun.type = LightType::Directional;
+  // Towards the light: 1 degree below the horizon, from -x; 10 degrees
+  // across, so part of it is above the plane.
+  const float elevation = glm::radians(-1.0f);
+  sun.direction = glm::vec3(std::cos(elevation), -std::sin(elevation), 0.0f);
+  sun.axis_u = glm::vec3(0.0f, 0.0f, 1.0f);
+  sun.axis_v = glm::normalize(glm::cross(sun.direction, sun.axis_u));
+  sun.size = glm::radians(10.0f);
+  EXPECT_EQ(tracer.trace(s, sun, 256).pixel(0, 0)[0], 1.0f);
+  // Lower, the sun is all below the triangle's plane though part of it is
+  // above the shading normal's horizon: no light arrives, not judged.
+  const float lower = glm::radians(-6.0f);
+  sun.direction = glm::vec3(std::cos(lower), -std::sin(lower), 0.0f);
+  sun.axis_v = glm::normalize(glm::cross(sun.direction, sun.axis_u));
+  const Image hidden = tracer.trace(s, sun, 256);
+  EXPECT_EQ(hidden.pixel(0, 0)[0], 0.0f);
+  EXPECT_EQ(hidden.pixel(0, 0)[3], 0.0f);
+}
+
+// A square source emits from its front only: a point above a downward
+// spot light, facing it, gets no light (0 and not judged, as a surface
+// facing away).
+TEST(ShadowRayTracer, SquareLightSendsNothingBehindIt) {
+  const ShadowRayTracer tracer(TriangleMesh{});
+  SurfacePoints s = ground_points({{0.5f, 3.0f, 0.0f}});
+  s.normal[0] = glm::vec3(0.0f, -1.0f, 0.0f);
+  const Image image = tracer.trace(s, spot_down(2.0f, 1.0f), 64);
+  EXPECT_EQ(image.pixel(0, 0)[0], 0.0f);
+  EXPECT_EQ(image.pixel(0, 0)[3], 0.0f) << "no light arrives: not judged";
+}
+
+// Shadow rays start above the point by its position error: a point that
+// rounding left 1e-3 below a plane it lies on, with that error bound,
+// is lit; without the bound the plane shadows it.
+TEST(ShadowRayTracer, RaysStartAboveThePositionErrorBound) {
+  TriangleMesh mesh;
+  add_quad(mesh, -5.0f, 5.0f, -5.0f, 5.0f, 0.0f);
+  const ShadowRayTracer tracer(mesh);
+  SurfacePoints s = ground_points({{0.1f, -1e-3f, 0.2f}, {0.1f, -1e-3f, 0.2f}});
+  s.position_error[0] = 1.5e-3f;
+  const Image image = tracer.trace(s, spot_down(2.0f, 0.0f), 1);
+  EXPECT_EQ(image.pixel(0, 0)[0], 1.0f);
+  EXPECT_EQ(image.pixel(1, 0)[0], 0.0f);
 }
 
 // The 10 %-90 % width of the visibility's rise along a line of ground

@@ -1,0 +1,46 @@
+#pragma once
+// Accumulated soft shadows: the frame rendered N times, each sub-frame
+// with every light moved to another point of its source and its shadow
+// maps rendered from there, shaded with the chosen technique (hard or
+// pcf), and averaged. As N grows the average converges to the area
+// light's shadow, as the traced reference computes it: the shadow view
+// weights sub-frame k's shadow at each pixel by what that point of the
+// source sends the pixel (cos theta_source cos theta_receiver / d^2 for a
+// spot light's square or a point light's sphere, cos theta_receiver for
+// the sun's disc of directions), so it estimates the same ratio of
+// irradiances; the other camera views are plain means.
+//
+// The points are stratified (correlated multi-jittered, Kensler 2013, one
+// fixed pattern), so every run gives the same image.
+#include <glm/glm.hpp>
+
+#include "core/settings.hpp"
+#include "io/image.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+// A light moved to point k (0 <= k < n) of its source, and the source's
+// outward normal there (spot: its direction; point: the sphere's normal;
+// directional: unused, zero).
+struct SourceSample {
+  Light light;
+  glm::vec3 normal{0.0f};
+};
+SourceSample source_sample(const Light& light, const ShadowSettings& shadow, int k, int n,
+                           int pattern);
+
+// What source point `sample` of `light` sends a receiver at p with normal
+// n, up to a constant: cos theta_source cos theta_receiver / d^2 (or
+// cos theta_receiver for a directional light); 0 behind either surface.
+float source_weight(const Light& original, const SourceSample& sample, const glm::vec3& p,
+                    const glm::vec3& n);
+
+// The view render.view after shadow.accumulate sub-frames (one plain
+// render and read_view() when it is 1, or for a map view). Leaves the
+// renderer's lights as they were.
+Image render_accumulated(Renderer& renderer, const RenderSettings& render,
+                         const ShadowSettings& shadow, const SsaoSettings& ssao = {});
+
+}  // namespace penumbra
