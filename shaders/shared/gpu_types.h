@@ -82,7 +82,7 @@ struct GpuShadow {
   int pcf_samples;
   int pcss_blocker_samples;
   int pcss_filter_samples;
-  int unused;
+  int two_moment_blockers;  // 1: msm --soft estimates blockers as vsm does
 };
 
 // Screen-space ambient occlusion (see SsaoSettings in src/core/settings.hpp).

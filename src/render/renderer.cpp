@@ -292,6 +292,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.pcf_samples = shadow.pcf_samples;
   shadow_block.pcss_blocker_samples = shadow.pcss_blocker_samples;
   shadow_block.pcss_filter_samples = shadow.pcss_filter_samples;
+  shadow_block.two_moment_blockers = shadow.soft_two_moment_blockers ? 1 : 0;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
