@@ -233,9 +233,9 @@ TEST_F(GpuTest, SoftMsmQuadratureBlockersBeatTheTwoMomentEstimate) {
   soft.light_size = 1.5f;
   const ShadowRayTracer tracer(renderer.mesh());
   const Image quadrature = render(renderer, rs, soft);
-  const Image traced = tracer.trace(
-      renderer.read_surfaces(), make_reference_light(scene.lights[0], renderer.light_view(0), soft),
-      128);
+  const Image traced =
+      tracer.trace(renderer.read_surfaces(),
+                   make_reference_light(scene.lights[0], renderer.light_view(0), soft), 128);
   ShadowSettings two_moment = soft;
   two_moment.soft_two_moment_blockers = true;
   const double rmse_quadrature = compare_shadow(quadrature, traced).rmse;
