@@ -80,7 +80,24 @@ const vec4 MSM_BIAS_16 = vec4(0.0, 0.628, 0.0, 0.628);
 // Every division and root is guarded so that degenerate input (constant
 // depth, a receiver outside [-1, 1], alpha near 0, moments that are not
 // those of any distribution) gives a finite G in [0, 1].
-float msm_hamburger(vec4 b, float z_f, float alpha, vec4 bias_vector) {
+//
+// msm_quadrature() does steps 1-3; msm_hamburger() steps 4-6, and
+// msm_blocker_search() reads the mean blocker depth off the same
+// quadrature (Peters et al. 2016).
+
+// The three-point quadrature of steps 1-3, centred: every depth is
+// t = z - mean, where mean = b1' is the biased moments' mean; the atoms sit
+// at t2 <= t3 (the roots) and at the receiver y = z_f - mean; d22 is the
+// biased variance E[t^2].
+struct MsmQuadrature {
+  float mean;
+  float d22;
+  float y;
+  float t2;
+  float t3;
+};
+
+MsmQuadrature msm_quadrature(vec4 b, float z_f, float alpha, vec4 bias_vector) {
   // Step 1, as covariances of (z, z^2) under (1 - alpha) P_b + alpha P_bias:
   // Cov' = (1 - alpha) Cov_b + alpha Cov_bias + alpha (1 - alpha) d d^T,
   // d = (b1, b2) - (bias1, bias2).
@@ -141,18 +158,60 @@ float msm_hamburger(vec4 b, float z_f, float alpha, vec4 bias_vector) {
     t2 = t3 = clamp(-0.5 * c.y / c.z, -1e8, 1e8);
   }
 
-  // Steps 4-6 in t (z_f - z_i = y2 - t_i; z_f z3 - b1'(z_f + z3) + b2' =
-  // y2 t3 + d22; z2 z3 - b1'(z2 + z3) + b2' = t2 t3 + d22). Both
-  // denominators are positive in their branches; the floor only guards
-  // against underflow, and the final clamp against rounding.
-  if (y2 <= t2) return 0.0;
-  float g;
-  if (y2 <= t3) {
-    g = (y2 * t3 + d22) / max((t3 - t2) * (y2 - t2), 1e-20);
-  } else {
-    g = 1.0 - (t2 * t3 + d22) / max((y2 - t2) * (y2 - t3), 1e-20);
-  }
+  return MsmQuadrature(mean, d22, y2, t2, t3);
+}
+
+// The quadrature's weights, from the Vandermonde system of its three atoms
+// in t (z_f - z_i = y - t_i; z_f z3 - b1'(z_f + z3) + b2' = y t3 + d22;
+// z2 z3 - b1'(z2 + z3) + b2' = t2 t3 + d22):
+//   w2 (at t2) = (y t3 + d22) / ((t3 - t2)(y - t2)),
+//   w_f (at y) = (t2 t3 + d22) / ((y - t2)(y - t3)), w3 = 1 - w2 - w_f.
+// Each denominator is positive where it is used; the floor only guards
+// against underflow.
+float msm_weight_low(MsmQuadrature q) {
+  return (q.y * q.t3 + q.d22) / max((q.t3 - q.t2) * (q.y - q.t2), 1e-20);
+}
+
+float msm_weight_receiver(MsmQuadrature q) {
+  return (q.t2 * q.t3 + q.d22) / max((q.y - q.t2) * (q.y - q.t3), 1e-20);
+}
+
+float msm_hamburger(vec4 b, float z_f, float alpha, vec4 bias_vector) {
+  MsmQuadrature q = msm_quadrature(b, z_f, alpha, bias_vector);
+  // Steps 4-6: the weight of the atoms in front of the receiver (the
+  // final clamp only catches rounding).
+  if (q.y <= q.t2) return 0.0;
+  float g = q.y <= q.t3 ? msm_weight_low(q) : 1.0 - msm_weight_receiver(q);
   return clamp(g, 0.0, 1.0);
+}
+
+// The blocker search of moment soft shadow mapping (Peters, Münstermann,
+// Wetzstein and Klein, "Moment Soft Shadow Mapping", I3D 2016, and its
+// JCGT 2017 extension): the mean depth of the blockers is that of the
+// quadrature's atoms in front of the receiver, weighted by their weights,
+//   z_avg = sum_{z_i < z_f} w_i z_i / sum_{z_i < z_f} w_i,
+// with the receiver's own atom added at a tiny weight (1e-3, Peters'
+// "fully lit bias") so that z_avg -> z_f, a zero-width penumbra, as the
+// blockers' weight vanishes. Unlike assuming every unoccluded texel at the
+// receiver's depth, this places the blockers where the moments say they
+// are. Returns (z_avg, the blockers' weight, which is the shadow intensity
+// G of msm_hamburger()), both in the moments' depth variable.
+vec2 msm_blocker_search(vec4 b, float z_f, float alpha, vec4 bias_vector) {
+  MsmQuadrature q = msm_quadrature(b, z_f, alpha, bias_vector);
+  const float fully_lit_bias = 1e-3;
+  float weight = 0.0, integral = 0.0;
+  if (q.y > q.t2) {
+    float w_low = clamp(msm_weight_low(q), 0.0, 1.0);
+    weight = w_low;
+    integral = w_low * q.t2;
+    if (q.y > q.t3) {
+      float w_high = clamp(1.0 - msm_weight_receiver(q) - w_low, 0.0, 1.0);
+      weight += w_high;
+      integral += w_high * q.t3;
+    }
+  }
+  float t_avg = (fully_lit_bias * q.y + integral) / (fully_lit_bias + weight);
+  return vec2(q.mean + min(t_avg, q.y), weight);
 }
 
 // The shadow intensity of a receiver at relative depth z_f (in [0, 1],

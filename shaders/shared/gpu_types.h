@@ -82,7 +82,7 @@ struct GpuShadow {
   int pcf_samples;
   int pcss_blocker_samples;
   int pcss_filter_samples;
-  int unused;
+  int two_moment_blockers;  // 1: msm --soft estimates blockers as vsm does
   // --accumulate (src/render/accumulation.hpp): the sub-frame's point of a
   // spot light's square, in [0, 1]^2; the width of its stratum as a
   // fraction of the square (1/sqrt(N); 0: not accumulating); the sub-frame

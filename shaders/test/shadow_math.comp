@@ -21,6 +21,8 @@ layout(local_size_x = 64) in;
                            // makes them, mixed as a filter does: r.x = msm_intensity32
 #define MODE_MSM16_MIX 7   // a, c: two RGBA16 texels; b.xyz: (weight w of a, z_f, alpha)
                            // r.x = msm_intensity16 of their mixture, dequantized
+#define MODE_MSM_BLOCKER 8 // a: moments of u; b.xy: (u_f, alpha)
+                           // r.xy = msm_blocker_search with MSM_BIAS_32
 
 struct Case {
   vec4 a;
@@ -67,6 +69,9 @@ void main() {
       break;
     case MODE_MSM16_MIX:
       r.x = msm_intensity16(msm_dequantize(k.b.x * k.a + (1.0 - k.b.x) * k.c), k.b.y, k.b.z);
+      break;
+    case MODE_MSM_BLOCKER:
+      r.xy = msm_blocker_search(k.a, k.b.x, k.b.y, MSM_BIAS_32);
       break;
   }
   results[i] = r;

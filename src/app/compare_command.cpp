@@ -63,6 +63,8 @@ std::string item_stem(const ShadowSettings& s) {
     stem += "-" + filter_name(s.filter) + "-w" + std::to_string(s.blur);
   }
   if (s.soft) stem += "-soft";
+  const bool msm = s.technique == Technique::Msm || s.technique == Technique::Msm16;
+  if (s.soft && s.soft_two_moment_blockers && msm) stem += "-2m";
   return stem;
 }
 
@@ -350,6 +352,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
     r["filter"] = is_filterable(s.technique) ? json(filter_name(s.filter)) : json(nullptr);
     r["blur"] = is_filterable(s.technique) ? json(s.blur) : json(nullptr);
     r["soft"] = s.soft;
+    r["soft_two_moment_blockers"] = s.soft && s.soft_two_moment_blockers;
     if (!item.skipped.empty()) {
       r["status"] = "skipped";
       r["reason"] = item.skipped;

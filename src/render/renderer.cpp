@@ -293,6 +293,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.pcf_samples = shadow.pcf_samples;
   shadow_block.pcss_blocker_samples = shadow.pcss_blocker_samples;
   shadow_block.pcss_filter_samples = shadow.pcss_filter_samples;
+  shadow_block.two_moment_blockers = shadow.soft_two_moment_blockers ? 1 : 0;
   shadow_block.accumulate_u = shadow.subframe_u;
   shadow_block.accumulate_v = shadow.subframe_v;
   shadow_block.accumulate_cell =

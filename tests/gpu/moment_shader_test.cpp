@@ -29,7 +29,8 @@ enum Mode : int {
   kDequantize = 4,
   kBleeding = 5,
   kMsmMix = 6,
-  kMsm16Mix = 7
+  kMsm16Mix = 7,
+  kMsmBlocker = 8
 };
 
 struct Case {
@@ -200,6 +201,87 @@ TEST_F(GpuTest, MsmHamburgerIsFiniteOnDegenerateInput) {
       }
     }
   }
+}
+
+// The blocker search of moment soft shadows (msm_blocker_search()) on the
+// search region a receiver sees under a blocker: texels of the blocker at
+// z_b, of the receiver's own surface at z_r, and of surfaces behind the
+// receiver at z_k > z_r (the ground beyond a box, a slope falling away).
+// The mean blocker depth is exactly z_b. Three depths are the quadrature's
+// own kind of distribution, so Peters' estimate recovers z_b; the estimate
+// that puts every unoccluded texel at the receiver's depth,
+// (mean - (1 - G) z_f) / G, reads the texels behind as blockers pulled
+// toward the receiver (computed here in double for comparison).
+TEST_F(GpuTest, MsmBlockerSearchFindsTheMeanBlockerDepth) {
+  std::mt19937 rng(2016);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * u01(rng); };
+  constexpr double kAlpha = 1e-6;  // ShadowSettings' default msm_alpha
+  struct Mixture {
+    double z_b, z_f, occluded;
+    glm::dvec4 b;
+  };
+  std::vector<Mixture> mixtures;
+  std::vector<Case> cases;
+  for (int i = 0; i < 2000; ++i) {
+    Mixture m;
+    m.z_b = uniform(0.05, 0.6);
+    const double z_r = uniform(0.65, 0.85), z_k = z_r + uniform(0.05, 0.15);
+    m.occluded = uniform(0.05, 0.9);
+    const double w_r = (1.0 - m.occluded) * uniform(0.2, 0.8), w_k = 1.0 - m.occluded - w_r;
+    m.z_f = z_r - 1e-3;  // the receiver, biased in front of its own surface
+    m.b = m.occluded * msm_moments_of_depth(m.z_b) + w_r * msm_moments_of_depth(z_r) +
+          w_k * msm_moments_of_depth(z_k);
+    mixtures.push_back(m);
+    cases.push_back({glm::vec4(m.b), glm::vec4(float(2.0 * m.z_f - 1.0), float(kAlpha), 0, 0),
+                     glm::vec4(0.0f)});
+  }
+  const std::vector<glm::vec4> gpu = run_kernel(kMsmBlocker, cases);
+  std::vector<double> errors, receiver_depth_errors;
+  double worst_weight = 0.0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    ASSERT_TRUE(finite(gpu[i])) << i;
+    const Mixture& m = mixtures[i];
+    const double z_avg = 0.5 * (double(gpu[i].x) + 1.0);
+    errors.push_back(std::abs(z_avg - m.z_b));
+    worst_weight = std::max(worst_weight, std::abs(double(gpu[i].y) - m.occluded));
+    const double g = msm_hamburger_reference(m.b, 2.0 * m.z_f - 1.0, kAlpha);
+    const double mean = 0.5 * (m.b.x + 1.0);
+    const double old = std::clamp((mean - (1.0 - g) * m.z_f) / g, 0.0, m.z_f);
+    receiver_depth_errors.push_back(std::abs(old - m.z_b));
+  }
+  std::sort(errors.begin(), errors.end());
+  std::sort(receiver_depth_errors.begin(), receiver_depth_errors.end());
+  const std::size_t median = errors.size() / 2, p99 = errors.size() * 99 / 100;
+  std::printf(
+      "mean blocker depth |dz|: quadrature median %.2g, 99%% %.2g, max %.2g; unoccluded at the "
+      "receiver's depth: median %.2g, 99%% %.2g, max %.2g; |dG| <= %.2g\n",
+      errors[median], errors[p99], errors.back(), receiver_depth_errors[median],
+      receiver_depth_errors[p99], receiver_depth_errors.back(), worst_weight);
+  EXPECT_LE(errors[median], 0.003);
+  EXPECT_LE(errors[p99], 0.02);
+  EXPECT_LE(errors.back(), 0.05);
+  // The blockers' weight is their fraction of the region.
+  EXPECT_LE(worst_weight, 0.02);
+}
+
+// No blockers in front of the receiver: the estimate is the receiver's own
+// depth (a zero-width penumbra) with no weight; a single blocker depth is
+// found exactly.
+TEST_F(GpuTest, MsmBlockerSearchOfOneOrNoBlocker) {
+  const float u_f = 0.2f;
+  std::vector<Case> cases = {
+      // Everything behind the receiver: no blockers.
+      {glm::vec4(0.5 * moments_of(0.5) + 0.5 * moments_of(0.9)), glm::vec4(u_f, 1e-6f, 0, 0),
+       glm::vec4(0.0f)},
+      // Everything at u = -0.6: all of it blocks, at -0.6.
+      {glm::vec4(moments_of(-0.6)), glm::vec4(u_f, 1e-6f, 0, 0), glm::vec4(0.0f)},
+  };
+  const std::vector<glm::vec4> gpu = run_kernel(kMsmBlocker, cases);
+  EXPECT_NEAR(gpu[0].x, u_f, 1e-3f);
+  EXPECT_LE(gpu[0].y, 1e-3f);
+  EXPECT_NEAR(gpu[1].x, -0.6f, 1e-3f);
+  EXPECT_NEAR(gpu[1].y, 1.0f, 1e-3f);
 }
 
 TEST_F(GpuTest, MsmQuantizationMatchesCpuAndRoundTrips) {
