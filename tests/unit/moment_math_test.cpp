@@ -173,21 +173,29 @@ TEST(MsmReference, TwoDepthsHalfAndHalf) {
       kAlpha, worst_between, worst_vs_three_point);
 }
 
+// n random depths in [0, 1) with random weights summing to 1.
+void random_mixture(std::mt19937& rng, int n, std::vector<double>& depths,
+                    std::vector<double>& weights) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  depths.resize(static_cast<std::size_t>(n));
+  weights.resize(static_cast<std::size_t>(n));
+  double total = 0.0;
+  for (std::size_t i = 0; i < depths.size(); ++i) {
+    depths[i] = u01(rng);
+    weights[i] = 0.05 + u01(rng);
+    total += weights[i];
+  }
+  for (double& w : weights) w /= total;
+}
+
 // G is monotone in the receiver depth and stays in [0, 1] for random
 // mixtures of up to four depths, with both bias vectors.
 TEST(MsmReference, MonotoneInReceiverDepth) {
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
   for (int trial = 0; trial < 200; ++trial) {
     const int n = 1 + trial % 4;
-    std::vector<double> depths(n), weights(n);
-    double total = 0.0;
-    for (int i = 0; i < n; ++i) {
-      depths[i] = u01(rng);
-      weights[i] = 0.05 + u01(rng);
-      total += weights[i];
-    }
-    for (double& w : weights) w /= total;
+    std::vector<double> depths, weights;
+    random_mixture(rng, n, depths, weights);
     const glm::dvec4 b = msm_moments_of(depths, weights);
     for (const glm::dvec4& bias : {kMsmBias32, kMsmBias16}) {
       double previous = 0.0;
@@ -228,18 +236,11 @@ TEST(MsmBias, ConversionFromSignedDepthIsTheBinomialExpansion) {
 // mapped along. (So storing u changes only the rounding, which is the point.)
 TEST(MsmReference, SignedDepthSolveEqualsUnitDepthSolve) {
   std::mt19937 rng(2017);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
   double worst = 0.0;
   for (int trial = 0; trial < 500; ++trial) {
     const int n = 1 + trial % 4;
-    std::vector<double> depths(n), weights(n);
-    double total = 0.0;
-    for (int i = 0; i < n; ++i) {
-      depths[i] = u01(rng);
-      weights[i] = 0.05 + u01(rng);
-      total += weights[i];
-    }
-    for (double& w : weights) w /= total;
+    std::vector<double> depths, weights;
+    random_mixture(rng, n, depths, weights);
     const glm::dvec4 signed_moments = msm_moments_of(depths, weights);
     const glm::dvec4 unit_moments = moments_of(depths, weights);
     for (const glm::dvec4& bias : {kMsmBias32, kMsmBias16}) {
