@@ -123,9 +123,11 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
   command.add_option("--json", args.json, "also write the numbers to this JSON file");
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
-  // Bench takes a list of techniques: replace the single-name option's text.
+  // Bench takes a list of techniques: replace the single-name option's text
+  // and its default (msm), which --help shows.
   command.get_option("--technique")
-      ->description("techniques to measure: a name, a comma-separated list, or all");
+      ->description("techniques to measure: a name, a comma-separated list, or all")
+      ->default_str(args.techniques);
   args.named.technique = args.techniques;
 }
 
