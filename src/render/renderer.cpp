@@ -133,6 +133,8 @@ Renderer::Renderer(const Scene& scene)
                          "reference filter weights"),
       poisson_(gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
                                 "poisson samples")) {
+  // Queried once: a query in the frame loop would stall a GPU's pipeline.
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_size_);
   set_lights(scene_.lights);
 }
 
@@ -203,8 +205,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   validate(render);
   validate(shadow);
   validate(ssao);
-  GLint max_texture = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  const int max_texture = max_texture_size_;
   if (shadow.map_size > max_texture) {
     throw UsageError("--shadow-map-size " + std::to_string(shadow.map_size) +
                      " exceeds this GPU's limit of " + std::to_string(max_texture));

@@ -148,6 +148,7 @@ class Renderer {
   ShadowSettings last_shadow_;
   glm::mat4 last_view_projection_{1.0f};
   bool gbuffer_current_ = false;
+  int max_texture_size_ = 0;  // GL_MAX_TEXTURE_SIZE
 };
 
 }  // namespace penumbra
