@@ -27,9 +27,8 @@ StagedFolder::StagedFolder(std::string final_dir) : final_(std::move(final_dir))
   std::error_code ec;
   // Inside an existing folder (the same file system as the files it will
   // hold, even where DIR is a link to another disk), else beside it.
-  staging_ = fs::is_directory(final_, ec)
-                 ? temporary_name((fs::path(final_) / "staged").string())
-                 : temporary_name(without_trailing_slash(final_).string());
+  staging_ = fs::is_directory(final_, ec) ? temporary_name((fs::path(final_) / "staged").string())
+                                          : temporary_name(without_trailing_slash(final_).string());
   fs::remove_all(staging_, ec);  // left by a killed run of the same process id
   guard_ = std::make_unique<RemoveOnSignal>(staging_, true);
   if (!fs::create_directory(staging_, ec) || ec) {

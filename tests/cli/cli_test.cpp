@@ -253,8 +253,8 @@ TEST(Cli, HelpListsEveryOptionWithItsDefault) {
 // Each command's --help shows the default it runs: bench measures msm
 // unless told otherwise (its help used to say hard).
 TEST(Cli, HelpShowsTheTechniqueEachCommandRuns) {
-  for (const auto& [command, shown] : {std::pair{"render", "--technique TEXT=hard"},
-                                       std::pair{"bench", "--technique TEXT=msm"}}) {
+  for (const auto& [command, shown] :
+       {std::pair{"render", "--technique TEXT=hard"}, std::pair{"bench", "--technique TEXT=msm"}}) {
     Result r = run(std::string(command) + " --help");
     EXPECT_EQ(r.status, 0);
     EXPECT_NE(r.out.find(shown), std::string::npos) << command << ": " << shown;

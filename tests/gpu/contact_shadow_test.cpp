@@ -91,14 +91,14 @@ TEST_P(ContactTest, GroundAtTheFootOfALitFaceIsNotDarkened) {
           const float d = ref - image.pixel(x, y)[0];
           worst = std::max(worst, d);
           darker += d > 0.1f;
-
         }
       }
       const std::string name = std::string(enum_name<Technique>(kTechniqueNames, technique)) +
                                ", light " + std::to_string(light_size);
-      std::printf("%-22s %d lit ground pixels near the foot, %d darker than the reference by more "
-                  "than 0.1 (largest %.3f)\n",
-                  name.c_str(), lit, darker, worst);
+      std::printf(
+          "%-22s %d lit ground pixels near the foot, %d darker than the reference by more "
+          "than 0.1 (largest %.3f)\n",
+          name.c_str(), lit, darker, worst);
       EXPECT_GT(lit, 2000) << name;
       EXPECT_EQ(darker, 0) << name;
     }
