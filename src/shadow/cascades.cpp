@@ -56,19 +56,19 @@ float cascade_slice_start(std::span<const float> splits, float blend, std::size_
 
 namespace {
 
-// Row r of a matrix (glm stores columns).
-glm::vec4 row(const glm::mat4& m, int r) { return {m[0][r], m[1][r], m[2][r], m[3][r]}; }
-
 // The half-spaces of the camera frustum's slice between view depths d0 and
 // d1.
 std::array<HalfSpace, 6> camera_slice(const CameraFrustum& camera, float d0, float d1) {
   const glm::mat4 view = glm::lookAt(camera.position, camera.position + camera.forward, camera.up);
   const float ky = std::tan(0.5f * camera.fov_y), kx = camera.aspect * ky;
-  // View depth is -z; the side planes |x| <= kx depth, |y| <= ky depth.
-  const glm::vec4 x = row(view, 0), y = row(view, 1), depth = -row(view, 2);
-  return {coordinate_at_least(depth, d0), coordinate_at_most(depth, d1),
-          coordinate_at_least(kx * depth - x, 0.0f), coordinate_at_least(kx * depth + x, 0.0f),
-          coordinate_at_least(ky * depth - y, 0.0f), coordinate_at_least(ky * depth + y, 0.0f)};
+  const std::array<HalfSpace, 4> sides = frustum_sides(view, kx, ky);
+  const glm::vec4 depth = -matrix_row(view, 2);  // view depth is -z
+  return {coordinate_at_least(depth, d0),
+          coordinate_at_most(depth, d1),
+          sides[0],
+          sides[1],
+          sides[2],
+          sides[3]};
 }
 
 }  // namespace
@@ -81,7 +81,8 @@ std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum
   // Rotation only: light space's origin is the world's, so snapping in it
   // is snapping to a grid fixed in the world.
   const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, stable_up(dir));
-  const glm::vec4 light_x = row(view, 0), light_y = row(view, 1), light_depth = -row(view, 2);
+  const glm::vec4 light_x = matrix_row(view, 0), light_y = matrix_row(view, 1);
+  const glm::vec4 light_depth = -matrix_row(view, 2);
   const float size = static_cast<float>(map_size);
 
   std::vector<LightView> views;
@@ -97,9 +98,10 @@ std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum
 
     // Casters: the geometry in the column; receivers: the part of it in
     // the camera's slice as well.
-    const std::array<HalfSpace, 4> column = {
-        coordinate_at_least(light_x, center.x - half), coordinate_at_most(light_x, center.x + half),
-        coordinate_at_least(light_y, center.y - half), coordinate_at_most(light_y, center.y + half)};
+    const std::array<HalfSpace, 4> column = {coordinate_at_least(light_x, center.x - half),
+                                             coordinate_at_most(light_x, center.x + half),
+                                             coordinate_at_least(light_y, center.y - half),
+                                             coordinate_at_most(light_y, center.y + half)};
     const std::array<HalfSpace, 6> slice = camera_slice(camera, d0, d1);
     float caster_near = 1e30f, column_far = -1e30f, receiver_far = -1e30f;
     for_each_clipped_triangle(vertices, indices, column, [&](const std::vector<glm::vec3>& p) {
@@ -134,8 +136,8 @@ std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum
     const float step = span / 16.0f;
     lv.z0 = std::floor((caster_near - pad) / step) * step;
     lv.z1 = lv.z0 + span + step;
-    lv.projection =
-        glm::ortho(center.x - half, center.x + half, center.y - half, center.y + half, lv.z0, lv.z1);
+    lv.projection = glm::ortho(center.x - half, center.x + half, center.y - half, center.y + half,
+                               lv.z0, lv.z1);
     lv.view_projection = lv.projection * lv.view;
     lv.texel_world = texel;
     views.push_back(lv);

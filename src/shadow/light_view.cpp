@@ -28,13 +28,8 @@ void padded_depth_range(bool found, float zmin, float zmax, float& z0, float& z1
 bool frustum_depth_range(const glm::mat4& view, float kx, float ky,
                          std::span<const Vertex> vertices, std::span<const std::uint32_t> indices,
                          float& zmin, float& zmax) {
-  // View depth is -z; the side planes |x| <= kx depth, |y| <= ky depth.
-  const glm::vec4 x(view[0][0], view[1][0], view[2][0], view[3][0]);
-  const glm::vec4 y(view[0][1], view[1][1], view[2][1], view[3][1]);
-  const glm::vec4 depth = -glm::vec4(view[0][2], view[1][2], view[2][2], view[3][2]);
-  const std::array<HalfSpace, 4> sides = {
-      coordinate_at_least(kx * depth - x, 0.0f), coordinate_at_least(kx * depth + x, 0.0f),
-      coordinate_at_least(ky * depth - y, 0.0f), coordinate_at_least(ky * depth + y, 0.0f)};
+  const std::array<HalfSpace, 4> sides = frustum_sides(view, kx, ky);
+  const glm::vec4 depth = -matrix_row(view, 2);  // view depth is -z
   bool any = false;
   for_each_clipped_triangle(vertices, indices, sides, [&](const std::vector<glm::vec3>& polygon) {
     for (const glm::vec3& p : polygon) {

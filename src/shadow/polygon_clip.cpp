@@ -12,6 +12,16 @@ HalfSpace coordinate_at_most(const glm::vec4& row, float hi) {
   return {-row.x, -row.y, -row.z, hi - row.w};
 }
 
+glm::vec4 matrix_row(const glm::mat4& m, int r) {
+  return {m[0][r], m[1][r], m[2][r], m[3][r]};
+}
+
+std::array<HalfSpace, 4> frustum_sides(const glm::mat4& view, float kx, float ky) {
+  const glm::vec4 x = matrix_row(view, 0), y = matrix_row(view, 1), depth = -matrix_row(view, 2);
+  return {coordinate_at_least(kx * depth - x, 0.0f), coordinate_at_least(kx * depth + x, 0.0f),
+          coordinate_at_least(ky * depth - y, 0.0f), coordinate_at_least(ky * depth + y, 0.0f)};
+}
+
 void clip_polygon(std::vector<glm::vec3>& polygon, std::span<const HalfSpace> half_spaces,
                   std::vector<glm::vec3>& scratch) {
   for (const HalfSpace& h : half_spaces) {

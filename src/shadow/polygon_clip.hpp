@@ -3,6 +3,7 @@
 // cascade's column, a slice of the camera's frustum) to measure the depth
 // range of the geometry inside: shadow views fit their depth bounds to it.
 // Pure CPU functions, tested without a GPU.
+#include <array>
 #include <glm/glm.hpp>
 #include <span>
 #include <vector>
@@ -17,6 +18,14 @@ using HalfSpace = glm::vec4;
 HalfSpace coordinate_at_least(const glm::vec4& row, float lo);
 // ... and at most `hi`.
 HalfSpace coordinate_at_most(const glm::vec4& row, float hi);
+
+// Row r of a matrix (glm stores columns): the coordinate r of M (p, 1) as
+// an affine function of p, ready for coordinate_at_least/most.
+glm::vec4 matrix_row(const glm::mat4& m, int r);
+
+// The four side half-spaces |x| <= kx depth, |y| <= ky depth of the
+// frustum of a view matrix that looks down -z (depth = -z).
+std::array<HalfSpace, 4> frustum_sides(const glm::mat4& view, float kx, float ky);
 
 // Clips the convex polygon `polygon` (in place) to the intersection of the
 // half-spaces (Sutherland and Hodgman, "Reentrant Polygon Clipping", CACM
