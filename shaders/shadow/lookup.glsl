@@ -82,16 +82,24 @@ float shadow_bias(GpuShadow params, ShadowLookup s, vec3 normal, vec3 to_light,
   return (params.constant_bias + slope_texels * tan_theta) * s.texel_depth;
 }
 
+// The world points where the light's ray through shadow-map point uv
+// meets the view's near and far clip planes.
+void shadow_map_ray(GpuShadowView view, vec2 uv, out vec3 near_point, out vec3 far_point) {
+  vec4 near_h = view.inverse_view_projection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
+  vec4 far_h = view.inverse_view_projection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
+  near_point = near_h.xyz / near_h.w;
+  far_point = far_h.xyz / far_h.w;
+}
+
 // Relative depth at which the light's ray through shadow-map point uv meets
 // the receiver's tangent plane (through `world`, normal `normal`). Tests
 // over a filter window compare each texel with this depth rather than the
 // centre's, so a sloped receiver does not shadow itself (receiver-plane
 // depth, after Isidoro 2006, evaluated exactly by ray-plane intersection).
 float receiver_plane_depth(GpuShadowView view, vec3 world, vec3 normal, vec2 uv, float fallback) {
-  vec4 near_h = view.inverse_view_projection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
-  vec4 far_h = view.inverse_view_projection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
-  vec3 origin = near_h.xyz / near_h.w;
-  vec3 direction = far_h.xyz / far_h.w - origin;
+  vec3 origin, far_point;
+  shadow_map_ray(view, uv, origin, far_point);
+  vec3 direction = far_point - origin;
   float denominator = dot(normal, direction);
   if (abs(denominator) < 1e-8) return fallback;  // ray along the plane
   float t = dot(normal, world - origin) / denominator;

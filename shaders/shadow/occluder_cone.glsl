@@ -7,18 +7,17 @@
 // cone from the receiver to the light's source; texels outside that cone
 // are not counted (they are the receiver's neighbours, not its blockers).
 #pragma once
+#include "penumbra.glsl"
 
 // The world point a shadow view stores at map point uv with relative
 // depth z_bar: on the light's ray through uv, where the view's depth
 // (axial, or radial for point lights) is z_bar's. Both depths are affine
 // along a ray through the eye, so one interpolation finds it.
 vec3 shadow_map_point(GpuShadowView view, vec2 uv, float z_bar) {
-  vec4 near_h = view.inverse_view_projection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
-  vec4 far_h = view.inverse_view_projection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
-  vec3 near_p = near_h.xyz / near_h.w, far_p = far_h.xyz / far_h.w;
+  vec3 near_p, far_p;
+  shadow_map_ray(view, uv, near_p, far_p);
   float d_near = light_linear_depth(view, near_p), d_far = light_linear_depth(view, far_p);
-  float d = view.depth_range.x + z_bar * (view.depth_range.y - view.depth_range.x);
-  return mix(near_p, far_p, (d - d_near) / (d_far - d_near));
+  return mix(near_p, far_p, (linear_depth_of(view, z_bar) - d_near) / (d_far - d_near));
 }
 
 // The cone from a receiver to the light's source.

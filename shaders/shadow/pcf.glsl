@@ -24,7 +24,7 @@ vec2 receiver_depth_gradient(GpuShadowView view, ShadowLookup s, vec3 normal, fl
   vec2 texel_uv = vec2(1.0 / view.depth_range.w);
   float dx = receiver_plane_depth(view, s.position, normal, s.uv + vec2(texel_uv.x, 0.0), s.depth);
   float dy = receiver_plane_depth(view, s.position, normal, s.uv + vec2(0.0, texel_uv.y), s.depth);
-  float limit = max_slope * s.texel / (view.depth_range.y - view.depth_range.x);
+  float limit = max_slope * s.texel_depth;
   return clamp(vec2(dx, dy) - s.depth, vec2(-limit), vec2(limit));
 }
 
