@@ -37,7 +37,8 @@ std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
       if (args.sweep == "map-size") s.map_size = v;
       if (args.sweep == "blur") s.blur = v;
       if (t == Technique::Esm && s.filter == Filter::Sat) continue;  // refused by validate()
-      if (s.soft && (!is_filterable(t) || t == Technique::Esm)) s.soft = false;
+      // Soft only for the techniques that can be; a wrong filter is still refused.
+      if (s.soft && !supports_soft_shadows(t, Filter::Sat)) s.soft = false;
       runs.push_back(s);
     }
   }
