@@ -6,7 +6,9 @@
 #include <sstream>
 #include <vector>
 
+#include "app/help_formatter.hpp"
 #include "app/light_choice.hpp"
+#include "app/option_style.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
@@ -109,33 +111,38 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer) {
 void add_bench_command_options(CLI::App& command, BenchArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
   add_light_choice_option(command, args.light);
-  command
-      .add_option("--frames", args.frames, "frames measured per configuration, after the warm-up")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  command.add_option("--warmup", args.warmup, "frames rendered before measuring")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1000));
-  command
-      .add_option("--sweep", args.sweep,
-                  "none, map-size (512, 1024, 2048, 4096) or blur (W = 0, 1, 2, 4, 8, 16, 32)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"none", "map-size", "blur"}));
-  command.add_option("--json", args.json, "also write the numbers to this JSON file");
+  add_number(command, "frames", args.frames, "frames measured per configuration, after the warm-up",
+             1, 100000, OptionGroup::Measurement);
+  add_number(command, "warmup", args.warmup, "frames rendered before measuring", 0, 1000,
+             OptionGroup::Measurement);
+  add_choice(command, "sweep", args.sweep,
+             "measure each technique at several values: map-size (512, 1024, 2048, 4096) or blur "
+             "(W = 0, 1, 2, 4, 8, 16, 32)",
+             {"none", "map-size", "blur"}, OptionGroup::Measurement);
+  in_group(command.add_option("--json", args.json, "also write the numbers to this JSON file")
+               ->type_name("FILE"),
+           OptionGroup::Output);
   add_render_options(command, args.render, args.named);
-  add_shadow_options(command, args.shadow, args.named);
-  // Bench takes a list of techniques: replace the single-name option's text
-  // and its default (msm), which --help shows.
-  command.get_option("--technique")
-      ->description("techniques to measure: a name, a comma-separated list, or all")
-      ->default_str(args.techniques);
-  args.named.technique = args.techniques;
+  add_list(command, "technique", args.techniques, "techniques to measure", technique_names(),
+           OptionGroup::Technique, "techniques");
+  args.named.filter = std::string(enum_name<Filter>(kFilterNames, args.shadow.filter));
+  add_choice(command, "filter", args.named.filter,
+             "filter of the vsm, esm, msm and msm16 maps: a separable Gaussian, or a summed-area "
+             "table",
+             filter_names(), OptionGroup::Filter);
+  add_shadow_parameters(command, args.shadow);
+  command.footer(examples_footer({
+      {"every pass of msm, timed", "penumbra bench"},
+      {"three techniques at 512 to 4096 texels, numbers also as JSON",
+       "penumbra bench --technique hard,vsm,msm --sweep map-size --json bench.json"},
+      {"the cost of the filter width, Gaussian against the summed-area table",
+       "penumbra bench --technique vsm --sweep blur --filter sat"},
+  }));
 }
 
 int run_bench_command(BenchArgs& args) {
-  const std::vector<Technique> techniques =
-      parse_technique_list(args.named.technique, "--technique");
-  args.named.technique = "hard";  // parsed above; the rest of the named options as usual
+  const std::vector<Technique> techniques = parse_technique_list(args.techniques, "--technique");
+  args.named.technique = "hard";  // the list is parsed above; the rest as usual
   parse_named_options(args.named, args.shadow, args.render);
   if (!args.json.empty()) check_output_path(args.json);
   const std::vector<ShadowSettings> plan = plan_runs(args, techniques);

@@ -9,14 +9,14 @@
 #include <memory>
 #include <new>
 
-#include "app/bench_command.hpp"
-#include "app/compare_command.hpp"
-#include "app/options.hpp"
-#include "app/render_command.hpp"
-#include "app/report_command.hpp"
-#include "app/view_command.hpp"
+#include "app/completion.hpp"
+#include "app/help_formatter.hpp"
+#include "app/option_style.hpp"
+#include "app/suggestions.hpp"
 #include "core/display_name.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/image.hpp"
 #include "io/signal_cleanup.hpp"
 
 namespace penumbra {
@@ -86,7 +86,136 @@ int run_guarded(const std::function<int()>& command) {
   }
 }
 
+std::vector<std::string> long_names(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : app.get_options()) {
+    for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+  }
+  return names;
+}
+
+std::vector<std::string> command_names(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* command : app.get_subcommands({})) names.push_back(command->get_name());
+  return names;
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    out += (i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ")) + names[i];
+  }
+  return out;
+}
+
+// The first argument that was not understood, and what it is about: an
+// unknown command, an unknown option, or a stray value; "" if none.
+std::string leftover_message(const CLI::App& app) {
+  const std::vector<CLI::App*> parsed = app.get_subcommands();
+  const CLI::App* command = parsed.empty() ? nullptr : parsed.front();
+  std::vector<std::string> leftovers = app.remaining();
+  if (command != nullptr) {
+    for (const std::string& arg : command->remaining()) leftovers.push_back(arg);
+  }
+  if (leftovers.empty()) return {};
+  const std::string& arg = leftovers.front();
+  const std::string help =
+      command != nullptr ? "penumbra " + command->get_name() + " --help" : "penumbra --help";
+  if (arg.size() > 1 && arg[0] == '-') {
+    const std::string name = arg.substr(0, arg.find('='));
+    const std::string suggestion = did_you_mean(name, long_names(command ? *command : app));
+    return "unknown option '" + name + "'" +
+           (command != nullptr ? " for '" + command->get_name() + "'" : "") +
+           (suggestion.empty() ? " (see '" + help + "')" : suggestion);
+  }
+  if (command == nullptr) {
+    const std::string suggestion = did_you_mean(arg, command_names(app));
+    return "unknown command '" + arg + "'" +
+           (suggestion.empty() ? " (choose " + listed(command_names(app)) + ")" : suggestion);
+  }
+  return "unexpected argument '" + arg + "' (see '" + help + "')";
+}
+
+int run_completion_command(const CLI::App& app, const CompletionArgs& args) {
+  const std::string script = bash_completion_script(app);
+  if (args.output.empty()) {
+    std::fputs(script.c_str(), stdout);
+  } else {
+    check_output_path(args.output);
+    write_file_atomically(args.output, script);
+  }
+  return 0;
+}
+
 }  // namespace
+
+std::unique_ptr<CLI::App> make_cli(CliArgs& args) {
+  auto app = std::make_unique<CLI::App>(
+      "penumbra: real-time shadow techniques, rendered headless and measured", "penumbra");
+  // Set before the commands are added: each takes its parent's.
+  app->formatter(std::make_shared<HelpFormatter>());
+  app->require_subcommand(1);
+  app->set_help_flag("-h,--help", "print this help and exit");
+  app->set_version_flag("--version", "penumbra " PENUMBRA_VERSION,
+                        "print the version and exit");
+  app->footer(examples_footer({
+      {"hard shadows of the default scene", "penumbra render -o hard.png"},
+      {"every technique measured against a ray-traced reference", "penumbra compare"},
+      {"the options of a command", "penumbra render --help"},
+  }));
+
+  const auto command = [&app](const char* name, const char* description) {
+    CLI::App* sub = app->add_subcommand(name, description);
+    sub->group("Commands");
+    return sub;
+  };
+  add_render_command_options(*command("render", "render one image of a scene (PNG or EXR)"),
+                             args.render);
+  add_view_command_options(
+      *command("view", "interactive viewer: a window with a panel that edits every setting, live"),
+      args.view);
+  add_compare_command_options(
+      *command("compare",
+               "measure every technique against a ray-traced reference: a table, JSON, error "
+               "images"),
+      args.compare);
+  add_bench_command_options(
+      *command("bench", "GPU time of every pass per technique, against a bandwidth yardstick"),
+      args.bench);
+  add_report_command_options(
+      *command("report",
+               "the whole study (every technique, sweeps, errors, timings) as one HTML page"),
+      args.report);
+  CLI::App* completion = command("completion", "print the bash completion script");
+  in_group(completion
+               ->add_option("-o,--output", args.completion.output,
+                            "write it to this file instead of standard output")
+               ->type_name("FILE"),
+           OptionGroup::Output);
+  completion->footer(examples_footer({
+      {"completion in this shell", "source <(penumbra completion)"},
+      {"for every shell of this user",
+       "penumbra completion -o ~/.local/share/bash-completion/completions/penumbra"},
+  }));
+  return app;
+}
+
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error) {
+  // CLI11 checks required options and values before it reports what it
+  // did not understand; a mistyped option is the more useful news.
+  if (std::string leftover = leftover_message(app); !leftover.empty()) return leftover;
+  if (dynamic_cast<const CLI::RequiredError*>(&error) && app.get_subcommands().empty()) {
+    return "a command is required: " + listed(command_names(app)) + " (see 'penumbra --help')";
+  }
+  // "--blur: 1 required N missing": the option came last, without its value.
+  const std::string what = error.what();
+  const std::size_t colon = what.find(": ");
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) && colon != std::string::npos &&
+      what.find(" required ") != std::string::npos && what.ends_with(" missing")) {
+    return what.substr(0, colon) + " needs a value";
+  }
+  return what;
+}
 
 int run_cli(int argc, char** argv) {
   // A closed pipe or a file-size limit is a write error to report, not a
@@ -95,58 +224,30 @@ int run_cli(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   install_signal_cleanup();
 
-  CLI::App app{"penumbra: real-time shadow techniques, rendered headless and measured"};
-  app.name("penumbra");
-  app.require_subcommand(1);
-  app.set_version_flag("--version", "penumbra 0.1.0");
-
-  RenderArgs render_args;
-  CLI::App* render = app.add_subcommand("render", "render one image of a scene (PNG or EXR)");
-  add_render_command_options(*render, render_args);
-  BenchArgs bench_args;
-  CLI::App* bench = app.add_subcommand(
-      "bench", "GPU time of every pass per technique, against a bandwidth yardstick");
-  add_bench_command_options(*bench, bench_args);
-  ReportArgs report_args;
-  CLI::App* report = app.add_subcommand(
-      "report", "the whole study (every technique, sweeps, errors, timings) as one HTML page");
-  add_report_command_options(*report, report_args);
-
-  CompareArgs compare_args;
-  CLI::App* compare = app.add_subcommand(
-      "compare",
-      "measure every technique against a ray-traced reference: a table, JSON, error images");
-  add_compare_command_options(*compare, compare_args);
-  ViewArgs view_args;
-  CLI::App* view = app.add_subcommand(
-      "view", "interactive viewer: a window with a panel that edits every setting, live");
-  add_view_command_options(*view, view_args);
-
+  CliArgs args;
+  const std::unique_ptr<CLI::App> app = make_cli(args);
   try {
-    app.parse(argc, argv);
+    app->parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return app->exit(e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return app->exit(e);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return app->exit(e);
   } catch (const CLI::ParseError& e) {
-    std::string what = e.what();
-    if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
-      what =
-          "a command is required: render, view, compare, bench or report (see 'penumbra --help')";
-    }
-    print_error(what);
+    print_error(parse_error_message(*app, e));
     return 2;
   }
 
   return check_standard_output(run_guarded([&] {
-    for (const CLI::App* command : app.get_subcommands()) reject_empty_values(*command);
-    if (render->parsed()) return run_render_command(render_args);
-    if (compare->parsed()) return run_compare_command(compare_args);
-    if (bench->parsed()) return run_bench_command(bench_args);
-    if (report->parsed()) return run_report_command(report_args);
-    if (view->parsed()) return run_view_command(view_args);
+    for (const CLI::App* command : app->get_subcommands()) reject_empty_values(*command);
+    const std::string name = app->get_subcommands().front()->get_name();
+    if (name == "render") return run_render_command(args.render);
+    if (name == "view") return run_view_command(args.view);
+    if (name == "compare") return run_compare_command(args.compare);
+    if (name == "bench") return run_bench_command(args.bench);
+    if (name == "report") return run_report_command(args.report);
+    if (name == "completion") return run_completion_command(*app, args.completion);
     return 0;
   }));
 }

@@ -36,6 +36,17 @@ void add_changed_name(std::vector<std::string>& args, std::string_view name, E v
   }
 }
 
+// On/off parameters: "--name" or "--no-name", when not the default.
+template <class Settings, class Param, std::size_t N>
+void add_changed_switches(std::vector<std::string>& args, const Settings& settings,
+                          const std::array<Param, N>& params) {
+  const Settings defaults{};
+  for (const auto& p : params) {
+    const bool value = settings.*(p.field);
+    if (value != defaults.*(p.field)) args.push_back((value ? "--" : "--no-") + std::string(p.name));
+  }
+}
+
 bool needs_quotes(const std::string& arg) {
   if (arg.empty()) return true;
   for (const char c : arg) {
@@ -65,19 +76,11 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   add_changed(args, command.render, kRenderIntParams);
   add_changed(args, command.shadow, kShadowIntParams);
   add_changed(args, command.shadow, kShadowFloatParams);
-  add_changed_name(args, "ssao", command.ssao.enabled, SsaoSettings{}.enabled, kOnOffNames);
-  add_changed_name(args, "ssao-half-resolution", command.ssao.half_resolution,
-                   SsaoSettings{}.half_resolution, kOnOffNames);
+  add_changed_switches(args, command.ssao, kSsaoSwitchParams);
   add_changed(args, command.ssao, kSsaoIntParams);
   add_changed(args, command.ssao, kSsaoFloatParams);
-  for (const auto& p : kShadowSwitchParams) {
-    add_changed_name(args, p.name, command.shadow.*(p.field), shadow_defaults.*(p.field),
-                     kOnOffNames);
-  }
-  for (const auto& p : kShadowFlagParams) {
-    const bool value = command.shadow.*(p.field);
-    if (value != shadow_defaults.*(p.field)) args.push_back(flag(p.name) + (value ? "" : "=false"));
-  }
+  add_changed_switches(args, command.shadow, kShadowSwitchParams);
+  add_changed_switches(args, command.shadow, kShadowFlagParams);
   if (command.original != nullptr && command.edited != nullptr) {
     for (std::string& arg :
          scene_option_args(*command.original, *command.edited, command.render.light_index)) {

@@ -10,7 +10,9 @@
 #include <optional>
 #include <sstream>
 
+#include "app/help_formatter.hpp"
 #include "app/light_choice.hpp"
+#include "app/option_style.hpp"
 #include "app/options.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
@@ -34,11 +36,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-template <class E, std::size_t N>
-std::string choices(const std::array<std::pair<E, std::string_view>, N>& table) {
-  return enum_choices<E>(EnumTable<E>(table), ",");
-}
 
 // One row group of the table: a technique with one filter (or none).
 struct Item {
@@ -187,35 +184,49 @@ std::vector<std::string> metrics_row(const Item& item, const char* reference,
 void add_compare_command_options(CLI::App& command, CompareArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
   add_light_choice_option(command, args.light);
-  command
-      .add_option(
-          "--techniques", args.techniques,
-          "all (every technique but none) or a comma-separated list of " + choices(kTechniqueNames))
-      ->capture_default_str();
-  command
-      .add_option("--filter", args.filters,
-                  "filters for the vsm/esm/msm/msm16 maps: all or a comma-separated list of " +
-                      choices(kFilterNames))
-      ->capture_default_str();
-  command.add_option("-o,--output", args.output_dir,
-                     "folder for the images (created if missing): each technique's shadow, its "
-                     "references and error maps (technique - reference: blue too dark, red too "
-                     "light, saturating at +-0.5)");
-  command.add_option("--json", args.json, "write the numbers to this file as JSON");
-  command.add_option("--cache-dir", args.cache_dir,
-                     "where traced references are kept (default: $XDG_CACHE_HOME/penumbra, or "
-                     "~/.cache/penumbra)");
-  command.add_flag("--no-cache", args.no_cache, "trace the reference even if it is cached");
-  command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
+  add_list(command, "technique", args.techniques,
+           "techniques to measure (all: every technique but none)", technique_names(),
+           OptionGroup::Technique, "techniques");
+  add_list(command, "filter", args.filters,
+           "filters of the vsm, esm, msm and msm16 maps, each measured", filter_names(),
+           OptionGroup::Filter);
+  in_group(command
+               .add_option("-o,--output", args.output_dir,
+                           "folder for the images (created if missing): each technique's shadow, "
+                           "its references and error maps (technique - reference: blue too dark, "
+                           "red too light, saturating at +-0.5)")
+               ->type_name("FOLDER"),
+           OptionGroup::Output);
+  in_group(command.add_option("--json", args.json, "write the numbers to this file as JSON")
+               ->type_name("FILE"),
+           OptionGroup::Output);
+  in_group(command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages"),
+           OptionGroup::Output);
+  in_group(command
+               .add_option("--cache-dir", args.cache_dir,
+                           "where traced references are kept (default: $XDG_CACHE_HOME/penumbra, "
+                           "or ~/.cache/penumbra)")
+               ->type_name("FOLDER"),
+           OptionGroup::Reference);
+  add_switch(command, "cache", "reuse a traced reference cached by an earlier run (--no-cache: trace it again)",
+             args.cache, OptionGroup::Reference);
   add_render_parameters(command, args.render);
   add_shadow_parameters(command, args.shadow);
   add_accumulate_option(command, args.shadow);
   add_reference_options(command, args.reference);
-  command.footer(
+  command.footer(examples_footer(
+      {
+          {"every technique against the traced reference, images in a folder",
+           "penumbra compare -o compare"},
+          {"two moment techniques with both filters, numbers as JSON",
+           "penumbra compare --technique vsm,msm --filter all --json compare.json"},
+          {"soft shadows of a light 0.8 wide, against the traced area light",
+           "penumbra compare --technique pcss,msm --filter sat --soft --light-size 0.8"},
+      },
       "--soft applies to vsm, msm and msm16 with --filter sat, which are then measured soft "
       "(against the traced reference only: the filtered reference has one fixed kernel); the "
       "other techniques and filters in the lists are measured as usual, and the table marks "
-      "the soft rows. At least one chosen technique and filter must be able to be soft.");
+      "the soft rows. At least one chosen technique and filter must be able to be soft."));
 }
 
 namespace {
@@ -224,7 +235,7 @@ namespace {
 // filterable ones; an item the settings forbid is kept, marked skipped.
 std::vector<Item> plan_items(const CompareArgs& args) {
   std::vector<Item> items;
-  for (Technique t : parse_technique_list(args.techniques, "--techniques")) {
+  for (Technique t : parse_technique_list(args.techniques, "--technique")) {
     for (Filter f : parse_filter_list(args.filters, "--filter")) {
       Item item;
       item.settings = args.shadow;
@@ -249,7 +260,7 @@ std::vector<Item> plan_items(const CompareArgs& args) {
   });
   if (args.shadow.soft && !any_soft) {
     throw UsageError(
-        "--soft needs vsm, msm or msm16 in --techniques and sat in --filter (the penumbra-sized "
+        "--soft needs vsm, msm or msm16 in --technique and sat in --filter (the penumbra-sized "
         "filter is read from the summed-area table)");
   }
   return items;
@@ -407,7 +418,7 @@ int run_compare_command(CompareArgs& args) {
                      "' has " + std::to_string(scene.lights.size()) + " light(s)");
   }
   const std::string cache_dir =
-      args.no_cache ? std::string()
+      !args.cache ? std::string()
                     : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
 
   auto context = gl::Context::create_headless({.debug = true, .verbose = args.verbose});

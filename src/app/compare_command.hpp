@@ -21,7 +21,7 @@ struct CompareArgs {
   std::string output_dir;  // images; none when empty
   std::string json;        // the numbers for scripts; none when empty
   std::string cache_dir;   // traced references; default_cache_dir() when empty
-  bool no_cache = false;
+  bool cache = true;  // reuse a cached traced reference
   bool verbose = false;
   RenderSettings render;
   ShadowSettings shadow;
@@ -29,8 +29,6 @@ struct CompareArgs {
 };
 
 void add_compare_command_options(CLI::App& command, CompareArgs& args);
-
-// "all" (every technique but none) or a comma-separated list of names, in
 
 // Runs the comparison; throws UsageError or RuntimeError. Every usage
 // error is found before anything is written.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/option_style.hpp"
 #include "core/display_name.hpp"
 #include "core/error.hpp"
 #include "scene/mesh.hpp"
@@ -10,13 +11,13 @@
 namespace penumbra {
 
 void add_light_choice_option(CLI::App& app, std::string& choice) {
-  app.add_option(
-      "--light", choice,
-      "light the scene with one light of this type alone: " +
-          enum_choices<LightType>(kLightTypeNames) +
-          " (the scene's own first light of that type, or one made from its first "
-          "light, aimed at the scene's centre; as bright there as the scene's key light; "
-          "default: the scene's lights)");
+  std::vector<std::string> names;
+  for (const auto& [type, name] : kLightTypeNames) names.emplace_back(name);
+  add_choice(app, "light", choice,
+             "light the scene with one light of this type alone: the scene's own first light "
+             "of that type, or one made from its first light, aimed at the scene's centre; as "
+             "bright there as the scene's key light (not given: the scene's lights)",
+             names, OptionGroup::Lights);
 }
 
 namespace {

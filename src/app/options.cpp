@@ -1,54 +1,44 @@
 #include "app/options.hpp"
 
-#include <cmath>
+#include <algorithm>
 #include <sstream>
 
+#include "app/option_style.hpp"
+#include "app/suggestions.hpp"
 #include "core/error.hpp"
 
 namespace penumbra {
 
 namespace {
 
-// Accepts finite numbers in [min, max]; CLI::Range would let NaN through.
-template <class T>
-CLI::Validator finite_range(T min, T max) {
-  std::ostringstream description;
-  description << "[" << min << " .. " << max << "]";
-  return CLI::Validator(
-      [min, max](std::string& input) -> std::string {
-        T value{};
-        if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
-        if constexpr (std::is_floating_point_v<T>) {
-          if (!std::isfinite(value)) return "'" + input + "' is not a finite number";
-        }
-        if (value < min || value > max) {
-          std::ostringstream msg;
-          msg << input << " is outside [" << min << ", " << max << "]";
-          return msg.str();
-        }
-        return {};
-      },
-      description.str());
+// A parameter whose table entry names no group goes to `fallback`, the
+// section of its table.
+OptionGroup group_or(OptionGroup group, OptionGroup fallback) {
+  return group == OptionGroup::Unset ? fallback : group;
 }
 
 template <class Settings, class T, std::size_t N>
 void add_params(CLI::App& app, Settings& settings,
-                const std::array<NumericParam<Settings, T>, N>& params) {
+                const std::array<NumericParam<Settings, T>, N>& params, OptionGroup fallback) {
   for (const auto& p : params) {
-    app.add_option("--" + std::string(p.name), settings.*(p.field), std::string(p.help))
-        ->capture_default_str()
-        ->check(finite_range<T>(p.min, p.max));
+    add_number<T>(app, p.name, settings.*(p.field), p.help, p.min, p.max,
+                  group_or(p.group, fallback));
+  }
+}
+
+template <class Param, std::size_t N, class Settings>
+void add_switches(CLI::App& app, Settings& settings, const std::array<Param, N>& params,
+                  OptionGroup fallback) {
+  for (const auto& p : params) {
+    add_switch(app, p.name, p.help, settings.*(p.field), group_or(p.group, fallback));
   }
 }
 
 template <class E, std::size_t N>
-std::string choices(const std::array<std::pair<E, std::string_view>, N>& table) {
-  return enum_choices<E>(EnumTable<E>(table));
-}
-
-bool parse_switch(const std::string& flag, const std::string& value) {
-  if (auto on = parse_enum<bool>(kOnOffNames, value)) return *on;
-  throw UsageError(flag + " '" + value + "': choose from " + choices(kOnOffNames));
+std::vector<std::string> names_of(const std::array<std::pair<E, std::string_view>, N>& table) {
+  std::vector<std::string> names;
+  for (const auto& [value, name] : table) names.emplace_back(name);
+  return names;
 }
 
 std::vector<std::string> split_list(const std::string& list) {
@@ -71,8 +61,9 @@ std::vector<E> parse_list(const std::string& list, const std::string& flag, cons
   for (const std::string& name : split_list(list)) {
     const std::optional<E> value = parse_enum<E>(table, name);
     if (!value) {
-      throw UsageError(flag + ": unknown " + what + " '" + name + "' (choose all, or from " +
-                       choices(table) + ", comma-separated)");
+      throw UsageError(flag + ": unknown " + what + " '" + name + "' (all, or a comma-separated " +
+                       "list of " + enum_choices<E>(EnumTable<E>(table), ", ") + ")" +
+                       did_you_mean(name, names_of(table)));
     }
     if (std::find(values.begin(), values.end(), *value) == values.end()) values.push_back(*value);
   }
@@ -80,7 +71,24 @@ std::vector<E> parse_list(const std::string& list, const std::string& flag, cons
   return values;
 }
 
+template <class E, std::size_t N>
+E parse_name(const std::string& name, const std::string& flag, const char* what,
+             const std::array<std::pair<E, std::string_view>, N>& table) {
+  if (auto value = parse_enum<E>(table, name)) return *value;
+  throw UsageError(flag + ": unknown " + what + " '" + name + "' (one of " +
+                   enum_choices<E>(EnumTable<E>(table), ", ") + ")" +
+                   did_you_mean(name, names_of(table)));
+}
+
 }  // namespace
+
+std::vector<std::string> technique_names() {
+  return names_of(kTechniqueNames);
+}
+
+std::vector<std::string> filter_names() {
+  return names_of(kFilterNames);
+}
 
 std::vector<Technique> parse_technique_list(const std::string& list, const std::string& flag) {
   std::vector<Technique> all;
@@ -98,107 +106,61 @@ std::vector<Filter> parse_filter_list(const std::string& list, const std::string
 
 void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& named) {
   named.technique = std::string(enum_name<Technique>(kTechniqueNames, settings.technique));
-  app.add_option("--technique", named.technique, "shadow technique: " + choices(kTechniqueNames))
-      ->capture_default_str();
+  add_choice(app, "technique", named.technique, "shadow technique", technique_names(),
+             OptionGroup::Technique);
   named.filter = std::string(enum_name<Filter>(kFilterNames, settings.filter));
-  app.add_option("--filter", named.filter,
-                 "filter of the vsm/esm/msm/msm16 maps: " + choices(kFilterNames) +
-                     " (separable Gaussian, or summed-area table)")
-      ->capture_default_str();
+  add_choice(app, "filter", named.filter,
+             "filter of the vsm, esm, msm and msm16 maps: a separable Gaussian, or a summed-area "
+             "table",
+             filter_names(), OptionGroup::Filter);
   add_shadow_parameters(app, settings);
 }
 
 void add_shadow_parameters(CLI::App& app, ShadowSettings& settings) {
-  for (const auto& p : kShadowFlagParams) {
-    app.add_flag("--" + std::string(p.name), settings.*(p.field), std::string(p.help));
-  }
-  for (const auto& p : kShadowSwitchParams) {
-    bool* field = &(settings.*(p.field));
-    app.add_option_function<std::string>(
-           "--" + std::string(p.name),
-           [field](const std::string& value) { *field = *parse_enum<bool>(kOnOffNames, value); },
-           std::string(p.help) + ": " + choices(kOnOffNames))
-        ->check(CLI::IsMember({"on", "off"}))
-        ->default_str(std::string(enum_name<bool>(kOnOffNames, settings.*(p.field))));
-  }
-  add_params(app, settings, kShadowIntParams);
-  add_params(app, settings, kShadowFloatParams);
+  add_switches(app, settings, kShadowFlagParams, OptionGroup::Technique);
+  add_switches(app, settings, kShadowSwitchParams, OptionGroup::Technique);
+  add_params(app, settings, kShadowIntParams, OptionGroup::Technique);
+  add_params(app, settings, kShadowFloatParams, OptionGroup::Technique);
 }
 
 void add_accumulate_option(CLI::App& app, ShadowSettings& settings) {
-  add_params(app, settings, kAccumulateParams);
+  add_params(app, settings, kAccumulateParams, OptionGroup::SoftShadows);
 }
 
 void add_render_parameters(CLI::App& app, RenderSettings& settings) {
-  add_params(app, settings, kRenderIntParams);
+  add_params(app, settings, kRenderIntParams, OptionGroup::Output);
 }
 
 void add_reference_options(CLI::App& app, ReferenceSettings& settings) {
-  add_params(app, settings, kReferenceIntParams);
+  add_params(app, settings, kReferenceIntParams, OptionGroup::Reference);
 }
 
 void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named) {
   named.view = std::string(enum_name<View>(kViewNames, settings.view));
-  app.add_option(
-         "--view", named.view,
-         "what to write: " + choices(kViewNames) +
-             " (shadow: the shadow factor, 1 = lit, 0 on surfaces facing away from the light; "
-             "shadow-reference: what a filtered technique "
-             "approximates, the unfiltered map's depth tests averaged with the same "
-             "filter kernel; shadow-map: the light's relative "
-             "depth z-bar, a light with several views (the six cube faces of a point light, "
-             "the cascades of a directional one) shown tiled; moments, moments-filtered: the "
-             "technique's map before and after the filter, as colour, tiled the same way; for "
-             "esm, log(map)/c + 1, in depth units; ao: the ambient-occlusion buffer, 1 = "
-             "unoccluded; cascades: the cascade or cube face whose map each pixel reads, as a "
-             "colour: red, green, blue, yellow, magenta, cyan for views 0-5, black where no "
-             "map covers the point)")
-      ->capture_default_str();
+  add_choice(app, "view", named.view,
+             "what to write: final, the lit image; shadow, the shadow factor (1 = lit, 0 facing "
+             "away from the light); shadow-reference, what a filtered technique approximates (the "
+             "map's depth tests averaged with its filter kernel); shadow-map, the light's relative "
+             "depth z-bar; moments and moments-filtered, the technique's map before and after "
+             "the filter (for esm, log(map)/c + 1); normals; albedo; ao, the ambient occlusion "
+             "(1 = unoccluded); cascades, which cascade or cube face each pixel reads (red, "
+             "green, blue, yellow, magenta, cyan for 0-5). A light with several views (cube "
+             "faces, cascades) shows them tiled",
+             names_of(kViewNames), OptionGroup::Output);
   add_render_parameters(app, settings);
 }
 
-void add_ssao_options(CLI::App& app, SsaoSettings& settings, NamedOptions& named) {
-  named.ssao = std::string(enum_name<bool>(kOnOffNames, settings.enabled));
-  app.add_option(
-         "--ssao", named.ssao,
-         "screen-space ambient occlusion darkening the ambient light: " + choices(kOnOffNames))
-      ->capture_default_str();
-  named.ssao_half_resolution = std::string(enum_name<bool>(kOnOffNames, settings.half_resolution));
-  app.add_option("--ssao-half-resolution", named.ssao_half_resolution,
-                 "compute the AO at half width and height, then upsample it with depth and "
-                 "normal awareness: " +
-                     choices(kOnOffNames))
-      ->capture_default_str();
-  add_params(app, settings, kSsaoIntParams);
-  add_params(app, settings, kSsaoFloatParams);
-}
-
-void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render,
-                         SsaoSettings& ssao) {
-  parse_named_options(named, shadow, render);
-  ssao.enabled = parse_switch("--ssao", named.ssao);
-  ssao.half_resolution = parse_switch("--ssao-half-resolution", named.ssao_half_resolution);
+void add_ssao_options(CLI::App& app, SsaoSettings& settings) {
+  add_switches(app, settings, kSsaoSwitchParams, OptionGroup::Ssao);
+  add_params(app, settings, kSsaoIntParams, OptionGroup::Ssao);
+  add_params(app, settings, kSsaoFloatParams, OptionGroup::Ssao);
 }
 
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow,
                          RenderSettings& render) {
-  if (auto t = parse_enum<Technique>(kTechniqueNames, named.technique)) {
-    shadow.technique = *t;
-  } else {
-    throw UsageError("unknown technique '" + named.technique + "' (choose from " +
-                     choices(kTechniqueNames) + ")");
-  }
-  if (auto f = parse_enum<Filter>(kFilterNames, named.filter)) {
-    shadow.filter = *f;
-  } else {
-    throw UsageError("unknown filter '" + named.filter + "' (choose from " + choices(kFilterNames) +
-                     ")");
-  }
-  if (auto v = parse_enum<View>(kViewNames, named.view)) {
-    render.view = *v;
-  } else {
-    throw UsageError("unknown view '" + named.view + "' (choose from " + choices(kViewNames) + ")");
-  }
+  shadow.technique = parse_name(named.technique, "--technique", "technique", kTechniqueNames);
+  shadow.filter = parse_name(named.filter, "--filter", "filter", kFilterNames);
+  render.view = parse_name(named.view, "--view", "view", kViewNames);
 }
 
 }  // namespace penumbra

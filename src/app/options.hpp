@@ -1,7 +1,7 @@
 #pragma once
 // Registers the shared settings structs with CLI11, from the parameter
-// tables in core/settings.hpp: one name, one help text, one range and one
-// default (the struct's) per parameter.
+// tables in core/settings.hpp: one name, one help text, one range, one
+// default (the struct's) and one --help section per parameter.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -11,26 +11,28 @@
 namespace penumbra {
 
 // Options whose values are names are read as strings, then parsed by
-// parse_named_options(), so errors list the valid names.
+// parse_named_options().
 struct NamedOptions {
   std::string technique;
   std::string filter;
   std::string view;
-  std::string ssao;
-  std::string ssao_half_resolution;
 };
 
 void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& named);
 void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named);
-void add_ssao_options(CLI::App& app, SsaoSettings& settings, NamedOptions& named);
+void add_ssao_options(CLI::App& app, SsaoSettings& settings);
 
-// The numeric parameters alone, for commands that take the technique,
-// filter or view their own way.
+// The numeric and on/off parameters alone, for commands that take the
+// technique, filter or view their own way.
 void add_shadow_parameters(CLI::App& app, ShadowSettings& settings);
 // --accumulate (render and compare only).
 void add_accumulate_option(CLI::App& app, ShadowSettings& settings);
 void add_render_parameters(CLI::App& app, RenderSettings& settings);
 void add_reference_options(CLI::App& app, ReferenceSettings& settings);
+
+// The names a technique, filter or view option accepts.
+std::vector<std::string> technique_names();
+std::vector<std::string> filter_names();
 
 // "all" or a comma-separated list of names, for commands that take several
 // techniques (all: every one but none) or filters; `flag` names the option
@@ -38,10 +40,7 @@ void add_reference_options(CLI::App& app, ReferenceSettings& settings);
 std::vector<Technique> parse_technique_list(const std::string& list, const std::string& flag);
 std::vector<Filter> parse_filter_list(const std::string& list, const std::string& flag);
 
-// Throws UsageError for an unknown name. The SSAO switches are read only by
-// the overload that takes SsaoSettings.
+// Throws UsageError for an unknown name.
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render);
-void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render,
-                         SsaoSettings& ssao);
 
 }  // namespace penumbra

@@ -2,7 +2,9 @@
 
 #include <cstdio>
 
+#include "app/help_formatter.hpp"
 #include "app/light_choice.hpp"
+#include "app/option_style.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
@@ -17,19 +19,30 @@ namespace penumbra {
 void add_render_command_options(CLI::App& command, RenderArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
   add_light_choice_option(command, args.light);
-  command
-      .add_option("-o,--output", args.output, "output image: .png, or .exr for raw 32-bit floats")
-      ->required();
-  command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
+  in_group(command
+               .add_option("-o,--output", args.output,
+                           "output image: .png, or .exr for raw 32-bit floats")
+               ->required()
+               ->type_name("FILE"),
+           OptionGroup::Output);
+  in_group(command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages"),
+           OptionGroup::Output);
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
   add_accumulate_option(command, args.shadow);
-  add_ssao_options(command, args.ssao, args.named);
+  add_ssao_options(command, args.ssao);
   add_scene_options(command, args.scene_options);
+  command.footer(examples_footer({
+      {"the default scene, hard shadows", "penumbra render -o hard.png"},
+      {"soft shadows from a light 1 unit wide, by PCSS",
+       "penumbra render --technique pcss --light-size 1 -o pcss.png"},
+      {"moment shadows whose penumbra grows with the blocker distance",
+       "penumbra render --technique msm --filter sat --soft -o msm-soft.png"},
+  }));
 }
 
 int run_render_command(RenderArgs& args) {
-  parse_named_options(args.named, args.shadow, args.render, args.ssao);
+  parse_named_options(args.named, args.shadow, args.render);
   validate(args.render);
   validate(args.shadow);
   validate(args.ssao);

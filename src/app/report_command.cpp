@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/help_formatter.hpp"
 #include "app/light_choice.hpp"
+#include "app/option_style.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/context.hpp"
@@ -19,9 +21,18 @@ namespace fs = std::filesystem;
 void add_report_command_options(CLI::App& command, ReportArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
   add_light_choice_option(command, args.light);
-  command.add_option("-o,--output", args.output, "folder for index.html and its images")
-      ->required();
-  command.add_flag("--quick", args.quick, "smaller images and fewer sweeps");
+  in_group(command.add_option("-o,--output", args.output, "folder for index.html and its images")
+               ->required()
+               ->type_name("FOLDER"),
+           OptionGroup::Output);
+  in_group(command.add_flag("--quick", args.quick, "smaller images and fewer sweeps"),
+           OptionGroup::Output);
+  command.footer(examples_footer({
+      {"the whole study of the default scene", "penumbra report -o study"},
+      {"a quicker draft: smaller images, fewer sweeps", "penumbra report --quick -o draft"},
+      {"the study of a model under a point light alone",
+       "penumbra report --model scenes/models/bunny.obj --light point -o bunny-study"},
+  }));
 }
 
 int run_report_command(const ReportArgs& args) {

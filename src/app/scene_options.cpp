@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "app/option_style.hpp"
 #include "core/error.hpp"
 #include "scene/scene_checks.hpp"
 
@@ -92,26 +93,34 @@ std::string format_float(float value) {
 }
 
 void add_scene_options(CLI::App& app, SceneOptions& options) {
+  // Each help starts with the value's form ("X,Y,Z: ..."): it becomes the
+  // placeholder, the rest the description. The range and default read as
+  // every other option's (option_style.hpp).
+  const auto add = [&app](std::string_view name, std::string_view help, auto& value,
+                          OptionGroup group) {
+    const std::size_t colon = help.find(": ");
+    CLI::Option* option = app.add_option(flag(name), value, std::string(help.substr(colon + 2)))
+                              ->type_name(std::string(help.substr(0, colon)))
+                              ->default_str("the scene's");
+    return in_group(option, group);
+  };
   for (std::size_t i = 0; i < kCameraVectorParams.size(); ++i) {
-    app.add_option(flag(kCameraVectorParams[i].name), options.camera_vectors[i],
-                   std::string(kCameraVectorParams[i].help) + " (default: the scene's)");
+    const auto& p = kCameraVectorParams[i];
+    add(p.name, p.help, options.camera_vectors[i], OptionGroup::SceneAndCamera);
   }
   for (std::size_t i = 0; i < kCameraScalarParams.size(); ++i) {
     const auto& p = kCameraScalarParams[i];
-    std::ostringstream help;
-    help << p.help << ", in [" << p.min << ", " << p.max << "] (default: the scene's)";
-    app.add_option(flag(p.name), options.camera_scalars[i], help.str());
+    show_range(add(p.name, p.help, options.camera_scalars[i], OptionGroup::SceneAndCamera), p.min,
+               p.max);
   }
   for (std::size_t i = 0; i < kLightVectorParams.size(); ++i) {
-    app.add_option(flag(kLightVectorParams[i].name), options.light_vectors[i],
-                   std::string(kLightVectorParams[i].help) + " (default: the scene's)")
-        ->allow_extra_args(false);
+    const auto& p = kLightVectorParams[i];
+    add(p.name, p.help, options.light_vectors[i], OptionGroup::Lights)->allow_extra_args(false);
   }
   for (std::size_t i = 0; i < kLightScalarParams.size(); ++i) {
     const auto& p = kLightScalarParams[i];
-    std::ostringstream help;
-    help << p.help << ", in [" << p.min << ", " << p.max << "] (default: the scene's)";
-    app.add_option(flag(p.name), options.light_scalars[i], help.str())->allow_extra_args(false);
+    show_range(add(p.name, p.help, options.light_scalars[i], OptionGroup::Lights), p.min, p.max)
+        ->allow_extra_args(false);
   }
 }
 

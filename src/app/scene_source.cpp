@@ -1,5 +1,6 @@
 #include "app/scene_source.hpp"
 
+#include "app/option_style.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/scene_file.hpp"
 
@@ -8,14 +9,18 @@ namespace penumbra {
 void add_scene_source_options(CLI::App& command, std::string& scene, std::string& model) {
   CLI::Option* scene_option =
       command.add_option("--scene", scene, "built-in scene (default, spot) or a .json scene file")
-          ->capture_default_str();
-  command
-      .add_option("--model", model,
-                  "a model file (OBJ, PLY, glTF/GLB, STL, OFF, or another format assimp reads) "
-                  "scaled to 2 units, standing on a ground plane, framed by the camera, lit by a "
-                  "spot and a directional light; instead of --scene")
-      ->type_name("FILE")
-      ->excludes(scene_option);
+          ->capture_default_str()
+          ->type_name("NAME|FILE");
+  in_group(scene_option, OptionGroup::SceneAndCamera);
+  CLI::Option* model_option =
+      command
+          .add_option("--model", model,
+                      "a model file (OBJ, PLY, glTF/GLB, STL, OFF, or another format assimp "
+                      "reads) scaled to 2 units, standing on a ground plane, framed by the camera, "
+                      "lit by a spot and a directional light; instead of --scene")
+          ->type_name("FILE")
+          ->excludes(scene_option);
+  in_group(model_option, OptionGroup::SceneAndCamera);
 }
 
 Scene resolve_scene_source(const std::string& scene, const std::string& model) {

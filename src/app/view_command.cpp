@@ -7,7 +7,9 @@
 #include <optional>
 
 #include "app/command_line.hpp"
+#include "app/help_formatter.hpp"
 #include "app/light_choice.hpp"
+#include "app/option_style.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "gl/gpu_profiler.hpp"
@@ -110,25 +112,36 @@ void apply_key(KeyAction action, ViewerState& state, PanelActions& actions, bool
 void add_view_command_options(CLI::App& command, ViewArgs& args) {
   add_scene_source_options(command, args.scene, args.model);
   add_light_choice_option(command, args.light);
-  command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages");
-  command
-      .add_option("--frames", args.frames,
-                  "scripted mode: render this many frames ignoring mouse and keys, then close "
-                  "(0: run until the window is closed)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1000000));
-  command.add_option("--screenshot", args.screenshot,
-                     "on closing, write the last frame's view as 'render' writes it (.png, .exr)");
-  command.add_option("--capture-window", args.capture_window,
-                     "on closing, write the whole window, panel included (.png)");
+  in_group(command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages"),
+           OptionGroup::Output);
+  add_number(command, "frames", args.frames,
+             "scripted mode: render this many frames ignoring mouse and keys, then close (0: run "
+             "until the window is closed)",
+             0, 1000000, OptionGroup::Output);
+  in_group(command
+               .add_option("--screenshot", args.screenshot,
+                           "on closing, write the last frame's view as 'render' writes it (.png, "
+                           ".exr)")
+               ->type_name("FILE"),
+           OptionGroup::Output);
+  in_group(command
+               .add_option("--capture-window", args.capture_window,
+                           "on closing, write the whole window, panel included (.png)")
+               ->type_name("FILE"),
+           OptionGroup::Output);
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
-  add_ssao_options(command, args.ssao, args.named);
+  add_ssao_options(command, args.ssao);
   add_scene_options(command, args.scene_options);
+  command.footer(examples_footer({
+      {"the default scene; the panel edits every setting", "penumbra view"},
+      {"the bunny scene file, with moment soft shadows",
+       "penumbra view --scene scenes/bunny.json --technique msm --filter sat --soft"},
+  }));
 }
 
 int run_view_command(ViewArgs& args) {
-  parse_named_options(args.named, args.shadow, args.render, args.ssao);
+  parse_named_options(args.named, args.shadow, args.render);
   validate(args.render);
   validate(args.shadow);
   if (!args.screenshot.empty()) {

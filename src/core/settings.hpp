@@ -234,8 +234,42 @@ struct RenderSettings {
   int light_index = 0;
 };
 
-// A numeric parameter: flag name (without "--"), help, range, and where it
-// lives. The default is the struct member's initializer.
+// The sections of every command's --help, in the order they are shown.
+// A parameter's group is part of its table entry below; one without a
+// group (Unset) is shown in its table's section (see add_params in
+// src/app/options.cpp), and tests/unit/cli_help_test.cpp lists it.
+enum class OptionGroup {
+  Unset,
+  Output,
+  SceneAndCamera,
+  Lights,
+  Technique,
+  Filter,
+  SoftShadows,
+  Bias,
+  Ssao,
+  Reference,
+  Measurement,
+  Other,
+};
+
+inline constexpr std::array<std::pair<OptionGroup, std::string_view>, 11> kOptionGroupNames{{
+    {OptionGroup::Output, "Output"},
+    {OptionGroup::SceneAndCamera, "Scene and camera"},
+    {OptionGroup::Lights, "Lights"},
+    {OptionGroup::Technique, "Technique"},
+    {OptionGroup::Filter, "Filter"},
+    {OptionGroup::SoftShadows, "Soft shadows"},
+    {OptionGroup::Bias, "Bias"},
+    {OptionGroup::Ssao, "SSAO"},
+    {OptionGroup::Reference, "Reference"},
+    {OptionGroup::Measurement, "Measurement"},
+    {OptionGroup::Other, "Other"},
+}};
+
+// A numeric parameter: flag name (without "--"), help, range, where it
+// lives, and its --help section. The default is the struct member's
+// initializer.
 template <class Settings, class T>
 struct NumericParam {
   std::string_view name;
@@ -243,14 +277,17 @@ struct NumericParam {
   T min;
   T max;
   T Settings::*field;
+  OptionGroup group = OptionGroup::Unset;
 };
 
-// An on/off parameter: flag name (without "--"), help, and where it lives.
+// An on/off parameter given as "--name" or "--no-name": flag name (without
+// "--"), help, where it lives, and its --help section.
 template <class Settings>
 struct FlagParam {
   std::string_view name;
   std::string_view help;
   bool Settings::*field;
+  OptionGroup group = OptionGroup::Unset;
 };
 
 inline constexpr int kMaxMapSize =
@@ -266,65 +303,65 @@ inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
 inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloatParams{{
     {"constant-bias",
      "constant depth bias, in shadow-map texels (a texel's world size at the receiver)", 0.0f,
-     64.0f, &ShadowSettings::constant_bias},
+     64.0f, &ShadowSettings::constant_bias, OptionGroup::Bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
-     &ShadowSettings::slope_bias},
+     &ShadowSettings::slope_bias, OptionGroup::Bias},
     {"max-slope", "largest slope tan(theta) the slope-scaled bias follows", 0.0f, 1000.0f,
-     &ShadowSettings::max_slope},
+     &ShadowSettings::max_slope, OptionGroup::Bias},
     {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
-     0.0f, 4.0f, &ShadowSettings::filter_slope_bias},
+     0.0f, 4.0f, &ShadowSettings::filter_slope_bias, OptionGroup::Bias},
     {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
-     &ShadowSettings::normal_offset},
+     &ShadowSettings::normal_offset, OptionGroup::Bias},
     {"light-size",
      "width of a spot light's source in world units (0: a point), for pcss, --soft and "
      "the area-light reference (a square facing the light's direction); a point light's "
      "source is a sphere of this diameter",
-     0.0f, 100.0f, &ShadowSettings::light_size},
+     0.0f, 100.0f, &ShadowSettings::light_size, OptionGroup::Lights},
     {"sun-angle",
      "angular diameter of a directional light's source in degrees (0: a point); the reference "
      "traces the disc of directions this wide",
-     0.0f, 45.0f, &ShadowSettings::sun_angle},
+     0.0f, 45.0f, &ShadowSettings::sun_angle, OptionGroup::Lights},
     {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
-     &ShadowSettings::pcf_width},
+     &ShadowSettings::pcf_width, OptionGroup::Technique},
     {"esm-c", "ESM exponent c, per unit of the shadow view's relative depth z-bar", 1.0f, kEsmMaxC,
-     &ShadowSettings::esm_c},
+     &ShadowSettings::esm_c, OptionGroup::Technique},
     {"msm-alpha",
      "MSM moment bias alpha for msm's 32-bit float moments of 2 z-bar - 1, toward (0, 0.375, 0, "
      "0.375); below about 5e-7 float rounding shows near the far end of the depth range",
-     1e-8f, 0.5f, &ShadowSettings::msm_alpha},
+     1e-8f, 0.5f, &ShadowSettings::msm_alpha, OptionGroup::Technique},
     {"msm16-alpha",
      "MSM moment bias alpha for msm16's 16-bit moments and for moments summed in the "
      "summed-area table (msm and msm16 with --filter sat), toward (0, 0.628, 0, 0.628)",
-     1e-8f, 0.5f, &ShadowSettings::msm16_alpha},
+     1e-8f, 0.5f, &ShadowSettings::msm16_alpha, OptionGroup::Technique},
     {"vsm-min-variance", "VSM minimum variance, in squared shadow-map texels", 0.0f, 4096.0f,
-     &ShadowSettings::vsm_min_variance},
+     &ShadowSettings::vsm_min_variance, OptionGroup::Technique},
     {"bleed-reduction", "light-bleeding reduction for vsm and msm (0: off)", 0.0f, 0.99f,
-     &ShadowSettings::bleed_reduction},
+     &ShadowSettings::bleed_reduction, OptionGroup::Technique},
     {"cascade-lambda",
      "directional lights: cascade split scheme, lambda * logarithmic + (1 - lambda) * uniform "
      "(Zhang et al. 2006)",
-     0.0f, 1.0f, &ShadowSettings::cascade_lambda},
+     0.0f, 1.0f, &ShadowSettings::cascade_lambda, OptionGroup::Lights},
     {"cascade-blend",
      "directional lights: fraction of each cascade, at its far end, blended into the next", 0.0f,
-     0.5f, &ShadowSettings::cascade_blend},
+     0.5f, &ShadowSettings::cascade_blend, OptionGroup::Lights},
 }};
 
 inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
-     &ShadowSettings::map_size},
+     &ShadowSettings::map_size, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
-     kMaxBlur, &ShadowSettings::blur},
+     kMaxBlur, &ShadowSettings::blur, OptionGroup::Filter},
     {"pcf-samples", "PCF samples from the Poisson set (1: hardware 2x2 compare)", 1,
-     kMaxShadowSamples, &ShadowSettings::pcf_samples},
+     kMaxShadowSamples, &ShadowSettings::pcf_samples, OptionGroup::Technique},
     {"pcss-blocker-samples",
      "PCSS blocker-search samples at most, each gathering 2x2 texels (one per 4 texels of the "
      "search region)",
-     1, kMaxShadowSamples, &ShadowSettings::pcss_blocker_samples},
+     1, kMaxShadowSamples, &ShadowSettings::pcss_blocker_samples, OptionGroup::Technique},
     {"pcss-filter-samples",
      "PCSS filter samples at most, each a 2x2 bilinear compare (one per texel of the penumbra)", 1,
-     kMaxShadowSamples, &ShadowSettings::pcss_filter_samples},
+     kMaxShadowSamples, &ShadowSettings::pcss_filter_samples, OptionGroup::Technique},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
-     &ShadowSettings::cascades},
+     &ShadowSettings::cascades, OptionGroup::Lights},
 }};
 
 inline constexpr int kMaxAccumulate = 4096;
@@ -335,44 +372,44 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kAccumulatePar
      "average this many sub-frames, each with the shadow maps rendered from another point of "
      "the light's source (--light-size, --sun-angle; stratified, the same points every run); "
      "1: off",
-     1, kMaxAccumulate, &ShadowSettings::accumulate},
+     1, kMaxAccumulate, &ShadowSettings::accumulate, OptionGroup::SoftShadows},
 }};
 
 inline constexpr int kMaxSsaoSamples = 64;  // SSAO_MAX_SAMPLES in shaders/shared/bindings.h
 inline constexpr int kMaxSsaoBlur = 16;
 
 inline constexpr std::array<NumericParam<SsaoSettings, int>, 2> kSsaoIntParams{{
-    {"ssao-samples", "SSAO samples per pixel", 1, kMaxSsaoSamples, &SsaoSettings::samples},
+    {"ssao-samples", "SSAO samples per pixel", 1, kMaxSsaoSamples, &SsaoSettings::samples, OptionGroup::Ssao},
     {"ssao-blur", "radius in AO texels of the depth- and normal-aware SSAO blur; 0: none", 0,
-     kMaxSsaoBlur, &SsaoSettings::blur},
+     kMaxSsaoBlur, &SsaoSettings::blur, OptionGroup::Ssao},
 }};
 
 inline constexpr std::array<NumericParam<SsaoSettings, float>, 3> kSsaoFloatParams{{
-    {"ssao-radius", "SSAO hemisphere radius in world units", 1e-4f, 1000.0f, &SsaoSettings::radius},
-    {"ssao-bias", "SSAO depth bias in world units", 0.0f, 100.0f, &SsaoSettings::bias},
+    {"ssao-radius", "SSAO hemisphere radius in world units", 1e-4f, 1000.0f, &SsaoSettings::radius, OptionGroup::Ssao},
+    {"ssao-bias", "SSAO depth bias in world units", 0.0f, 100.0f, &SsaoSettings::bias, OptionGroup::Ssao},
     {"ssao-range",
      "SSAO range check: occluders more than this many radii in front of a sample are ignored", 0.0f,
-     1000.0f, &SsaoSettings::range},
+     1000.0f, &SsaoSettings::range, OptionGroup::Ssao},
 }};
 
 inline constexpr std::array<FlagParam<ShadowSettings>, 2> kShadowFlagParams{{
     {"soft",
      "vsm/msm/msm16 with --filter sat: filter width follows the estimated penumbra (blocker "
      "search from the moments), at least --blur",
-     &ShadowSettings::soft},
+     &ShadowSettings::soft, OptionGroup::SoftShadows},
     {"soft-two-moment-blockers",
      "msm/msm16 --soft: estimate the blockers' depth from the mean depth and the occluded "
      "fraction with the unoccluded texels at the receiver's depth (Yang et al. 2010, as vsm "
      "does) instead of the four-moment quadrature of Peters et al. 2016; closer at the "
      "bunny's foot, farther off in wide penumbrae",
-     &ShadowSettings::soft_two_moment_blockers},
+     &ShadowSettings::soft_two_moment_blockers, OptionGroup::SoftShadows},
 }};
 
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{
-    {"width", "image width in pixels", 1, kMaxImageSize, &RenderSettings::width},
-    {"height", "image height in pixels", 1, kMaxImageSize, &RenderSettings::height},
+    {"width", "image width in pixels", 1, kMaxImageSize, &RenderSettings::width, OptionGroup::Output},
+    {"height", "image height in pixels", 1, kMaxImageSize, &RenderSettings::height, OptionGroup::Output},
     {"light-index", "which light the shadow and shadow-map views show (0 = first)", 0, 3,
-     &RenderSettings::light_index},
+     &RenderSettings::light_index, OptionGroup::Lights},
 }};
 
 inline constexpr int kMaxReferenceSamples = 65536;
@@ -381,23 +418,32 @@ inline constexpr std::array<NumericParam<ReferenceSettings, int>, 1> kReferenceI
     {"reference-samples",
      "traced reference: shadow rays per pixel towards an area light (--light-size or "
      "--sun-angle > 0)",
-     1, kMaxReferenceSamples, &ReferenceSettings::samples},
+     1, kMaxReferenceSamples, &ReferenceSettings::samples, OptionGroup::Reference},
 }};
 
-// An on/off parameter given as "--name on|off": name (without "--"), help,
-// and where it lives.
+// An on/off parameter given as "--name" or "--no-name" like a FlagParam,
+// and also, as it once was, as "--name on|off".
 template <class Settings>
 struct SwitchParam {
   std::string_view name;
   std::string_view help;
   bool Settings::*field;
+  OptionGroup group = OptionGroup::Unset;
 };
 
 inline constexpr std::array<SwitchParam<ShadowSettings>, 1> kShadowSwitchParams{{
     {"guard-band",
      "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
      "filters near a face's edge read their own face (no seams)",
-     &ShadowSettings::guard_band},
+     &ShadowSettings::guard_band, OptionGroup::Lights},
+}};
+
+inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{
+    {"ssao", "screen-space ambient occlusion darkening the ambient light",
+     &SsaoSettings::enabled, OptionGroup::Ssao},
+    {"ssao-half-resolution",
+     "compute the AO at half width and height, then upsample it with depth and normal awareness",
+     &SsaoSettings::half_resolution, OptionGroup::Ssao},
 }};
 
 // Throws UsageError naming the first parameter outside its range.
