@@ -133,8 +133,8 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
   add_shadow_parameters(command, args.shadow);
   command.footer(examples_footer({
       {"every pass of msm, timed", "penumbra bench"},
-      {"three techniques at 512 to 4096 texels, numbers also as JSON",
-       "penumbra bench --technique hard,vsm,msm --sweep map-size --json bench.json"},
+      {"three techniques side by side, numbers also as JSON",
+       "penumbra bench --technique hard,vsm,msm --json bench.json"},
       {"the cost of the filter width, Gaussian against the summed-area table",
        "penumbra bench --technique vsm --sweep blur --filter sat"},
   }));

@@ -192,11 +192,13 @@ std::unique_ptr<CLI::App> make_cli(CliArgs& args) {
                             "write it to this file instead of standard output")
                ->type_name("FILE"),
            OptionGroup::Output);
-  completion->footer(examples_footer({
-      {"completion in this shell", "source <(penumbra completion)"},
-      {"for every shell of this user",
-       "penumbra completion -o ~/.local/share/bash-completion/completions/penumbra"},
-  }));
+  completion->footer(examples_footer(
+      {
+          {"the script, to read", "penumbra completion"},
+          {"where bash-completion finds it for this user",
+           "penumbra completion -o ~/.local/share/bash-completion/completions/penumbra"},
+      },
+      "To complete in this shell: source <(penumbra completion)"));
   return app;
 }
 

@@ -153,8 +153,9 @@ void add_switch(CLI::App& app, std::string_view name, std::string_view help, boo
                 OptionGroup group) {
   bool* target = &value;
   const std::string on = flag(name);
-  // "--name" alone reads as "true" (CLI11 gives an option that may take
-  // no value that value).
+  // "--name" alone reads as "true": CLI11 gives that to a "flag-like"
+  // option, which expected(0) makes it; expected(0, 1) then lets it take
+  // a value ("on", "off") and keeps it flag-like.
   CLI::Option* positive =
       app.add_option_function<std::string>(
              on,
@@ -165,6 +166,7 @@ void add_switch(CLI::App& app, std::string_view name, std::string_view help, boo
                }
              },
              std::string(help))
+          ->expected(0)
           ->expected(0, 1)
           ->default_str(*target ? "on" : "off")
           ->type_name("");

@@ -42,7 +42,7 @@ void expect_compare_error(const std::string& args, int status, const std::string
 
 TEST(Compare, UsageErrors) {
   expect_compare_error("--techniques hard,blurry", 2, "'blurry'");
-  expect_compare_error("--techniques ''", 2, "--techniques");
+  expect_compare_error("--techniques ''", 2, "--technique");
   expect_compare_error("--filter box", 2, "'box'");
   expect_compare_error("--scene nosuchscene", 2, "nosuchscene");
   expect_compare_error("--light-index 3", 2, "--light-index");

@@ -136,6 +136,39 @@ TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
   EXPECT_NE(std::find(args.begin(), args.end(), "--light-cone=0:22.5"), args.end());
 }
 
+// Every on/off parameter changed from its default is written "--name" or
+// "--no-name", and reads back.
+TEST(CommandLine, SwitchesReadBackInBothSpellings) {
+  ShadowSettings shadow;
+  shadow.technique = Technique::Msm;
+  shadow.filter = Filter::Sat;
+  shadow.soft = true;
+  shadow.soft_two_moment_blockers = true;
+  shadow.guard_band = false;
+  SsaoSettings ssao;
+  ssao.enabled = false;
+  ssao.half_resolution = true;
+  const std::vector<std::string> args = render_command_args({.scene_argument = "default",
+                                                             .model_argument = "",
+                                                             .light = {},
+                                                             .render = {},
+                                                             .shadow = shadow,
+                                                             .ssao = ssao,
+                                                             .original = nullptr,
+                                                             .edited = nullptr,
+                                                             .output = "a.png"});
+  for (const char* expected : {"--soft", "--soft-two-moment-blockers", "--no-guard-band",
+                               "--no-ssao", "--ssao-half-resolution"}) {
+    EXPECT_NE(std::find(args.begin(), args.end(), expected), args.end()) << expected;
+  }
+  const RenderArgs parsed = parse(args);
+  EXPECT_TRUE(parsed.shadow.soft);
+  EXPECT_TRUE(parsed.shadow.soft_two_moment_blockers);
+  EXPECT_FALSE(parsed.shadow.guard_band);
+  EXPECT_FALSE(parsed.ssao.enabled);
+  EXPECT_TRUE(parsed.ssao.half_resolution);
+}
+
 TEST(CommandLine, ShellCommandQuotesWhatTheShellWouldSplit) {
   EXPECT_EQ(shell_command({"render", "--output=a b.png", "--light-position=-1,2,3"}),
             "penumbra render '--output=a b.png' --light-position=-1,2,3");
