@@ -156,8 +156,7 @@ std::unique_ptr<CLI::App> make_cli(CliArgs& args) {
   app->formatter(std::make_shared<HelpFormatter>());
   app->require_subcommand(1);
   app->set_help_flag("-h,--help", "print this help and exit");
-  app->set_version_flag("--version", "penumbra " PENUMBRA_VERSION,
-                        "print the version and exit");
+  app->set_version_flag("--version", "penumbra " PENUMBRA_VERSION, "print the version and exit");
   app->footer(examples_footer({
       {"hard shadows of the default scene", "penumbra render -o hard.png"},
       {"every technique measured against a ray-traced reference", "penumbra compare"},

@@ -43,7 +43,8 @@ void add_changed_switches(std::vector<std::string>& args, const Settings& settin
   const Settings defaults{};
   for (const auto& p : params) {
     const bool value = settings.*(p.field);
-    if (value != defaults.*(p.field)) args.push_back((value ? "--" : "--no-") + std::string(p.name));
+    if (value != defaults.*(p.field))
+      args.push_back((value ? "--" : "--no-") + std::string(p.name));
   }
 }
 

@@ -208,7 +208,8 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
                            "or ~/.cache/penumbra)")
                ->type_name("FOLDER"),
            OptionGroup::Reference);
-  add_switch(command, "cache", "reuse a traced reference cached by an earlier run (--no-cache: trace it again)",
+  add_switch(command, "cache",
+             "reuse a traced reference cached by an earlier run (--no-cache: trace it again)",
              args.cache, OptionGroup::Reference);
   add_render_parameters(command, args.render);
   add_shadow_parameters(command, args.shadow);
@@ -418,8 +419,7 @@ int run_compare_command(CompareArgs& args) {
                      "' has " + std::to_string(scene.lights.size()) + " light(s)");
   }
   const std::string cache_dir =
-      !args.cache ? std::string()
-                    : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
+      !args.cache ? std::string() : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
 
   auto context = gl::Context::create_headless({.debug = true, .verbose = args.verbose});
   if (args.verbose) {

@@ -21,7 +21,7 @@ struct CompareArgs {
   std::string output_dir;  // images; none when empty
   std::string json;        // the numbers for scripts; none when empty
   std::string cache_dir;   // traced references; default_cache_dir() when empty
-  bool cache = true;  // reuse a cached traced reference
+  bool cache = true;       // reuse a cached traced reference
   bool verbose = false;
   RenderSettings render;
   ShadowSettings shadow;

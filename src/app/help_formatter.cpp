@@ -32,7 +32,7 @@ std::string option_facts(const CLI::Option& option) {
     std::string list;
     for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
     facts.push_back((option_placeholder(option) == "LIST" ? "all, or a comma-separated list of: "
-                                                        : "one of: ") +
+                                                          : "one of: ") +
                     list);
   }
   const std::string range = option_range(option);
@@ -71,12 +71,11 @@ std::string option_sections(const CLI::App& app) {
   for (const auto& [group, title] : kOptionGroupNames) titles.emplace_back(title);
   std::string out;
   for (const std::string& title : titles) {
-    const std::vector<const CLI::Option*> options =
-        app.get_options([&](const CLI::Option* o) {
-          if (o->get_group().empty() || !o->nonpositional()) return false;
-          const bool known = is_known_title(o->get_group());
-          return known ? o->get_group() == title : title == "Other";
-        });
+    const std::vector<const CLI::Option*> options = app.get_options([&](const CLI::Option* o) {
+      if (o->get_group().empty() || !o->nonpositional()) return false;
+      const bool known = is_known_title(o->get_group());
+      return known ? o->get_group() == title : title == "Other";
+    });
     if (options.empty()) continue;
     out += "\n" + title + ":\n";
     for (const CLI::Option* option : options) out += option_entry(app, *option);

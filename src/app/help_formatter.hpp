@@ -24,8 +24,7 @@ class HelpFormatter : public CLI::Formatter {
 
 // `text` broken into lines of at most `width` characters at spaces; lines
 // after the first start with `indent` spaces (the first is not indented).
-std::string wrap_text(const std::string& text, std::size_t indent,
-                      std::size_t width = kHelpWidth);
+std::string wrap_text(const std::string& text, std::size_t indent, std::size_t width = kHelpWidth);
 
 // A help footer of examples: each a comment line (what it shows) and the
 // command, as tests/cli/help_test.cpp reads and runs them.

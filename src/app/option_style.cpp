@@ -61,8 +61,9 @@ CLI::Validator names_validator(const std::vector<std::string>& choices, bool lis
           name.erase(0, name.find_first_not_of(" \t"));
           name.erase(name.find_last_not_of(" \t") + 1);
           if (std::find(choices.begin(), choices.end(), name) != choices.end()) continue;
-          return "unknown name '" + name + "' (" + (list ? "all, or a comma-separated list of " : "one of ") +
-                 joined(choices, ", ") + ")" + did_you_mean(name, choices);
+          return "unknown name '" + name + "' (" +
+                 (list ? "all, or a comma-separated list of " : "one of ") + joined(choices, ", ") +
+                 ")" + did_you_mean(name, choices);
         }
         return {};
       },
@@ -117,15 +118,15 @@ CLI::Option* add_number(CLI::App& app, std::string_view name, T& value, std::str
   return in_group(option, group);
 }
 
-template CLI::Option* add_number<int>(CLI::App&, std::string_view, int&, std::string_view, int,
-                                      int, OptionGroup);
+template CLI::Option* add_number<int>(CLI::App&, std::string_view, int&, std::string_view, int, int,
+                                      OptionGroup);
 template CLI::Option* add_number<float>(CLI::App&, std::string_view, float&, std::string_view,
                                         float, float, OptionGroup);
 
 CLI::Option* show_range(CLI::Option* option, float min, float max) {
-  return option->check(CLI::Validator(
-      [](std::string&) { return std::string(); }, "",
-      std::string(kRangeValidator) + number_text(min) + " to " + number_text(max)));
+  return option->check(
+      CLI::Validator([](std::string&) { return std::string(); }, "",
+                     std::string(kRangeValidator) + number_text(min) + " to " + number_text(max)));
 }
 
 CLI::Option* add_choice(CLI::App& app, std::string_view name, std::string& value,

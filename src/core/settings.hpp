@@ -379,14 +379,17 @@ inline constexpr int kMaxSsaoSamples = 64;  // SSAO_MAX_SAMPLES in shaders/share
 inline constexpr int kMaxSsaoBlur = 16;
 
 inline constexpr std::array<NumericParam<SsaoSettings, int>, 2> kSsaoIntParams{{
-    {"ssao-samples", "SSAO samples per pixel", 1, kMaxSsaoSamples, &SsaoSettings::samples, OptionGroup::Ssao},
+    {"ssao-samples", "SSAO samples per pixel", 1, kMaxSsaoSamples, &SsaoSettings::samples,
+     OptionGroup::Ssao},
     {"ssao-blur", "radius in AO texels of the depth- and normal-aware SSAO blur; 0: none", 0,
      kMaxSsaoBlur, &SsaoSettings::blur, OptionGroup::Ssao},
 }};
 
 inline constexpr std::array<NumericParam<SsaoSettings, float>, 3> kSsaoFloatParams{{
-    {"ssao-radius", "SSAO hemisphere radius in world units", 1e-4f, 1000.0f, &SsaoSettings::radius, OptionGroup::Ssao},
-    {"ssao-bias", "SSAO depth bias in world units", 0.0f, 100.0f, &SsaoSettings::bias, OptionGroup::Ssao},
+    {"ssao-radius", "SSAO hemisphere radius in world units", 1e-4f, 1000.0f, &SsaoSettings::radius,
+     OptionGroup::Ssao},
+    {"ssao-bias", "SSAO depth bias in world units", 0.0f, 100.0f, &SsaoSettings::bias,
+     OptionGroup::Ssao},
     {"ssao-range",
      "SSAO range check: occluders more than this many radii in front of a sample are ignored", 0.0f,
      1000.0f, &SsaoSettings::range, OptionGroup::Ssao},
@@ -406,8 +409,10 @@ inline constexpr std::array<FlagParam<ShadowSettings>, 2> kShadowFlagParams{{
 }};
 
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{
-    {"width", "image width in pixels", 1, kMaxImageSize, &RenderSettings::width, OptionGroup::Output},
-    {"height", "image height in pixels", 1, kMaxImageSize, &RenderSettings::height, OptionGroup::Output},
+    {"width", "image width in pixels", 1, kMaxImageSize, &RenderSettings::width,
+     OptionGroup::Output},
+    {"height", "image height in pixels", 1, kMaxImageSize, &RenderSettings::height,
+     OptionGroup::Output},
     {"light-index", "which light the shadow and shadow-map views show (0 = first)", 0, 3,
      &RenderSettings::light_index, OptionGroup::Lights},
 }};
@@ -439,8 +444,8 @@ inline constexpr std::array<SwitchParam<ShadowSettings>, 1> kShadowSwitchParams{
 }};
 
 inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{
-    {"ssao", "screen-space ambient occlusion darkening the ambient light",
-     &SsaoSettings::enabled, OptionGroup::Ssao},
+    {"ssao", "screen-space ambient occlusion darkening the ambient light", &SsaoSettings::enabled,
+     OptionGroup::Ssao},
     {"ssao-half-resolution",
      "compute the AO at half width and height, then upsample it with depth and normal awareness",
      &SsaoSettings::half_resolution, OptionGroup::Ssao},

@@ -254,8 +254,8 @@ TEST(Cli, HelpListsEveryOptionWithItsDefault) {
 // Each command's --help shows the default it runs: bench measures msm
 // unless told otherwise (its help used to say hard).
 TEST(Cli, HelpShowsTheTechniqueEachCommandRuns) {
-  for (const auto& [command, shown] : {std::pair{"render", "msm16; default: hard]"},
-                                       std::pair{"bench", "msm16; default: msm]"}}) {
+  for (const auto& [command, shown] :
+       {std::pair{"render", "msm16; default: hard]"}, std::pair{"bench", "msm16; default: msm]"}}) {
     Result r = run(std::string(command) + " --help");
     EXPECT_EQ(r.status, 0);
     // Descriptions are wrapped: read them as one line.

@@ -23,8 +23,8 @@ using testing::out_path;
 using testing::Result;
 using testing::run;
 
-const std::vector<std::string> kCommands = {"render", "view", "compare", "bench", "report",
-                                            "completion"};
+const std::vector<std::string> kCommands = {"render", "view",   "compare",
+                                            "bench",  "report", "completion"};
 
 // Parses `line` (the arguments after "penumbra") as the tool does; returns
 // the one-line error, or "" when it parses.
@@ -131,22 +131,30 @@ TEST(Help, RenderShowsItsSectionsInOrderWithTheirOptions) {
   for (const std::string& line : lines_of(r.out)) {
     if (!line.empty() && line.back() == ':' && line[0] != ' ') titles.push_back(line);
   }
-  EXPECT_EQ(titles, (std::vector<std::string>{"Output:", "Scene and camera:", "Lights:",
-                                              "Technique:", "Filter:", "Soft shadows:", "Bias:",
-                                              "SSAO:", "Other:", "Examples:"}));
+  EXPECT_EQ(titles, (std::vector<std::string>{
+                        "Output:", "Scene and camera:", "Lights:", "Technique:", "Filter:",
+                        "Soft shadows:", "Bias:", "SSAO:", "Other:", "Examples:"}));
   const std::map<std::string, std::string> sections = sections_of(r.out);
-  const std::map<std::string, std::string> expected = {
-      {"--output", "Output"},         {"--view", "Output"},
-      {"--width", "Output"},          {"--scene", "Scene and camera"},
-      {"--camera-fov", "Scene and camera"},
-      {"--light", "Lights"},          {"--light-size", "Lights"},
-      {"--cascades", "Lights"},       {"--technique", "Technique"},
-      {"--pcf-samples", "Technique"}, {"--esm-c", "Technique"},
-      {"--filter", "Filter"},         {"--blur", "Filter"},
-      {"--soft", "Soft shadows"},     {"--accumulate", "Soft shadows"},
-      {"--constant-bias", "Bias"},    {"--normal-offset", "Bias"},
-      {"--ssao", "SSAO"},             {"--ssao-radius", "SSAO"},
-      {"--help", "Other"}};
+  const std::map<std::string, std::string> expected = {{"--output", "Output"},
+                                                       {"--view", "Output"},
+                                                       {"--width", "Output"},
+                                                       {"--scene", "Scene and camera"},
+                                                       {"--camera-fov", "Scene and camera"},
+                                                       {"--light", "Lights"},
+                                                       {"--light-size", "Lights"},
+                                                       {"--cascades", "Lights"},
+                                                       {"--technique", "Technique"},
+                                                       {"--pcf-samples", "Technique"},
+                                                       {"--esm-c", "Technique"},
+                                                       {"--filter", "Filter"},
+                                                       {"--blur", "Filter"},
+                                                       {"--soft", "Soft shadows"},
+                                                       {"--accumulate", "Soft shadows"},
+                                                       {"--constant-bias", "Bias"},
+                                                       {"--normal-offset", "Bias"},
+                                                       {"--ssao", "SSAO"},
+                                                       {"--ssao-radius", "SSAO"},
+                                                       {"--help", "Other"}};
   for (const auto& [option, section] : expected) {
     ASSERT_TRUE(sections.count(option)) << option << " missing from render --help";
     EXPECT_EQ(sections.at(option), section) << option;
@@ -184,10 +192,10 @@ TEST(Help, OneStyleAndNoLongLines) {
   }
   // Descriptions are wrapped: read them as one line.
   const std::string help = std::regex_replace(run("render --help").out, std::regex("\n +"), " ");
-  for (const char* shown : {"--blur N ", "--esm-c X ", "--technique NAME ", "--soft, --no-soft ",
-                            "--output FILE ", "--camera-position X,Y,Z ",
-                            "[range: 0 to 64; default: 2]",
-                            "[one of: gaussian, sat; default: gaussian]", "[default: off]"}) {
+  for (const char* shown :
+       {"--blur N ", "--esm-c X ", "--technique NAME ", "--soft, --no-soft ", "--output FILE ",
+        "--camera-position X,Y,Z ", "[range: 0 to 64; default: 2]",
+        "[one of: gaussian, sat; default: gaussian]", "[default: off]"}) {
     EXPECT_NE(help.find(shown), std::string::npos) << shown;
   }
 }
@@ -386,8 +394,8 @@ TEST(Completion, KnowsEveryOptionAndName) {
   for (const CLI::App* command : app->get_subcommands({})) {
     for (const CLI::Option* option : command->get_options()) {
       for (const std::string& name : option->get_lnames()) {
-        EXPECT_NE(script.find(" --" + name), std::string::npos) << command->get_name() << " "
-                                                                << name;
+        EXPECT_NE(script.find(" --" + name), std::string::npos)
+            << command->get_name() << " " << name;
       }
       for (const std::string& choice : option_choices(*option)) {
         EXPECT_NE(script.find(choice), std::string::npos) << option->get_name() << " " << choice;
@@ -395,8 +403,7 @@ TEST(Completion, KnowsEveryOptionAndName) {
     }
   }
   for (const auto& [technique, name] : kTechniqueNames) {
-    EXPECT_EQ(complete("penumbra render --technique " + std::string(name)).find(name), 0u)
-        << name;
+    EXPECT_EQ(complete("penumbra render --technique " + std::string(name)).find(name), 0u) << name;
   }
 }
 

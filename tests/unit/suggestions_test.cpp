@@ -11,10 +11,10 @@ TEST(Suggestions, EditDistanceCountsEachKindOfEdit) {
   EXPECT_EQ(edit_distance("", ""), 0u);
   EXPECT_EQ(edit_distance("abc", ""), 3u);
   EXPECT_EQ(edit_distance("render", "render"), 0u);
-  EXPECT_EQ(edit_distance("rendr", "render"), 1u);          // an insertion
-  EXPECT_EQ(edit_distance("renderr", "render"), 1u);        // a deletion
-  EXPECT_EQ(edit_distance("pfc", "pcf"), 1u);               // a swap of neighbours
-  EXPECT_EQ(edit_distance("vsn", "vsm"), 1u);               // a substitution
+  EXPECT_EQ(edit_distance("rendr", "render"), 1u);    // an insertion
+  EXPECT_EQ(edit_distance("renderr", "render"), 1u);  // a deletion
+  EXPECT_EQ(edit_distance("pfc", "pcf"), 1u);         // a swap of neighbours
+  EXPECT_EQ(edit_distance("vsn", "vsm"), 1u);         // a substitution
   EXPECT_EQ(edit_distance("kitten", "sitting"), 3u);
   EXPECT_EQ(edit_distance("--techniqe", "--technique"), 1u);
 }
@@ -26,7 +26,8 @@ TEST(Suggestions, TheNearestCloseNameOrAUniquePrefix) {
   EXPECT_EQ(closest_name("bnech", commands), "bench");
   EXPECT_EQ(closest_name("frobnicate", commands), std::nullopt);
   EXPECT_EQ(closest_name("x", commands), std::nullopt);
-  const std::vector<std::string> options = {"--technique", "--filter", "--blur", "--shadow-map-size"};
+  const std::vector<std::string> options = {"--technique", "--filter", "--blur",
+                                            "--shadow-map-size"};
   EXPECT_EQ(closest_name("--techniqe", options), "--technique");
   EXPECT_EQ(closest_name("--blurr", options), "--blur");
   // Dashes do not count towards how far a word may be off.
