@@ -193,11 +193,36 @@ int run_view_command(ViewArgs& args) {
   status.renderer = gpu_name;
   status.max_texture_size = max_texture;
   std::optional<FrameInput> shown;  // the last frame rendered
+  bool have_image = false;          // the renderer's view holds `shown`
+  // What `shown` was rendered from, as its `penumbra render` arguments: a
+  // frame whose arguments are the same is the same image, not rendered
+  // again.
+  std::vector<std::string> shown_args;
+  int drawn_frames = 0, rendered_frames = 0;
+  // Frames to draw before waiting for events again: Dear ImGui settles a
+  // change (a hover, an opened list) over a few frames.
+  int busy_frames = 3;
   bool panel_visible = true;
-  auto last_time = std::chrono::steady_clock::now();
+  glm::dvec2 last_cursor(0.0);
 
   for (int frame_index = 0; !window.should_close(); ++frame_index) {
-    window.poll();
+    // Idle: nothing moved or changed in the last frames, so wait for an
+    // event (or half a second, to show new GPU times) instead of drawing.
+    if (scripted || busy_frames > 0) {
+      window.poll();
+    } else {
+      window.wait(0.5);
+    }
+    // The frame time counts from here: the wait for an event is not work.
+    const auto start_time = std::chrono::steady_clock::now();
+    const int rendered_before = rendered_frames;
+    busy_frames = std::max(0, busy_frames - 1);
+    const MouseInput pointer = window.mouse();
+    if (!window.keys().empty() || pointer.left || pointer.right || pointer.middle ||
+        pointer.scroll != 0.0 || pointer.cursor != last_cursor) {
+      busy_frames = 3;
+    }
+    last_cursor = pointer.cursor;
     const glm::ivec2 fb = window.framebuffer_size();
     const glm::ivec2 win = window.window_size();
     const float scale = win.x > 0 ? static_cast<float>(fb.x) / static_cast<float>(win.x) : 1.0f;
@@ -231,22 +256,28 @@ int run_view_command(ViewArgs& args) {
       state.lights = start.lights;
     }
 
-    bool rendered = false;
     if (view.x > 0 && view.y > 0) {
       FrameInput frame = frame_input(state, view.x, view.y, max_texture);
-      profiler.begin_frame();
-      try {
-        render_frame(renderer, frame, &profiler);
-        // An OpenGL error (out of memory for a huge view) ends the viewer
-        // with one message, rather than a loop of failing frames.
-        check_gl_errors(window.debug_output());
-        rendered = true;
-      } catch (const UsageError& e) {
-        if (scripted) throw;  // nobody is there to change the settings
-        status.message = e.what();
+      std::vector<std::string> args = render_command_for(state, frame, "");
+      if (!have_image || args != shown_args) {
+        busy_frames = 3;
+        have_image = false;
+        profiler.begin_frame();
+        try {
+          render_frame(renderer, frame, &profiler);
+          // An OpenGL error (out of memory for a huge view) ends the
+          // viewer with one message, rather than a loop of failing frames.
+          check_gl_errors(window.debug_output());
+          have_image = true;
+          ++rendered_frames;
+        } catch (const UsageError& e) {
+          if (scripted) throw;  // nobody is there to change the settings
+          status.message = e.what();
+        }
+        profiler.end_frame();
+        shown = std::move(frame);
+        shown_args = std::move(args);
       }
-      profiler.end_frame();
-      shown = std::move(frame);
     }
     while (std::optional<gl::GpuFrameTimes> times = profiler.read(false)) status.gpu = times;
     if (shown) {
@@ -259,11 +290,11 @@ int run_view_command(ViewArgs& args) {
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (rendered) present.execute(renderer.view_source(), 0, {0, 0, view.x, view.y});
+    if (have_image) present.execute(renderer.view_source(), 0, {0, 0, view.x, view.y});
     if (shown) draw_notes(*shown);
     imgui.end_frame();
 
-    if (rendered && actions.screenshot) {
+    if (have_image && actions.screenshot) {
       const std::string path = unused_path(screenshot_name(state, *shown));
       try {
         write_image(renderer.read_view(), path, png_encoding(shown->render.view));
@@ -276,6 +307,7 @@ int run_view_command(ViewArgs& args) {
       window.set_clipboard(status.command);
       status.message = "copied the command to the clipboard";
     }
+    ++drawn_frames;
     const bool last = scripted && frame_index + 1 >= args.frames;
     if (last && !args.capture_window.empty()) {
       write_png(read_window(fb), args.capture_window, PngEncoding::Linear);
@@ -283,12 +315,16 @@ int run_view_command(ViewArgs& args) {
     window.swap_buffers();
 
     const auto now = std::chrono::steady_clock::now();
-    const double ms = std::chrono::duration<double, std::milli>(now - last_time).count();
-    last_time = now;
-    status.frame_ms = status.frame_ms == 0.0 ? ms : 0.9 * status.frame_ms + 0.1 * ms;
+    const double ms = std::chrono::duration<double, std::milli>(now - start_time).count();
+    if (rendered_frames > rendered_before) {
+      status.frame_ms = status.frame_ms == 0.0 ? ms : 0.9 * status.frame_ms + 0.1 * ms;
+    }
     if (last) window.close();
   }
 
+  if (args.verbose) {
+    std::fprintf(stderr, "penumbra: %d frames drawn, %d rendered\n", drawn_frames, rendered_frames);
+  }
   if (!args.screenshot.empty()) {
     if (!shown) throw RuntimeError("no frame was rendered for --screenshot");
     write_image(renderer.read_view(), args.screenshot, png_encoding(shown->render.view));

@@ -47,11 +47,15 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
   return run;
 }
 
-bool timers_miss_compute(const std::string& renderer) {
+bool is_software_renderer(std::string_view renderer) {
   for (const char* software : {"llvmpipe", "softpipe", "SwiftShader"}) {
-    if (renderer.find(software) != std::string::npos) return true;
+    if (renderer.find(software) != std::string_view::npos) return true;
   }
   return false;
+}
+
+bool timers_miss_compute(const std::string& renderer) {
+  return is_software_renderer(renderer);
 }
 
 CopyRatios copy_ratios(const PassTimes& run, bool timer) {

@@ -3,6 +3,7 @@
 // `penumbra bench` and of the report's timing table.
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/settings.hpp"
@@ -42,6 +43,10 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
 // clock measures the passes. On a GPU the timers do, without the latency
 // of a round trip that the wall clock adds to every pass.
 bool timers_miss_compute(const std::string& renderer);
+
+// Whether the renderer runs on the CPU (llvmpipe, softpipe, SwiftShader):
+// its "GPU times" are times of emulation on the CPU.
+bool is_software_renderer(std::string_view renderer);
 
 // The filter passes' median times as multiples of the copy's.
 struct CopyRatios {

@@ -3,14 +3,21 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 
 #include "app/scene_options.hpp"
+#include "render/pass_timing.hpp"
 #include "viewer/key_bindings.hpp"
+#include "viewer/panel_relevance.hpp"
 
 namespace penumbra {
 
 namespace {
+
+constexpr const char* kSoftwareTimingNote =
+    "software renderer: these times are of the CPU emulating the GPU (compute passes run "
+    "outside the timer queries), not GPU times";
 
 void tooltip(std::string_view text) {
   if (!text.empty() && ImGui::IsItemHovered()) {
@@ -34,10 +41,14 @@ bool logarithmic(const NumericParam<Settings, T>& p) {
   }
 }
 
+// Whether the panel offers a parameter this frame (and notes that it did).
+using Offer = std::function<bool(std::string_view)>;
+
 template <class Settings, std::size_t N>
 void float_sliders(ViewerState& state, const Settings& settings,
-                   const std::array<NumericParam<Settings, float>, N>& params) {
+                   const std::array<NumericParam<Settings, float>, N>& params, const Offer& offer) {
   for (const auto& p : params) {
+    if (!offer(p.name)) continue;
     float value = settings.*(p.field);
     const std::string label(p.name);
     ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoRoundToFormat;
@@ -52,11 +63,12 @@ void float_sliders(ViewerState& state, const Settings& settings,
 template <class Settings, std::size_t N>
 void int_sliders(ViewerState& state, const Settings& settings,
                  const std::array<NumericParam<Settings, int>, N>& params, int limit,
-                 bool skip_window_owned) {
+                 bool skip_window_owned, const Offer& offer) {
   for (const auto& p : params) {
     if constexpr (std::is_same_v<Settings, RenderSettings>) {
       if (skip_window_owned && is_window_owned(p)) continue;
     }
+    if (!offer(p.name)) continue;
     int value = settings.*(p.field);
     const int max = std::min(p.max, limit);
     const std::string label(p.name);
@@ -134,8 +146,15 @@ void camera_section(ViewerState& state) {
 }
 
 void timing_section(const PanelStatus& status) {
-  ImGui::Text("frame %.1f ms (%.1f fps)", status.frame_ms,
+  ImGui::Text("frame %.1f ms (%.1f fps while changing)", status.frame_ms,
               status.frame_ms > 0.0 ? 1000.0 / status.frame_ms : 0.0);
+  if (is_software_renderer(status.renderer)) {
+    // llvmpipe runs compute dispatches outside its timer queries: its pass
+    // times are neither GPU times nor comparable with each other.
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", kSoftwareTimingNote);
+    ImGui::PopTextWrapPos();
+  }
   if (!status.gpu) {
     ImGui::TextDisabled("GPU times: waiting for the first results");
     return;
@@ -169,6 +188,30 @@ void help_section() {
   ImGui::BulletText("shift or ctrl + left drag: move the selected light");
 }
 
+// The height the status part of the panel needs: the frame time, the
+// software-renderer note, a row per pass timed, the buttons, the command
+// wrapped to the panel's width and the last message.
+float status_section_height(const PanelStatus& status) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float wrap = ImGui::GetContentRegionAvail().x;
+  auto text_height = [&](const std::string& text) {
+    return ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap).y + style.ItemSpacing.y;
+  };
+  float height = style.ItemSpacing.y * 2.0f + line;  // separator, frame time
+  if (is_software_renderer(status.renderer)) height += text_height(kSoftwareTimingNote);
+  if (status.gpu) {
+    const auto rows = std::count(status.gpu->ran.begin(), status.gpu->ran.end(), true) + 1;
+    height += static_cast<float>(rows) * (line + style.CellPadding.y * 2.0f);
+  } else {
+    height += line;
+  }
+  height += ImGui::GetFrameHeightWithSpacing();  // the buttons
+  height += text_height(status.command);
+  if (!status.message.empty()) height += text_height(status.message);
+  return height + style.WindowPadding.y;
+}
+
 }  // namespace
 
 PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float width) {
@@ -179,7 +222,8 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
   ImGui::SetNextWindowSize(ImVec2(width, viewport->WorkSize.y));
   ImGui::Begin("penumbra", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoSavedSettings);
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
+                   ImGuiWindowFlags_NoScrollWithMouse);
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 11.5f);
 
   const FrameInput* frame = status.frame;
@@ -190,55 +234,78 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
     ImGui::Text("%s, %d x %d", scene.c_str(), frame->render.width, frame->render.height);
   }
 
+  // The settings scroll; the times and the command below them stay in
+  // view (up to 60 % of the panel's height; beyond it they scroll too).
+  const float status_height =
+      std::min(status_section_height(status), 0.6f * ImGui::GetContentRegionAvail().y);
+  ImGui::BeginChild("settings", ImVec2(0.0f, -status_height));
+  const Offer offer = [&](std::string_view name) {
+    if (!parameter_applies(name, state.shadow, state.ssao, state.lights)) return false;
+    actions.parameters.emplace_back(name);
+    return true;
+  };
   if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
-    choice_combo(state, "view", state.render.view, kViewNames,
-                 "what the window shows: the final image, a light's shadow factor, its map, "
-                 "the moments before and after the filter, normals or albedo");
+    if (offer("view")) {
+      choice_combo(state, "view", state.render.view, kViewNames,
+                   "what the window shows: the final image, a light's shadow factor, its map, "
+                   "the moments before and after the filter, normals or albedo");
+    }
     int_sliders(state, state.render, kRenderIntParams,
-                std::max(1, static_cast<int>(state.lights.size())) - 1, true);
+                std::max(1, static_cast<int>(state.lights.size())) - 1, true, offer);
   }
   if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
-    choice_combo(state, "technique", state.shadow.technique, kTechniqueNames,
-                 "the shadow technique");
-    choice_combo(state, "filter", state.shadow.filter, kFilterNames,
-                 "filter of the vsm/esm/msm/msm16 maps: separable Gaussian or summed-area table");
+    if (offer("technique")) {
+      choice_combo(state, "technique", state.shadow.technique, kTechniqueNames,
+                   "the shadow technique");
+    }
+    if (offer("filter")) {
+      choice_combo(state, "filter", state.shadow.filter, kFilterNames,
+                   "filter of the vsm/esm/msm/msm16 maps: separable Gaussian or summed-area "
+                   "table");
+    }
     for (const auto& p : kShadowFlagParams) {
+      if (!offer(p.name)) continue;
       bool value = state.shadow.*(p.field);
       const std::string label(p.name);
       if (ImGui::Checkbox(label.c_str(), &value)) set_flag(state, p.name, value);
       tooltip(p.help);
     }
     for (const auto& p : kShadowSwitchParams) {
+      if (!offer(p.name)) continue;
       choice_combo(state, std::string(p.name).c_str(), state.shadow.*(p.field), kOnOffNames,
                    p.help);
     }
-    int_sliders(state, state.shadow, kShadowIntParams, status.max_texture_size, false);
-    float_sliders(state, state.shadow, kShadowFloatParams);
+    int_sliders(state, state.shadow, kShadowIntParams, status.max_texture_size, false, offer);
+    float_sliders(state, state.shadow, kShadowFloatParams, offer);
   }
   if (ImGui::CollapsingHeader("Ambient occlusion")) {
-    choice_combo(state, "ssao", state.ssao.enabled, kOnOffNames,
-                 "screen-space ambient occlusion darkening the ambient light");
-    choice_combo(state, "ssao-half-resolution", state.ssao.half_resolution, kOnOffNames,
-                 "compute the AO at half resolution, upsampled with depth and normal awareness");
-    int_sliders(state, state.ssao, kSsaoIntParams, std::numeric_limits<int>::max(), false);
-    float_sliders(state, state.ssao, kSsaoFloatParams);
+    for (const auto& p : kSsaoSwitchParams) {
+      if (!offer(p.name)) continue;
+      choice_combo(state, std::string(p.name).c_str(), state.ssao.*(p.field), kOnOffNames, p.help);
+    }
+    int_sliders(state, state.ssao, kSsaoIntParams, std::numeric_limits<int>::max(), false, offer);
+    float_sliders(state, state.ssao, kSsaoFloatParams, offer);
   }
   if (ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) light_section(state);
   if (ImGui::CollapsingHeader("Camera")) camera_section(state);
-  if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) timing_section(status);
-  if (ImGui::CollapsingHeader("Command", ImGuiTreeNodeFlags_DefaultOpen)) {
-    actions.copy_command = ImGui::Button("Copy as command");
-    ImGui::SameLine();
-    actions.screenshot = ImGui::Button("Screenshot");
-    ImGui::SameLine();
-    actions.reset = ImGui::Button("Reset");
-    tooltip("camera and lights back to where they started");
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", status.command.c_str());
-    if (!status.message.empty()) ImGui::TextUnformatted(status.message.c_str());
-    ImGui::PopTextWrapPos();
-  }
   if (ImGui::CollapsingHeader("Keys and mouse")) help_section();
+  ImGui::EndChild();
+
+  ImGui::BeginChild("status");
+  ImGui::Separator();
+  timing_section(status);
+  actions.copy_command = ImGui::Button("Copy as command");
+  ImGui::SameLine();
+  actions.screenshot = ImGui::Button("Screenshot");
+  ImGui::SameLine();
+  actions.reset = ImGui::Button("Reset");
+  tooltip("camera and lights back to where they started");
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", status.command.c_str());
+  if (!status.message.empty()) ImGui::TextUnformatted(status.message.c_str());
+  ImGui::PopTextWrapPos();
+  actions.status_bottom = ImGui::GetItemRectMax().y;
+  ImGui::EndChild();
   ImGui::PopItemWidth();
   ImGui::End();
   return actions;

@@ -1,10 +1,13 @@
 #pragma once
-// The viewer's Dear ImGui panel: every parameter of the shared settings
-// tables, the selected light, the camera, the display mode, live GPU times
-// and the `penumbra render` command of what is shown. Its edits go through
+// The viewer's Dear ImGui panel: the parameters of the shared settings
+// tables that apply to what is shown (panel_relevance.hpp), the selected
+// light, the camera, the display mode, live GPU times and the `penumbra
+// render` command of what is shown; the settings scroll, the times and
+// the command stay in view. Its edits go through
 // the ViewerState functions, never into the renderer.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gl/gpu_profiler.hpp"
 #include "viewer/viewer_state.hpp"
@@ -25,6 +28,11 @@ struct PanelActions {
   bool screenshot = false;
   bool copy_command = false;
   bool reset = false;
+  // The parameters offered this frame (flag names; only those that apply
+  // to the technique, filter and lights), and where the status part (GPU
+  // times, command) ended, in screen units: what tests check.
+  std::vector<std::string> parameters;
+  float status_bottom = 0.0f;
 };
 
 // Draws the panel at the window's right edge, `width` screen units wide,

@@ -1,5 +1,6 @@
 #include "viewer/window.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "core/error.hpp"
@@ -43,8 +44,18 @@ Window::Window(const WindowOptions& options) : debug_(options.verbose) {
   glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);
   glfwWindowHint(GLFW_DEPTH_BITS, 0);
   glfwWindowHint(GLFW_STENCIL_BITS, 0);
-  window_ =
-      glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+  // No larger than the monitor's work area (a 1280 x 720 screen, with the
+  // panel beside a 1280 x 720 view): the view takes what is left.
+  int width = options.width, height = options.height;
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+    int x = 0, y = 0, work_width = 0, work_height = 0;
+    glfwGetMonitorWorkarea(monitor, &x, &y, &work_width, &work_height);
+    if (work_width > 0 && work_height > 0) {
+      width = std::min(width, work_width);
+      height = std::min(height, work_height);
+    }
+  }
+  window_ = glfwCreateWindow(width, height, options.title.c_str(), nullptr, nullptr);
   if (window_ == nullptr) {
     const std::string why = glfw_error();
     glfwTerminate();
@@ -78,6 +89,15 @@ void Window::on_scroll(GLFWwindow* window, double /*dx*/, double dy) {
 
 void Window::poll() {
   glfwPollEvents();
+  take_events();
+}
+
+void Window::wait(double seconds) {
+  glfwWaitEventsTimeout(seconds);
+  take_events();
+}
+
+void Window::take_events() {
   keys_.swap(pending_keys_);
   pending_keys_.clear();
   scroll_ = pending_scroll_;

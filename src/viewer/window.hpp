@@ -32,7 +32,8 @@ class Window {
   // Whether a display server is named ($DISPLAY or $WAYLAND_DISPLAY).
   static bool display_named();
 
-  // Opens the window and makes its context current. Throws RuntimeError
+  // Opens the window (no larger than the primary monitor's work area) and
+  // makes its context current. Throws RuntimeError
   // naming what failed (no display, no OpenGL 4.5 core context).
   explicit Window(const WindowOptions& options);
   ~Window();
@@ -42,6 +43,8 @@ class Window {
   // Processes pending events; then keys() and mouse() hold what came since
   // the last call.
   void poll();
+  // The same, but first waits up to `seconds` for an event (the idle loop).
+  void wait(double seconds);
   [[nodiscard]] const std::vector<KeyPress>& keys() const { return keys_; }
   [[nodiscard]] MouseInput mouse() const;
 
@@ -58,6 +61,7 @@ class Window {
  private:
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
   static void on_scroll(GLFWwindow* window, double dx, double dy);
+  void take_events();
 
   GLFWwindow* window_ = nullptr;
   gl::DebugOutput debug_;

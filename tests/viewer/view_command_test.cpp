@@ -28,7 +28,8 @@ using penumbra::Image;
 // parallel tests never race for one.
 class XvfbServer {
  public:
-  XvfbServer() {
+  // `screen`: the screen's width x height x depth.
+  explicit XvfbServer(const std::string& screen = "1280x1024x24") {
     int fds[2];
     if (pipe(fds) != 0) {
       error_ = "pipe failed";
@@ -40,7 +41,7 @@ class XvfbServer {
       const std::string fd = std::to_string(fds[1]);
       std::freopen("/dev/null", "w", stdout);
       std::freopen("/dev/null", "w", stderr);
-      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", screen.c_str(), "-nolisten",
              "tcp", static_cast<char*>(nullptr));
       _exit(127);
     }
@@ -224,6 +225,26 @@ TEST_F(ViewWindow, MapViewMatchesRender) {
       "--width 160 --height 120 --shadow-map-size 256 --technique esm --view moments-filtered "
       "--light-index 1 --light-direction=-0.5,-1,0.5",
       "esm-map");
+}
+
+// On a 1280 x 720 screen the default window (a 1280 x 720 view and the
+// panel beside it) is made to fit: the view takes what the panel leaves.
+// Nothing changes between the scripted frames, so one is rendered and the
+// rest only drawn.
+TEST(ViewSmallScreen, TheWindowFitsAndAnUnchangedFrameIsNotRenderedAgain) {
+  const XvfbServer xvfb("1280x720x24");
+  ASSERT_TRUE(xvfb.error().empty()) << xvfb.error();
+  const std::string window = out("small-screen.png");
+  const Result r = run("DISPLAY=" + xvfb.display(),
+                       "view --frames 8 --verbose --shadow-map-size 256 --ssao-samples 4 "
+                       "--capture-window " +
+                           window);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("penumbra: 8 frames drawn, 1 rendered"), std::string::npos) << r.err;
+  ASSERT_TRUE(fs::exists(window));
+  const Image captured = penumbra::read_png(window);
+  EXPECT_LE(captured.width, 1280);
+  EXPECT_LE(captured.height, 720);
 }
 
 TEST(ViewCommand, WithoutADisplayItSaysSoInOneLine) {

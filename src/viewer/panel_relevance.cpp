@@ -1,0 +1,53 @@
+#include "viewer/panel_relevance.hpp"
+
+#include <algorithm>
+
+namespace penumbra {
+
+namespace {
+
+bool has_light(const std::vector<Light>& lights, LightType type) {
+  return std::any_of(lights.begin(), lights.end(),
+                     [type](const Light& l) { return l.type == type; });
+}
+
+}  // namespace
+
+bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
+                       const SsaoSettings& ssao, const std::vector<Light>& lights) {
+  const Technique t = shadow.technique;
+  const bool shadowed = t != Technique::None;
+  const bool moments = t == Technique::Msm || t == Technique::Msm16;
+  // The source size matters where a technique or --soft makes a penumbra.
+  const bool sized_source = t == Technique::Pcss || shadow.soft;
+  const bool positional = has_light(lights, LightType::Spot) || has_light(lights, LightType::Point);
+  const bool directional = has_light(lights, LightType::Directional);
+
+  if (name == "shadow-map-size" || name == "constant-bias" || name == "slope-bias" ||
+      name == "max-slope" || name == "normal-offset") {
+    return shadowed;
+  }
+  if (name == "filter" || name == "blur" || name == "filter-slope-bias") return is_filterable(t);
+  if (name == "pcf-width" || name == "pcf-samples") return t == Technique::Pcf;
+  if (name == "pcss-blocker-samples" || name == "pcss-filter-samples") return t == Technique::Pcss;
+  if (name == "esm-c") return t == Technique::Esm;
+  if (name == "vsm-min-variance") return t == Technique::Vsm;
+  // 32-bit float moments are biased by msm-alpha; 16-bit ones and those
+  // summed in the fixed-point summed-area table by msm16-alpha.
+  if (name == "msm-alpha") return t == Technique::Msm && shadow.filter != Filter::Sat;
+  if (name == "msm16-alpha")
+    return t == Technique::Msm16 || (moments && shadow.filter == Filter::Sat);
+  if (name == "bleed-reduction") return t == Technique::Vsm || moments;
+  if (name == "soft") return supports_soft_shadows(t, shadow.filter);
+  if (name == "soft-two-moment-blockers") return moments && shadow.soft;
+  if (name == "light-size") return sized_source && positional;
+  if (name == "sun-angle") return sized_source && directional;
+  if (name == "cascades" || name == "cascade-lambda" || name == "cascade-blend") {
+    return shadowed && directional;
+  }
+  if (name == "guard-band") return shadowed && has_light(lights, LightType::Point);
+  if (name != "ssao" && name.rfind("ssao", 0) == 0) return ssao.enabled;
+  return true;
+}
+
+}  // namespace penumbra
