@@ -138,14 +138,12 @@ void add_reference_options(CLI::App& app, ReferenceSettings& settings) {
 void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& named) {
   named.view = std::string(enum_name<View>(kViewNames, settings.view));
   add_choice(app, "view", named.view,
-             "what to write: final, the lit image; shadow, the shadow factor (1 = lit, 0 facing "
-             "away from the light); shadow-reference, what a filtered technique approximates (the "
-             "map's depth tests averaged with its filter kernel); shadow-map, the light's relative "
-             "depth z-bar; moments and moments-filtered, the technique's map before and after "
-             "the filter (for esm, log(map)/c + 1); normals; albedo; ao, the ambient occlusion "
-             "(1 = unoccluded); cascades, which cascade or cube face each pixel reads (red, "
-             "green, blue, yellow, magenta, cyan for 0-5). A light with several views (cube "
-             "faces, cascades) shows them tiled",
+             "what to write: the lit image (final); the shadow factor, 1 = lit (shadow); what a "
+             "filtered technique approximates (shadow-reference); the light's depth map "
+             "(shadow-map) or the technique's map before and after its filter (moments, "
+             "moments-filtered), a light's several views tiled; the G-buffer (normals, albedo); "
+             "the ambient occlusion (ao); the cascade or cube face each pixel reads (cascades: "
+             "red, green, blue, yellow, magenta, cyan for 0-5, black for none)",
              names_of(kViewNames), OptionGroup::Output);
   add_render_parameters(app, settings);
 }
