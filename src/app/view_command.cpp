@@ -279,7 +279,10 @@ int run_view_command(ViewArgs& args) {
         shown_args = std::move(args);
       }
     }
-    while (std::optional<gl::GpuFrameTimes> times = profiler.read(false)) status.gpu = times;
+    while (std::optional<gl::GpuFrameTimes> times = profiler.read(false)) {
+      status.gpu = times;
+      busy_frames = 3;  // the times' table sizes its columns over a few frames
+    }
     if (shown) {
       status.command =
           shell_command(render_command_for(state, *shown, screenshot_name(state, *shown)));
