@@ -112,28 +112,44 @@ std::string listed(const std::vector<std::string>& names) {
 // unknown command, an unknown option, or a stray value; "" if none.
 std::string leftover_message(const CLI::App& app) {
   const std::vector<CLI::App*> parsed = app.get_subcommands();
-  const CLI::App* command = parsed.empty() ? nullptr : parsed.front();
+  // What was left before the command (or with none) is read against the
+  // program's own options and commands; what was left after it, against
+  // the command's.
+  const CLI::App* command = nullptr;
   std::vector<std::string> leftovers = app.remaining();
-  if (command != nullptr) {
-    for (const std::string& arg : command->remaining()) leftovers.push_back(arg);
+  if (leftovers.empty() && !parsed.empty()) {
+    command = parsed.front();
+    leftovers = command->remaining();
   }
   if (leftovers.empty()) return {};
   const std::string& arg = leftovers.front();
-  const std::string help =
-      command != nullptr ? "penumbra " + command->get_name() + " --help" : "penumbra --help";
   if (arg.size() > 1 && arg[0] == '-') {
     const std::string name = arg.substr(0, arg.find('='));
-    const std::string suggestion = did_you_mean(name, long_names(command ? *command : app));
+    if (command != nullptr) {
+      const std::string suggestion = did_you_mean(name, long_names(*command));
+      return "unknown option '" + name + "' for '" + command->get_name() + "'" +
+             (suggestion.empty() ? " (see 'penumbra " + command->get_name() + " --help')"
+                                 : suggestion);
+    }
+    // A command's option given before the command.
+    const CLI::App* owner = parsed.empty() ? nullptr : parsed.front();
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      if (owner == nullptr && sub->get_option_no_throw(name) != nullptr) owner = sub;
+    }
+    if (owner != nullptr && owner->get_option_no_throw(name) != nullptr) {
+      return "unknown option '" + name + "' (options follow the command: penumbra " +
+             owner->get_name() + " " + name + " ...)";
+    }
+    const std::string suggestion = did_you_mean(name, long_names(app));
     return "unknown option '" + name + "'" +
-           (command != nullptr ? " for '" + command->get_name() + "'" : "") +
-           (suggestion.empty() ? " (see '" + help + "')" : suggestion);
+           (suggestion.empty() ? " (see 'penumbra --help')" : suggestion);
   }
   if (command == nullptr) {
     const std::string suggestion = did_you_mean(arg, command_names(app));
     return "unknown command '" + arg + "'" +
            (suggestion.empty() ? " (choose " + listed(command_names(app)) + ")" : suggestion);
   }
-  return "unexpected argument '" + arg + "' (see '" + help + "')";
+  return "unexpected argument '" + arg + "' (see 'penumbra " + command->get_name() + " --help')";
 }
 
 int run_completion_command(const CLI::App& app, const CompletionArgs& args) {

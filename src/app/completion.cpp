@@ -45,7 +45,11 @@ std::string value_cases(const CLI::App& command) {
     } else if (placeholder == "FOLDER") {
       action = "COMPREPLY=($(compgen -d -- \"$cur\"))";
     } else if (placeholder.find("FILE") != std::string::npos) {
-      action = "COMPREPLY=($(compgen -f -- \"$cur\"))";
+      const std::vector<std::string> names = option_suggestions(*option);
+      action =
+          "COMPREPLY=(" +
+          (names.empty() ? std::string() : "$(compgen -W \"" + joined(names) + "\" -- \"$cur\") ") +
+          "$(compgen -f -- \"$cur\"))";
     } else {
       action = "COMPREPLY=()";  // a number or a vector: nothing to offer
     }

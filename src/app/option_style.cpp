@@ -15,6 +15,7 @@ namespace {
 // as CLI11 adds those to the placeholder in its own messages.
 constexpr std::string_view kRangeValidator = "range:";
 constexpr std::string_view kChoicesValidator = "choices:";
+constexpr std::string_view kSuggestionsValidator = "suggestions:";
 
 std::string flag(std::string_view name) {
   return "--" + std::string(name);
@@ -129,6 +130,11 @@ CLI::Option* show_range(CLI::Option* option, float min, float max) {
                      std::string(kRangeValidator) + number_text(min) + " to " + number_text(max)));
 }
 
+CLI::Option* suggest_names(CLI::Option* option, const std::vector<std::string>& names) {
+  return option->check(CLI::Validator([](std::string&) { return std::string(); }, "",
+                                      std::string(kSuggestionsValidator) + joined(names, ",")));
+}
+
 CLI::Option* add_choice(CLI::App& app, std::string_view name, std::string& value,
                         std::string_view help, const std::vector<std::string>& choices,
                         OptionGroup group) {
@@ -188,6 +194,13 @@ void add_switch(CLI::App& app, std::string_view name, std::string_view help, boo
 std::vector<std::string> option_choices(const CLI::Option& option) {
   std::vector<std::string> names;
   std::stringstream in(validator_text(option, kChoicesValidator));
+  for (std::string name; std::getline(in, name, ',');) names.push_back(name);
+  return names;
+}
+
+std::vector<std::string> option_suggestions(const CLI::Option& option) {
+  std::vector<std::string> names;
+  std::stringstream in(validator_text(option, kSuggestionsValidator));
   for (std::string name; std::getline(in, name, ',');) names.push_back(name);
   return names;
 }

@@ -28,6 +28,10 @@ CLI::Option* add_number(CLI::App& app, std::string_view name, T& value, std::str
 // and range-checked later (a "[I:]V" light value); returns it.
 CLI::Option* show_range(CLI::Option* option, float min, float max);
 
+// Names the completion script offers for an option whose value may also
+// be something else (a built-in scene, or a scene file); returns it.
+CLI::Option* suggest_names(CLI::Option* option, const std::vector<std::string>& names);
+
 // "--name NAME": one of `choices`; a wrong name is an error that lists
 // them and suggests the nearest.
 CLI::Option* add_choice(CLI::App& app, std::string_view name, std::string& value,
@@ -50,6 +54,9 @@ void add_switch(CLI::App& app, std::string_view name, std::string_view help, boo
 // add_choice's and add_list's choices, an on/off switch's none; empty
 // when the value is free (a number, a file).
 std::vector<std::string> option_choices(const CLI::Option& option);
+
+// suggest_names' names; empty if none.
+std::vector<std::string> option_suggestions(const CLI::Option& option);
 
 // The range an add_number option shows ("0 to 32"); empty otherwise.
 std::string option_range(const CLI::Option& option);

@@ -11,7 +11,7 @@ void add_scene_source_options(CLI::App& command, std::string& scene, std::string
       command.add_option("--scene", scene, "built-in scene (default, spot) or a .json scene file")
           ->capture_default_str()
           ->type_name("NAME|FILE");
-  in_group(scene_option, OptionGroup::SceneAndCamera);
+  in_group(suggest_names(scene_option, builtin_scene_names()), OptionGroup::SceneAndCamera);
   CLI::Option* model_option =
       command
           .add_option("--model", model,

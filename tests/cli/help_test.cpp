@@ -273,6 +273,9 @@ TEST(Suggestions, AMistypedOptionIsNamedFirst) {
   EXPECT_EQ(parse_error("render -o x.png stray"),
             "unexpected argument 'stray' (see 'penumbra render --help')");
   EXPECT_EQ(parse_error("render -o x.png --technique"), "--technique needs a value");
+  EXPECT_EQ(parse_error("--technique pcf render -o x.png"),
+            "unknown option '--technique' (options follow the command: penumbra render "
+            "--technique ...)");
 }
 
 TEST(Suggestions, AMistypedNameIsNamedWithTheNearestOne) {
@@ -381,7 +384,8 @@ TEST(Completion, CompletesCommandsOptionsAndNames) {
   EXPECT_EQ(complete("penumbra compare --technique hard,v"), "hard,vsm\n");
   EXPECT_EQ(complete("penumbra render --no-ss"), "--no-ssao\n--no-ssao-half-resolution\n");
   EXPECT_EQ(complete("penumbra bench --sweep m"), "map-size\n");
-  EXPECT_EQ(complete("penumbra render --blur ''"), "\n");  // a number: nothing to offer
+  EXPECT_EQ(complete("penumbra view --scene sp"), "spot\n");  // and files beginning "sp"
+  EXPECT_EQ(complete("penumbra render --blur ''"), "\n");     // a number: nothing to offer
 }
 
 // Every option of every command, and every name each option takes, is in
