@@ -16,6 +16,7 @@
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
+#include "shadow/representation.hpp"
 
 namespace penumbra {
 
@@ -36,13 +37,13 @@ std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
       s.technique = t;
       if (args.sweep == "map-size") s.map_size = v;
       if (args.sweep == "blur") s.blur = v;
-      if (t == Technique::Esm && s.filter == Filter::Sat) continue;  // refused by validate()
+      if (is_filterable(t) && !supports_sat(t) && s.filter == Filter::Sat) continue;  // refused
       // Soft only for the techniques that can be; a wrong filter is still refused.
       if (s.soft && !supports_soft_shadows(t, Filter::Sat)) s.soft = false;
       runs.push_back(s);
     }
   }
-  if (runs.empty()) throw UsageError("nothing to measure: esm cannot use --filter sat");
+  if (runs.empty()) throw UsageError("nothing to measure: esm and evsm cannot use --filter sat");
   return runs;
 }
 
@@ -52,6 +53,9 @@ std::string describe(const ShadowSettings& s) {
   if (is_filterable(s.technique)) {
     out << " " << enum_name<Filter>(kFilterNames, s.filter) << " W=" << s.blur
         << (s.soft ? " soft" : "");
+    // Which path filtered: --fused on falls back past the fused pass's reach.
+    if (filter_define(s) == FILTER_GAUSSIAN) out << (uses_fused_filter(s) ? " fused" : " two-pass");
+    out << " (" << format_name(representation_format(s.technique)) << ")";
   }
   out << ", map " << s.map_size;
   return out.str();
@@ -84,6 +88,10 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer) {
   j["blur"] = s.blur;
   j["soft"] = s.soft;
   j["shadow_map_size"] = s.map_size;
+  j["fused"] = is_filterable(s.technique) && uses_fused_filter(s);
+  if (is_filterable(s.technique)) {
+    j["representation_format"] = format_name(representation_format(s.technique));
+  }
   j["frames"] = frames;
   auto samples_json = [](const Samples& samples) {
     const Spread t = spread_of(samples.timer_ms), w = spread_of(samples.wall_ms);

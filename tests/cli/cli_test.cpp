@@ -67,7 +67,7 @@ TEST(Cli, FilteredTechniqueUsageErrors) {
 TEST(Cli, BenchWritesJsonWithEveryPass) {
   const std::string json_path = out_path("bench.json");
   Result r =
-      run("bench --frames 2 --warmup 1 --technique msm,vsm --filter gaussian --blur 2 "
+      run("bench --frames 2 --warmup 1 --technique msm,vsm --filter gaussian --blur 2 --fused off "
           "--width 64 --height 48 --shadow-map-size 256 --json " +
           json_path);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -96,6 +96,34 @@ TEST(Cli, BenchWritesJsonWithEveryPass) {
   const nlohmann::json sat = nlohmann::json::parse(again);
   EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT rows"));
   EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT columns"));
+}
+
+// --fused on (the default) replaces the resolve and both blur passes with
+// one, up to W = 16; past it the two-pass path runs, and the JSON says which.
+TEST(Cli, BenchReportsTheFusedFilterAndItsFallback) {
+  const std::string json_path = out_path("bench-fused.json");
+  Result r =
+      run("bench --frames 1 --warmup 0 --technique msm16 --filter gaussian --sweep blur "
+          "--width 32 --height 24 --shadow-map-size 64 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("msm16 gaussian W=4 fused (RGBA16)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("msm16 gaussian W=32 two-pass (RGBA16)"), std::string::npos) << r.out;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  int fused_runs = 0;
+  for (const auto& run : j.at("runs")) {
+    const int blur = run.at("blur").get<int>();
+    const auto& passes = run.at("passes");
+    const bool fused = blur >= 1 && blur <= 16;
+    EXPECT_EQ(run.at("fused").get<bool>(), fused) << blur;
+    EXPECT_EQ(passes.contains("resolve+filter (fused)"), fused) << blur;
+    EXPECT_EQ(passes.contains("resolve"), !fused) << blur;
+    EXPECT_EQ(passes.contains("filter H"), blur > 16) << blur;
+    EXPECT_EQ(run.at("representation_format").get<std::string>(), "RGBA16");
+    fused_runs += fused ? 1 : 0;
+  }
+  EXPECT_EQ(fused_runs, 5);  // W = 1, 2, 4, 8, 16
 }
 
 TEST(Cli, BenchUsageErrors) {
