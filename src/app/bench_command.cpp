@@ -31,12 +31,14 @@ std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
   std::vector<int> values = {0};
   if (args.sweep == "map-size") values = {512, 1024, 2048, 4096};
   if (args.sweep == "blur") values = {0, 1, 2, 4, 8, 16, 32};
+  if (args.sweep == "fused") values = {1, 0};
   for (Technique t : techniques) {
     for (int v : values) {
       ShadowSettings s = args.shadow;
       s.technique = t;
       if (args.sweep == "map-size") s.map_size = v;
       if (args.sweep == "blur") s.blur = v;
+      if (args.sweep == "fused") s.fused = v == 1;
       if (is_filterable(t) && !supports_sat(t) && s.filter == Filter::Sat) continue;  // refused
       // Soft only for the techniques that can be; a wrong filter is still refused.
       if (s.soft && !supports_soft_shadows(t, Filter::Sat)) s.soft = false;
@@ -126,9 +128,10 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
       ->check(CLI::Range(0, 1000));
   command
       .add_option("--sweep", args.sweep,
-                  "none, map-size (512, 1024, 2048, 4096) or blur (W = 0, 1, 2, 4, 8, 16, 32)")
+                  "none, map-size (512, 1024, 2048, 4096), blur (W = 0, 1, 2, 4, 8, 16, 32) or "
+                  "fused (--fused on, then off)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"none", "map-size", "blur"}));
+      ->check(CLI::IsMember({"none", "map-size", "blur", "fused"}));
   command.add_option("--json", args.json, "also write the numbers to this JSON file");
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);

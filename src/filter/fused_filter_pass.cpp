@@ -1,5 +1,6 @@
 #include "filter/fused_filter_pass.hpp"
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,7 @@ int channels_of(GLenum format) {
 
 }  // namespace
 
-FusedFilterPass::FusedFilterPass()
-    : weights_(sizeof(float) * (2 * kMaxFusedBlur + 1), nullptr, true, "fused filter weights") {
+FusedFilterPass::FusedFilterPass() {
   glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared_bytes_);
 }
 
@@ -60,17 +60,19 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
   const auto key = std::make_tuple(technique, quantized, radius, rows);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
+    std::string weight_list;
+    for (float w : gaussian_weights(radius)) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%s%.9g", weight_list.empty() ? "" : ", ", w);
+      weight_list += text;  // 9 significant digits: the float itself, exactly
+    }
     gl::Defines defines = {{"REPRESENTATION", std::to_string(technique_define(technique))},
                            {"MSM_QUANTIZED", quantized ? "1" : "0"},
                            {"IMAGE_FORMAT", image_format_qualifier(format)},
                            {"RADIUS", std::to_string(radius)},
-                           {"TILE_Y", std::to_string(rows)}};
+                           {"TILE_Y", std::to_string(rows)},
+                           {"GAUSSIAN_WEIGHTS", weight_list}};
     it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;
-  }
-  if (radius != weights_radius_) {
-    std::vector<float> weights = gaussian_weights(radius);
-    weights_.update(weights.data(), weights.size() * sizeof(float));
-    weights_radius_ = radius;
   }
   gl::ensure_texture_array(output_, format, depth_maps.width(), depth_maps.height(),
                            depth_maps.layers(), "fused filtered shadow maps");
@@ -78,7 +80,6 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve+filter (fused)");
   it->second.use();
   set_representation_constants(it->second.id(), settings);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, weights_.id());
   glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
   glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);

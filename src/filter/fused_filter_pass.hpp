@@ -36,8 +36,6 @@ class FusedFilterPass {
 
  private:
   std::map<std::tuple<Technique, bool, int, int>, gl::Program> programs_;
-  gl::Buffer weights_;
-  int weights_radius_ = -1;
   int shared_bytes_ = 0;  // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE
   gl::Texture output_;
 };

@@ -124,6 +124,21 @@ TEST(Cli, BenchReportsTheFusedFilterAndItsFallback) {
     fused_runs += fused ? 1 : 0;
   }
   EXPECT_EQ(fused_runs, 5);  // W = 1, 2, 4, 8, 16
+
+  // --sweep fused measures both paths in one run, fused first.
+  r =
+      run("bench --frames 1 --warmup 0 --technique evsm4 --blur 4 --sweep fused "
+          "--width 32 --height 24 --shadow-map-size 64 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream again(json_path);
+  const nlohmann::json sweep = nlohmann::json::parse(again);
+  ASSERT_EQ(sweep.at("runs").size(), 2u);
+  EXPECT_TRUE(sweep.at("runs").at(0).at("fused").get<bool>());
+  EXPECT_TRUE(sweep.at("runs").at(0).at("passes").contains("resolve+filter (fused)"));
+  EXPECT_FALSE(sweep.at("runs").at(1).at("fused").get<bool>());
+  EXPECT_TRUE(sweep.at("runs").at(1).at("passes").contains("filter V"));
+  EXPECT_EQ(sweep.at("runs").at(1).at("representation_format").get<std::string>(), "RGBA32F");
 }
 
 TEST(Cli, BenchUsageErrors) {

@@ -167,13 +167,16 @@ TEST_F(GpuTest, FusedAndTwoPassRenderTheSameShadows) {
       std::printf("%-5s %zu light(s): shadow difference max %.2e, mean %.2e\n",
                   std::string(enum_name<Technique>(kTechniqueNames, technique)).c_str(),
                   lights.size(), worst, sum / double(pixels));
-      // The float maps agree to their last bits, so their shadows do. The
-      // 16-bit moments differ by up to a step (the two-pass path rounds
-      // them three times), which Peters' Hamburger solve amplifies at a few
-      // filtered edges near the far end of the depth range (see
-      // ShadowSettings::msm16_alpha), and nowhere else.
-      EXPECT_LE(worst, technique == Technique::Msm16 ? 0.05 : 2e-3);
-      EXPECT_LE(sum / double(pixels), technique == Technique::Msm16 ? 2e-4 : 2e-5);
+      // The maps differ by float rounding (the fused pass pairs symmetric
+      // taps) or, for msm16, by up to a 16-bit step (the two-pass path
+      // rounds three times). VSM's, ESM's and EVSM's tests pass that on
+      // unamplified; Peters' Hamburger solve amplifies it at a few filtered
+      // edges near the far end of the depth range, by up to 0.045 at the
+      // default moment biases (ShadowSettings::msm_alpha, msm16_alpha), and
+      // nowhere else.
+      const bool moments4 = technique == Technique::Msm || technique == Technique::Msm16;
+      EXPECT_LE(worst, moments4 ? 0.05 : 1e-4);
+      EXPECT_LE(sum / double(pixels), moments4 ? 2e-4 : 1e-6);
       EXPECT_GT(shadowed, 0.0);  // there is a shadow to compare
     }
   }
