@@ -193,9 +193,10 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
           "all (every technique but none) or a comma-separated list of " + choices(kTechniqueNames))
       ->capture_default_str();
   command
-      .add_option("--filter", args.filters,
-                  "filters for the vsm/esm/msm/msm16 maps: all or a comma-separated list of " +
-                      choices(kFilterNames))
+      .add_option(
+          "--filter", args.filters,
+          "filters for the vsm/esm/msm/msm16/evsm2/evsm4 maps: all or a comma-separated list of " +
+              choices(kFilterNames))
       ->capture_default_str();
   command.add_option("-o,--output", args.output_dir,
                      "folder for the images (created if missing): each technique's shadow, its "

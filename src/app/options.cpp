@@ -102,7 +102,7 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
       ->capture_default_str();
   named.filter = std::string(enum_name<Filter>(kFilterNames, settings.filter));
   app.add_option("--filter", named.filter,
-                 "filter of the vsm/esm/msm/msm16 maps: " + choices(kFilterNames) +
+                 "filter of the vsm/esm/msm/msm16/evsm2/evsm4 maps: " + choices(kFilterNames) +
                      " (separable Gaussian, or summed-area table)")
       ->capture_default_str();
   add_shadow_parameters(app, settings);
@@ -149,7 +149,8 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
              "depth z-bar, a light with several views (the six cube faces of a point light, "
              "the cascades of a directional one) shown tiled; moments, moments-filtered: the "
              "technique's map before and after the filter, as colour, tiled the same way; for "
-             "esm, log(map)/c + 1, in depth units; ao: the ambient-occlusion buffer, 1 = "
+             "esm, log(map)/c + 1, in depth units (evsm: its positive warp, likewise); ao: the "
+             "ambient-occlusion buffer, 1 = "
              "unoccluded; cascades: the cascade or cube face whose map each pixel reads, as a "
              "colour: red, green, blue, yellow, magenta, cyan for views 0-5, black where no "
              "map covers the point)")

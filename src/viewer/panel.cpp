@@ -201,7 +201,8 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
     choice_combo(state, "technique", state.shadow.technique, kTechniqueNames,
                  "the shadow technique");
     choice_combo(state, "filter", state.shadow.filter, kFilterNames,
-                 "filter of the vsm/esm/msm/msm16 maps: separable Gaussian or summed-area table");
+                 "filter of the vsm/esm/msm/msm16/evsm2/evsm4 maps: separable Gaussian or "
+                 "summed-area table");
     for (const auto& p : kShadowFlagParams) {
       bool value = state.shadow.*(p.field);
       const std::string label(p.name);
