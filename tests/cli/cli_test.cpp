@@ -50,6 +50,11 @@ TEST(Cli, FilteredTechniqueUsageErrors) {
   expect_error("render --technique vsm --vsm-min-variance nan", 2, "--vsm-min-variance", out);
   expect_error("render --technique msm --filter box", 2, "box", out);
   expect_error("render --technique esm --filter sat", 2, "--filter sat", out);
+  expect_error("render --technique evsm2 --filter sat", 2, "--filter sat", out);
+  expect_error("render --technique evsm4 --filter sat --blur 4", 2, "--filter sat", out);
+  expect_error("render --technique evsm4 --evsm-positive 43", 2, "--evsm-positive", out);
+  expect_error("render --technique evsm4 --evsm-negative 0", 2, "--evsm-negative", out);
+  expect_error("render --technique msm --fused maybe", 2, "--fused", out);
   expect_error("render --technique hard --view moments", 2, "--view moments", out);
   expect_error("render --technique pcf --pcf-samples 0", 2, "--pcf-samples", out);
   expect_error("render --technique pcf --pcf-samples 65", 2, "--pcf-samples", out);
@@ -166,9 +171,11 @@ TEST(Cli, RendersEveryTechnique) {
 }
 
 TEST(Cli, RendersEveryFilteredTechnique) {
-  for (const char* technique : {"vsm", "esm", "msm", "msm16"}) {
+  for (const char* technique : {"vsm", "esm", "msm", "msm16", "evsm2", "evsm4"}) {
     for (const char* filter : {"gaussian", "sat"}) {
-      if (std::string(technique) == "esm" && std::string(filter) == "sat") continue;
+      const std::string t = technique;
+      const bool exponential = t == "esm" || t == "evsm2" || t == "evsm4";
+      if (exponential && std::string(filter) == "sat") continue;  // refused (UsageErrors)
       const std::string png = out_path(std::string(technique) + "-" + filter + ".png");
       Result r = run(std::string("render --width 48 --height 32 --shadow-map-size 128 --blur 3 ") +
                      "--technique " + technique + " --filter " + filter + " -o " + png);
