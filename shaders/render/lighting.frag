@@ -12,6 +12,7 @@
 #include "../shadow/hard.glsl"
 #include "../shadow/vsm.glsl"
 #include "../shadow/esm.glsl"
+#include "../shadow/evsm.glsl"
 #include "../shadow/msm.glsl"
 #include "../filter/sat.glsl"
 #include "../shadow/noise.glsl"
@@ -73,6 +74,13 @@ float filtered_lit_fraction(vec4 m, float z, float texel_depth) {
   return shadow_vsm(m.xy, z, min_variance, 0.0);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_ESM
   return shadow_esm(m.x, z, shadow_params.esm_c);
+#elif SHADOW_TECHNIQUE == TECHNIQUE_EVSM2
+  float min_variance = shadow_params.vsm_min_variance * texel_depth * texel_depth;
+  return shadow_evsm2(m.xy, z, shadow_params.evsm_positive, min_variance);
+#elif SHADOW_TECHNIQUE == TECHNIQUE_EVSM4
+  float min_variance = shadow_params.vsm_min_variance * texel_depth * texel_depth;
+  return shadow_evsm4(m, z, shadow_params.evsm_positive, shadow_params.evsm_negative,
+                      min_variance);
 #elif MSM_QUANTIZED
   return 1.0 - msm_intensity16(msm_dequantize(m), z, shadow_params.msm_alpha);
 #else
@@ -87,6 +95,8 @@ float filtered_mean_depth(vec4 m) {
   return log(max(m.x, 1e-37)) / shadow_params.esm_c + 1.0;
 #elif SHADOW_TECHNIQUE == TECHNIQUE_VSM
   return m.x;
+#elif SHADOW_TECHNIQUE == TECHNIQUE_EVSM2 || SHADOW_TECHNIQUE == TECHNIQUE_EVSM4
+  return evsm_unwarp(max(m.x, 1e-37), shadow_params.evsm_positive);
 #elif MSM_QUANTIZED
   return msm_unit_depth(msm_dequantize(m).x);
 #else

@@ -9,7 +9,8 @@ layout(location = 0) out vec4 out_color;
 
 layout(binding = UNIT_PRESENT_SOURCE) uniform sampler2D source;
 layout(location = 0) uniform int encoding;
-layout(location = 1) uniform float esm_c;
+layout(location = 1) uniform float log_scale;
+layout(location = 2) uniform float log_offset;
 
 float srgb_encode(float linear) {
   linear = clamp(linear, 0.0, 1.0);
@@ -20,8 +21,8 @@ void main() {
   vec3 value = texture(source, v_uv).rgb;
   if (encoding == VIEW_ENCODING_DEPTH) {
     value = vec3(value.r);
-  } else if (encoding == VIEW_ENCODING_ESM_LOG) {
-    value = vec3(value.r > 0.0 ? log(value.r) / esm_c + 1.0 : 0.0);
+  } else if (encoding == VIEW_ENCODING_LOG_DEPTH) {
+    value = vec3(value.r > 0.0 ? log(value.r) * log_scale + log_offset : 0.0);
   } else if (encoding == VIEW_ENCODING_SIGNED_MOMENTS) {
     value = msm_moments_from_signed(texture(source, v_uv)).rgb;
   }

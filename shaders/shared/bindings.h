@@ -71,6 +71,8 @@
 #define TECHNIQUE_ESM 5
 #define TECHNIQUE_MSM 6
 #define TECHNIQUE_MSM16 7
+#define TECHNIQUE_EVSM2 8
+#define TECHNIQUE_EVSM4 9
 
 // Filters of the filterable maps (compile-time define SHADOW_FILTER)
 #define FILTER_NONE 0
@@ -86,7 +88,7 @@
 #define VIEW_ENCODING_LINEAR_COLOR 0
 #define VIEW_ENCODING_DATA 1
 #define VIEW_ENCODING_DEPTH 2
-#define VIEW_ENCODING_ESM_LOG 3
+#define VIEW_ENCODING_LOG_DEPTH 3
 #define VIEW_ENCODING_SIGNED_MOMENTS 4
 
 #endif

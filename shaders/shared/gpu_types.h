@@ -91,6 +91,10 @@ struct GpuShadow {
   float accumulate_v;
   float accumulate_cell;
   int accumulate_frame;
+  float evsm_positive;  // EVSM exponents c+ and c- (shaders/shadow/evsm.glsl)
+  float evsm_negative;
+  float evsm_unused0;  // pads the block to a multiple of 16 bytes
+  float evsm_unused1;
 };
 
 // Screen-space ambient occlusion (see SsaoSettings in src/core/settings.hpp).

@@ -4,6 +4,7 @@
 #include "../shadow/msm.glsl"
 #include "../shadow/vsm.glsl"
 #include "../shadow/esm.glsl"
+#include "../shadow/evsm.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -23,6 +24,9 @@ layout(local_size_x = 64) in;
                            // r.x = msm_intensity16 of their mixture, dequantized
 #define MODE_MSM_BLOCKER 8 // a: moments of u; b.xy: (u_f, alpha)
                            // r.xy = msm_blocker_search with MSM_BIAS_32
+#define MODE_EVSM 9        // a: relative depths (d1, d2), weight w of d1, receiver z_f;
+                           // b.xyz: (c+, c-, min variance). Two texels' warped moments
+                           // mixed as a filter does: r.xy = (shadow_evsm2, shadow_evsm4)
 
 struct Case {
   vec4 a;
@@ -73,6 +77,14 @@ void main() {
     case MODE_MSM_BLOCKER:
       r.xy = msm_blocker_search(k.a, k.b.x, k.b.y, MSM_BIAS_32);
       break;
+    case MODE_EVSM: {
+      vec2 w1 = evsm_warp(k.a.x, k.b.x, k.b.y), w2 = evsm_warp(k.a.y, k.b.x, k.b.y);
+      vec4 m = k.a.z * vec4(w1.x, w1.x * w1.x, w1.y, w1.y * w1.y) +
+               (1.0 - k.a.z) * vec4(w2.x, w2.x * w2.x, w2.y, w2.y * w2.y);
+      r.x = shadow_evsm2(m.xy, k.a.w, k.b.x, k.b.z);
+      r.y = shadow_evsm4(m, k.a.w, k.b.x, k.b.y, k.b.z);
+      break;
+    }
   }
   results[i] = r;
 }

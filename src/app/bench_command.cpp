@@ -18,6 +18,7 @@
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
+#include "shadow/representation.hpp"
 
 namespace penumbra {
 
@@ -32,19 +33,21 @@ std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
   std::vector<int> values = {0};
   if (args.sweep == "map-size") values = {512, 1024, 2048, 4096};
   if (args.sweep == "blur") values = {0, 1, 2, 4, 8, 16, 32};
+  if (args.sweep == "fused") values = {1, 0};
   for (Technique t : techniques) {
     for (int v : values) {
       ShadowSettings s = args.shadow;
       s.technique = t;
       if (args.sweep == "map-size") s.map_size = v;
       if (args.sweep == "blur") s.blur = v;
-      if (t == Technique::Esm && s.filter == Filter::Sat) continue;  // refused by validate()
+      if (args.sweep == "fused") s.fused = v == 1;
+      if (is_filterable(t) && !supports_sat(t) && s.filter == Filter::Sat) continue;  // refused
       // Soft only for the techniques that can be; a wrong filter is still refused.
       if (s.soft && !supports_soft_shadows(t, Filter::Sat)) s.soft = false;
       runs.push_back(s);
     }
   }
-  if (runs.empty()) throw UsageError("nothing to measure: esm cannot use --filter sat");
+  if (runs.empty()) throw UsageError("nothing to measure: esm and evsm cannot use --filter sat");
   return runs;
 }
 
@@ -54,6 +57,9 @@ std::string describe(const ShadowSettings& s) {
   if (is_filterable(s.technique)) {
     out << " " << enum_name<Filter>(kFilterNames, s.filter) << " W=" << s.blur
         << (s.soft ? " soft" : "");
+    // Which path filtered: --fused on falls back past the fused pass's reach.
+    if (filter_define(s) == FILTER_GAUSSIAN) out << (uses_fused_filter(s) ? " fused" : " two-pass");
+    out << " (" << format_name(representation_format(s.technique)) << ")";
   }
   out << ", map " << s.map_size;
   return out.str();
@@ -86,6 +92,10 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer) {
   j["blur"] = s.blur;
   j["soft"] = s.soft;
   j["shadow_map_size"] = s.map_size;
+  j["fused"] = is_filterable(s.technique) && uses_fused_filter(s);
+  if (is_filterable(s.technique)) {
+    j["representation_format"] = format_name(representation_format(s.technique));
+  }
   j["frames"] = frames;
   auto samples_json = [](const Samples& samples) {
     const Spread t = spread_of(samples.timer_ms), w = spread_of(samples.wall_ms);
@@ -116,9 +126,9 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
   add_number(command, "warmup", args.warmup, "frames rendered before measuring", 0, 1000,
              OptionGroup::Measurement);
   add_choice(command, "sweep", args.sweep,
-             "measure each technique at several values: map-size (512, 1024, 2048, 4096) or blur "
-             "(W = 0, 1, 2, 4, 8, 16, 32)",
-             {"none", "map-size", "blur"}, OptionGroup::Measurement);
+             "measure each technique at several values: map-size (512, 1024, 2048, 4096), blur "
+             "(W = 0, 1, 2, 4, 8, 16, 32) or fused (--fused, then --no-fused)",
+             {"none", "map-size", "blur", "fused"}, OptionGroup::Measurement);
   in_group(command.add_option("--json", args.json, "also write the numbers to this JSON file")
                ->type_name("FILE"),
            OptionGroup::Output);

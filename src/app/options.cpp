@@ -110,8 +110,8 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
              OptionGroup::Technique);
   named.filter = std::string(enum_name<Filter>(kFilterNames, settings.filter));
   add_choice(app, "filter", named.filter,
-             "filter of the vsm, esm, msm and msm16 maps: a separable Gaussian, or a summed-area "
-             "table",
+             "filter of the vsm, esm, msm, msm16, evsm2 and evsm4 maps: a separable Gaussian, or a "
+             "summed-area table",
              filter_names(), OptionGroup::Filter);
   add_shadow_parameters(app, settings);
 }

@@ -42,6 +42,13 @@ void validate(const ShadowSettings& settings) {
         "far beyond the 17 bits per texel a 32-bit summed-area table keeps; use --filter "
         "gaussian, or vsm/msm/msm16 with sat");
   }
+  if ((settings.technique == Technique::Evsm2 || settings.technique == Technique::Evsm4) &&
+      settings.filter == Filter::Sat && settings.blur > 0) {
+    throw UsageError(
+        "--technique evsm2/evsm4 cannot use --filter sat: exp(c u)^2 spans exp(-2c) to exp(2c) "
+        "(1e-35 to 1e35 at c = 40), far beyond the 17 bits per texel a 32-bit summed-area table "
+        "keeps; use --filter gaussian, or vsm/msm/msm16 with sat");
+  }
 }
 
 void validate(const RenderSettings& settings) {

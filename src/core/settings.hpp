@@ -11,9 +11,9 @@
 
 namespace penumbra {
 
-enum class Technique { None, Hard, Pcf, Pcss, Vsm, Esm, Msm, Msm16 };
+enum class Technique { None, Hard, Pcf, Pcss, Vsm, Esm, Msm, Msm16, Evsm2, Evsm4 };
 
-inline constexpr std::array<std::pair<Technique, std::string_view>, 8> kTechniqueNames{{
+inline constexpr std::array<std::pair<Technique, std::string_view>, 10> kTechniqueNames{{
     {Technique::None, "none"},
     {Technique::Hard, "hard"},
     {Technique::Pcf, "pcf"},
@@ -22,12 +22,22 @@ inline constexpr std::array<std::pair<Technique, std::string_view>, 8> kTechniqu
     {Technique::Esm, "esm"},
     {Technique::Msm, "msm"},
     {Technique::Msm16, "msm16"},
+    {Technique::Evsm2, "evsm2"},
+    {Technique::Evsm4, "evsm4"},
 }};
 
 // Techniques whose map is a filterable representation of depth (moments or
 // an exponential) rather than depth itself.
 constexpr bool is_filterable(Technique t) {
-  return t == Technique::Vsm || t == Technique::Esm || t == Technique::Msm || t == Technique::Msm16;
+  return t == Technique::Vsm || t == Technique::Esm || t == Technique::Msm ||
+         t == Technique::Msm16 || t == Technique::Evsm2 || t == Technique::Evsm4;
+}
+
+// Whether the technique's map can be summed in the 32-bit fixed-point
+// summed-area table: not the exponential ones, whose values span dozens of
+// orders of magnitude (validate() refuses them with --filter sat).
+constexpr bool supports_sat(Technique t) {
+  return is_filterable(t) && t != Technique::Esm && t != Technique::Evsm2 && t != Technique::Evsm4;
 }
 
 enum class Filter { Gaussian, Sat };
@@ -130,8 +140,17 @@ struct ShadowSettings {
   // Filter radius W in texels: a Gaussian of 2W+1 taps (s = W/2), or a
   // (2W+1)^2 box from the summed-area table. 0: no filtering.
   int blur = 2;
+  // Gaussian filters of radius 1..kMaxFusedBlur: resolve and blur in one
+  // compute pass (Peters et al., HPG 2017) instead of a resolve and two
+  // blur passes. Same maps up to rounding; off measures the two-pass path.
+  bool fused = true;
   // ESM exponent c (Annen et al. 2008); the map stores exp(c (z - 1)).
   float esm_c = 60.0f;
+  // EVSM exponents c+ and c- (Lauritzen & McCool 2008) of the warps
+  // exp(c+ u) and -exp(-c- u), u = 2 z-bar - 1 (shaders/shadow/evsm.glsl):
+  // Lauritzen's and MJP's defaults. evsm2 uses c+ only.
+  float evsm_positive = 40.0f;
+  float evsm_negative = 5.0f;
   // MSM moment bias alpha for 32-bit float moments of u = 2 z-bar - 1
   // (Peters & Klein 2015, Alg. 3), toward (0, 0.375, 0, 0.375) as in
   // Peters' JCGT 2017 code. Smaller is sharper (compare's error against the
@@ -297,10 +316,17 @@ inline constexpr int kMaxImageSize = 16384;
 // The ESM map stores exp(c (z - 1)) in 32-bit float: in (0, 1], so it
 // cannot overflow; c <= 87 keeps exp(-c) above the smallest normal float.
 inline constexpr float kEsmMaxC = 87.0f;
+// EVSM stores exp(c u)^2 for u in [-1, 1] in 32-bit float: exp(2 c) stays
+// below the largest float (exp(88.7)) with room for a filter's sums up to
+// c = 44; 42 as Lauritzen's and MJP's code clamp it.
+inline constexpr float kEvsmMaxExponent = 42.0f;
 inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
+// Widest Gaussian the fused resolve + filter pass takes: its tile's apron
+// then still fits the 32 KiB of shared memory every GL 4.5 device has.
+inline constexpr int kMaxFusedBlur = 16;
 inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
 
-inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloatParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, float>, 17> kShadowFloatParams{{
     {"constant-bias",
      "constant depth bias, in shadow-map texels (a texel's world size at the receiver)", 0.0f,
      64.0f, &ShadowSettings::constant_bias, OptionGroup::Bias},
@@ -325,6 +351,10 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloa
      &ShadowSettings::pcf_width, OptionGroup::Technique},
     {"esm-c", "ESM exponent c, per unit of the shadow view's relative depth z-bar", 1.0f, kEsmMaxC,
      &ShadowSettings::esm_c, OptionGroup::Technique},
+    {"evsm-positive", "EVSM positive exponent c+ of exp(c+ (2 z-bar - 1)) (evsm2, evsm4)", 1.0f,
+     kEvsmMaxExponent, &ShadowSettings::evsm_positive, OptionGroup::Technique},
+    {"evsm-negative", "EVSM negative exponent c- of -exp(-c- (2 z-bar - 1)) (evsm4)", 1.0f,
+     kEvsmMaxExponent, &ShadowSettings::evsm_negative, OptionGroup::Technique},
     {"msm-alpha",
      "MSM moment bias alpha for msm's 32-bit float moments of 2 z-bar - 1, toward (0, 0.375, 0, "
      "0.375); below about 5e-7 float rounding shows near the far end of the depth range",
@@ -333,9 +363,10 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 15> kShadowFloa
      "MSM moment bias alpha for msm16's 16-bit moments and for moments summed in the "
      "summed-area table (msm and msm16 with --filter sat), toward (0, 0.628, 0, 0.628)",
      1e-8f, 0.5f, &ShadowSettings::msm16_alpha, OptionGroup::Technique},
-    {"vsm-min-variance", "VSM minimum variance, in squared shadow-map texels", 0.0f, 4096.0f,
-     &ShadowSettings::vsm_min_variance, OptionGroup::Technique},
-    {"bleed-reduction", "light-bleeding reduction for vsm and msm (0: off)", 0.0f, 0.99f,
+    {"vsm-min-variance",
+     "VSM minimum variance, in squared shadow-map texels (EVSM: scaled by its warp's slope)", 0.0f,
+     4096.0f, &ShadowSettings::vsm_min_variance, OptionGroup::Technique},
+    {"bleed-reduction", "light-bleeding reduction for vsm, msm and evsm (0: off)", 0.0f, 0.99f,
      &ShadowSettings::bleed_reduction, OptionGroup::Technique},
     {"cascade-lambda",
      "directional lights: cascade split scheme, lambda * logarithmic + (1 - lambda) * uniform "
@@ -436,11 +467,16 @@ struct SwitchParam {
   OptionGroup group = OptionGroup::Unset;
 };
 
-inline constexpr std::array<SwitchParam<ShadowSettings>, 1> kShadowSwitchParams{{
+inline constexpr std::array<SwitchParam<ShadowSettings>, 2> kShadowSwitchParams{{
     {"guard-band",
      "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
      "filters near a face's edge read their own face (no seams)",
      &ShadowSettings::guard_band, OptionGroup::Lights},
+    {"fused",
+     "filterable techniques with --filter gaussian and --blur 1..16: resolve and blur in one "
+     "compute pass; off (or a wider blur) runs the resolve, then the horizontal and vertical "
+     "blur passes",
+     &ShadowSettings::fused, OptionGroup::Filter},
 }};
 
 inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{

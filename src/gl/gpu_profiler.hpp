@@ -17,6 +17,7 @@ namespace penumbra::gl {
 enum class GpuPass {
   ShadowDepth,
   Resolve,
+  FusedFilter,  // resolve + Gaussian in one pass (FusedFilterPass)
   FilterHorizontal,
   FilterVertical,
   SatRows,
@@ -29,8 +30,10 @@ enum class GpuPass {
 };
 
 inline constexpr std::array<std::string_view, static_cast<std::size_t>(GpuPass::Count)>
-    kGpuPassNames{"shadow depth", "resolve",  "filter H", "filter V", "SAT rows",
-                  "SAT columns",  "G-buffer", "SSAO",     "lighting", "copy (yardstick)"};
+    kGpuPassNames{"shadow depth", "resolve",         "resolve+filter (fused)",
+                  "filter H",     "filter V",        "SAT rows",
+                  "SAT columns",  "G-buffer",        "SSAO",
+                  "lighting",     "copy (yardstick)"};
 
 // Milliseconds per pass (0 for passes that did not run), and the frame's
 // total from its first timestamp to its last. With a serializing profiler

@@ -64,8 +64,8 @@ CopyRatios copy_ratios(const PassTimes& run, bool timer) {
   r.clock = timer ? "timer" : "wall";
   const double copy_ms = spread_of(timer ? copy.timer_ms : copy.wall_ms).median;
   if (copy_ms <= 0.0) return r;
-  for (GpuPass p : {GpuPass::FilterHorizontal, GpuPass::FilterVertical, GpuPass::SatRows,
-                    GpuPass::SatColumns}) {
+  for (GpuPass p : {GpuPass::FusedFilter, GpuPass::FilterHorizontal, GpuPass::FilterVertical,
+                    GpuPass::SatRows, GpuPass::SatColumns}) {
     const auto i = static_cast<std::size_t>(p);
     if (!run.ran[i]) continue;
     const Samples& s = run.passes[i];

@@ -44,7 +44,8 @@ void PresentPass::execute(const ViewSource& source, GLuint framebuffer, const Pi
   glDisable(GL_FRAMEBUFFER_SRGB);
   program_.use();
   glProgramUniform1i(program_.id(), 0, static_cast<GLint>(source.encoding));
-  glProgramUniform1f(program_.id(), 1, source.esm_c);
+  glProgramUniform1f(program_.id(), 1, source.log_scale);
+  glProgramUniform1f(program_.id(), 2, source.log_offset);
   glBindTextureUnit(UNIT_PRESENT_SOURCE, texture.id());
   // One texel per pixel is shown as it is; a map scaled to the window is
   // filtered (a depth map without its comparison, which the sampler turns off).

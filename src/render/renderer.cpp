@@ -22,7 +22,7 @@ namespace penumbra {
 static_assert(sizeof(gpu::GpuLight) == 6 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuShadowView) == 3 * 64 + 2 * 16, "GpuShadowView must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
-static_assert(sizeof(gpu::GpuShadow) == 80, "GpuShadow must match std140");
+static_assert(sizeof(gpu::GpuShadow) == 96, "GpuShadow must match std140");
 
 namespace {
 
@@ -225,7 +225,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if ((render.view == View::Moments || render.view == View::MomentsFiltered) &&
       !is_filterable(shadow.technique)) {
     throw UsageError("--view " + std::string(enum_name<View>(kViewNames, render.view)) +
-                     " needs a filterable technique (vsm, esm, msm or msm16)");
+                     " needs a filterable technique (vsm, esm, msm, msm16, evsm2 or evsm4)");
   }
   if (render.view == View::Ao && !ssao.enabled) {
     throw UsageError("--view ao needs --ssao on");
@@ -300,6 +300,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.accumulate_cell =
       shadow.accumulate > 1 ? 1.0f / std::sqrt(static_cast<float>(shadow.accumulate)) : 0.0f;
   shadow_block.accumulate_frame = shadow.subframe;
+  shadow_block.evsm_positive = shadow.evsm_positive;
+  shadow_block.evsm_negative = shadow.evsm_negative;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
@@ -314,7 +316,17 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     shadow_pass_.execute(gpu_scene_, view_count_, shadow.map_size);
   }
   GLuint filtered = 0;
-  if (is_filterable(shadow.technique)) {
+  const bool fused = is_filterable(shadow.technique) && uses_fused_filter(shadow);
+  if (fused) {
+    {
+      gl::GpuPassScope timed(profiler, gl::GpuPass::FusedFilter);
+      fused_pass_.execute(shadow_pass_.depth_maps(), shadow);
+    }
+    filtered = fused_pass_.output().id();
+    // The moments view shows the unfiltered representation, which the
+    // fused pass never writes.
+    if (render.view == View::Moments) resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
+  } else if (is_filterable(shadow.technique)) {
     {
       gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
       resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
@@ -335,7 +347,9 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     if (render.view != View::ShadowMap) {
       maps = &resolve_pass_.representation();
       const int filter = filter_define(shadow);
-      if (render.view == View::MomentsFiltered && filter == FILTER_GAUSSIAN) {
+      if (render.view == View::MomentsFiltered && fused) {
+        maps = &fused_pass_.output();
+      } else if (render.view == View::MomentsFiltered && filter == FILTER_GAUSSIAN) {
         maps = &blur_pass_.output();
       } else if (render.view == View::MomentsFiltered && filter == FILTER_SAT) {
         maps = &sat_pass_.box_filtered(shadow.blur);
@@ -381,7 +395,11 @@ ViewSource Renderer::view_source() {
   if (view == View::ShadowMap) return {&tiling_pass_.output(), ViewEncoding::Depth};
   if (view == View::Moments || view == View::MomentsFiltered) {
     if (last_shadow_.technique == Technique::Esm) {
-      return {&tiling_pass_.output(), ViewEncoding::EsmLog, last_shadow_.esm_c};
+      return {&tiling_pass_.output(), ViewEncoding::LogDepth, 1.0f / last_shadow_.esm_c, 1.0f};
+    }
+    if (last_shadow_.technique == Technique::Evsm2 || last_shadow_.technique == Technique::Evsm4) {
+      return {&tiling_pass_.output(), ViewEncoding::LogDepth, 0.5f / last_shadow_.evsm_positive,
+              0.5f};
     }
     if (last_shadow_.technique == Technique::Msm && !uses_quantized_moments(last_shadow_)) {
       return {&tiling_pass_.output(), ViewEncoding::SignedMoments};
@@ -403,12 +421,12 @@ Image Renderer::read_view() {
       image.rgba[p + 3] = 1.0f;
     }
   }
-  if (source.encoding == ViewEncoding::EsmLog) {
-    // log(map) / c + 1 is the occluder depth for an unfiltered map; after
-    // the blur it is log(blur(exp(c z))) / c + 1, which is not blur(z).
+  if (source.encoding == ViewEncoding::LogDepth) {
+    // log(map) / c + 1 is the occluder depth for an unfiltered ESM map;
+    // after the blur it is log(blur(exp(c z))) / c + 1, which is not blur(z).
     for (std::size_t p = 0; p < image.rgba.size(); p += 4) {
       const float v = image.rgba[p];
-      const float depth = v > 0.0f ? std::log(v) / source.esm_c + 1.0f : 0.0f;
+      const float depth = v > 0.0f ? std::log(v) * source.log_scale + source.log_offset : 0.0f;
       image.rgba[p] = image.rgba[p + 1] = image.rgba[p + 2] = depth;
       image.rgba[p + 3] = 1.0f;
     }
@@ -455,8 +473,8 @@ SurfacePoints Renderer::read_surfaces() const {
 }
 
 const gl::Texture& Renderer::shadow_maps() const {
-  return is_filterable(last_shadow_.technique) ? resolve_pass_.representation()
-                                               : shadow_pass_.depth_maps();
+  if (!is_filterable(last_shadow_.technique)) return shadow_pass_.depth_maps();
+  return uses_fused_filter(last_shadow_) ? fused_pass_.output() : resolve_pass_.representation();
 }
 
 Image Renderer::read_shadow_view(int view) const {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/settings.hpp"
+#include "filter/fused_filter_pass.hpp"
 #include "filter/gaussian_blur_pass.hpp"
 #include "filter/summed_area_table_pass.hpp"
 #include "gl/gpu_profiler.hpp"
@@ -39,8 +40,10 @@ enum class ViewEncoding {
   Data = VIEW_ENCODING_DATA,
   // a depth texture: z-bar in its one channel, shown as grey
   Depth = VIEW_ENCODING_DEPTH,
-  // an ESM map exp(c (z - 1)): shown as log(map)/c + 1, in depth units
-  EsmLog = VIEW_ENCODING_ESM_LOG,
+  // an exponential map in red: shown in depth units as log(map) * log_scale
+  // + log_offset (ESM's exp(c (z - 1)): 1/c and 1; EVSM's positive warp
+  // exp(c+ (2 z - 1)): 1/(2 c+) and 1/2)
+  LogDepth = VIEW_ENCODING_LOG_DEPTH,
   // msm's 32-bit moments of u = 2 z - 1: shown as the moments of z
   // (E[z], E[z^2], E[z^3]), the colour image of the seed's assignment
   SignedMoments = VIEW_ENCODING_SIGNED_MOMENTS,
@@ -49,7 +52,8 @@ enum class ViewEncoding {
 struct ViewSource {
   const gl::Texture* texture = nullptr;
   ViewEncoding encoding = ViewEncoding::LinearColor;
-  float esm_c = 1.0f;  // for EsmLog
+  float log_scale = 1.0f;  // for LogDepth
+  float log_offset = 1.0f;
 };
 
 class Renderer {
@@ -67,7 +71,7 @@ class Renderer {
   // The view chosen in the last render(): the lighting pass's output for
   // camera views; for map views, the light's z-bar maps (shadow-map) or
   // their representation before or after the filter (moments,
-  // moments-filtered; for esm shown as log(map)/c + 1, in depth units),
+  // moments-filtered; for esm and evsm shown in depth units, see LogDepth),
   // the light's shadow views tiled three to a row (ViewTilingPass).
   // The ao view is the AO texture as the lighting pass reads it.
   [[nodiscard]] Image read_view();
@@ -83,7 +87,8 @@ class Renderer {
   [[nodiscard]] SurfacePoints read_surfaces() const;
 
   // Every shadow view's map as the filters see it, one layer per view: the
-  // technique's representation for vsm/esm/msm/msm16, the z-bar depth maps
+  // technique's representation for vsm/esm/msm/msm16 (filtered, when the
+  // fused pass made it: the same size and format), the z-bar depth maps
   // otherwise. As last rendered.
   [[nodiscard]] const gl::Texture& shadow_maps() const;
 
@@ -122,6 +127,7 @@ class Renderer {
   ShadowMapPass shadow_pass_;
   MomentResolvePass resolve_pass_;
   GaussianBlurPass blur_pass_;
+  FusedFilterPass fused_pass_;
   SummedAreaTablePass sat_pass_;
   GBufferPass gbuffer_pass_;
   SsaoPass ssao_pass_;

@@ -133,8 +133,9 @@ class Study {
         "texels; the soft variants size their filter from a blocker search (PCSS, and the "
         "summed-area-table moment shadows).");
     std::vector<HtmlFigure> figures;
-    for (Technique t : {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss,
-                        Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16}) {
+    for (Technique t :
+         {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
+          Technique::Esm, Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
       figures.push_back(
           figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t)));
     }
@@ -237,11 +238,13 @@ class Study {
     page.paragraph(
         "The spot light's map as each technique stores it, as colour (moments z, z^2, z^3 in "
         "red, green, blue; msm16 shows its quantized channels), before and after a Gaussian of "
-        "W = 8. ESM is shown as log(map)/c + 1, in depth units: after the blur that is "
+        "W = 8. ESM is shown as log(map)/c + 1, in depth units (EVSM likewise, from its positive "
+        "warp exp(c+ (2z - 1))): after the blur that is "
         "log(blur(exp(c z)))/c + 1, which is not blur(z): the exponential weights the farthest "
         "depths most, so edges move towards the far side.");
     std::vector<HtmlFigure> figures;
-    for (Technique t : {Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16}) {
+    for (Technique t : {Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16,
+                        Technique::Evsm2, Technique::Evsm4}) {
       ShadowSettings s = with(t);
       s.blur = 8;
       s.map_size = options_.quick ? 256 : 512;
@@ -417,8 +420,9 @@ class Study {
                                                    "leaking traced", "over-dark traced",
                                                    "MAE filtered", "leaking filtered"}};
     std::vector<HtmlFigure> figures;
-    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
-                        Technique::Esm, Technique::Msm, Technique::Msm16}) {
+    for (Technique t :
+         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
+          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
       ++items_;
       progress_.update(items_, total_items());
       const ShadowSettings settings = with(t);
@@ -480,8 +484,9 @@ class Study {
     header.emplace_back("total");
     header.emplace_back("filters / copy");
     rows.push_back(header);
-    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
-                        Technique::Esm, Technique::Msm, Technique::Msm16}) {
+    for (Technique t :
+         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
+          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
       ++items_;
       progress_.update(items_, total_items());
       try {
@@ -519,7 +524,7 @@ class Study {
   RenderSettings base_render_;
   ShadowSettings base_shadow_;
   // Images, metrics and timings the study makes, for the progress bar.
-  int total_items() const { return options_.quick ? 80 : 113; }
+  int total_items() const { return options_.quick ? 90 : 123; }
   ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;

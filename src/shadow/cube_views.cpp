@@ -80,6 +80,8 @@ float guard_band_texels(const ShadowSettings& settings, int map_size) {
     case Technique::Esm:
     case Technique::Msm:
     case Technique::Msm16:
+    case Technique::Evsm2:
+    case Technique::Evsm4:
       reach =
           settings.soft ? static_cast<float>(MAX_SOFT_RADIUS) : static_cast<float>(settings.blur);
       break;

@@ -65,6 +65,25 @@ double esm_reference(double filtered, double receiver_depth, double c) {
   return std::min(1.0, occluder * std::exp(-c * (receiver_depth - 1.0)));
 }
 
+glm::dvec2 evsm_warp_reference(double z, double positive_exponent, double negative_exponent) {
+  const double u = 2.0 * z - 1.0;
+  return {std::exp(positive_exponent * u), -std::exp(-negative_exponent * u)};
+}
+
+double evsm_reference(glm::dvec4 m, double z, double positive_exponent, double negative_exponent,
+                      double min_variance, bool four) {
+  const glm::dvec2 w = evsm_warp_reference(z, positive_exponent, negative_exponent);
+  auto bound = [&](double mean, double second, double receiver, double exponent) {
+    if (receiver <= mean) return 1.0;
+    const double slope = 2.0 * exponent * receiver;  // dw/dz, up to sign
+    const double variance = std::max(second - mean * mean, slope * slope * min_variance);
+    const double d = receiver - mean;
+    return variance / (variance + d * d);
+  };
+  const double positive = bound(m.x, m.y, w.x, positive_exponent);
+  return four ? std::min(positive, bound(m.z, m.w, w.y, negative_exponent)) : positive;
+}
+
 // Seed 002, matrix form, for moments b of u in [-1, 1]:
 //   R = 3/2 b1 - 2 b3 + 1/2, G = 4 b2 - 4 b4,
 //   B = sqrt(3)/2 b1 - sqrt(12)/9 b3 + 1/2, A = (b2 + b4) / 2.

@@ -55,6 +55,18 @@ double reduce_light_bleeding_reference(double lit, double amount);
 // encoding of depth 0) like the shader: min(1, f exp(-c (z_f - 1))).
 double esm_reference(double filtered, double receiver_depth, double c);
 
+// Exponential variance shadow maps (Lauritzen & McCool, GI 2008): the
+// warps p = exp(c+ u) and n = -exp(-c- u) of relative depth z, u = 2 z - 1.
+glm::dvec2 evsm_warp_reference(double z, double positive_exponent, double negative_exponent);
+
+// EVSM lit fraction for filtered warped moments m = (E[p], E[p^2], E[n],
+// E[n^2]) (evsm2: m.z, m.w unused) and receiver z: in each warp w,
+// Chebyshev's one-tailed bound with the variance floored at the warp of the
+// z-bar floor min_variance, (dw/dz)^2 min_variance = (2 c w)^2 min_variance;
+// evsm4 takes the smaller bound.
+double evsm_reference(glm::dvec4 m, double z, double positive_exponent, double negative_exponent,
+                      double min_variance, bool four);
+
 // Float mirrors of msm_quantize() / msm_dequantize() in msm.glsl: moments
 // of u <-> the four RGBA16 UNORM values (seed 002's transform).
 glm::vec4 msm_quantize(glm::vec4 b);

@@ -29,7 +29,7 @@ void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSetti
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve");
   it->second.use();
-  glProgramUniform1f(it->second.id(), 0, settings.esm_c);
+  set_representation_constants(it->second.id(), settings);
   glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
   glBindImageTexture(IMAGE_OUTPUT, maps_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);

@@ -23,6 +23,10 @@ int technique_define(Technique technique) {
       return TECHNIQUE_MSM;
     case Technique::Msm16:
       return TECHNIQUE_MSM16;
+    case Technique::Evsm2:
+      return TECHNIQUE_EVSM2;
+    case Technique::Evsm4:
+      return TECHNIQUE_EVSM4;
   }
   return TECHNIQUE_NONE;
 }
@@ -30,6 +34,11 @@ int technique_define(Technique technique) {
 int filter_define(const ShadowSettings& settings) {
   if (!is_filterable(settings.technique) || settings.blur == 0) return FILTER_NONE;
   return settings.filter == Filter::Sat ? FILTER_SAT : FILTER_GAUSSIAN;
+}
+
+bool uses_fused_filter(const ShadowSettings& settings) {
+  return settings.fused && filter_define(settings) == FILTER_GAUSSIAN &&
+         settings.blur <= kMaxFusedBlur;
 }
 
 bool uses_quantized_moments(const ShadowSettings& settings) {
@@ -47,9 +56,26 @@ GLenum representation_format(Technique technique) {
       return GL_RGBA32F;
     case Technique::Msm16:
       return GL_RGBA16;
+    case Technique::Evsm2:
+      return GL_RG32F;
+    case Technique::Evsm4:
+      return GL_RGBA32F;
     default:
       throw RuntimeError("technique has no filterable representation");
   }
+}
+
+void set_representation_constants(GLuint program, const ShadowSettings& settings) {
+  glProgramUniform1f(program, 0, settings.esm_c);
+  glProgramUniform1f(program, 1, settings.evsm_positive);
+  glProgramUniform1f(program, 2, settings.evsm_negative);
+}
+
+std::string format_name(GLenum format) {
+  if (format == GL_DEPTH_COMPONENT32F) return "DEPTH32F";
+  std::string name = image_format_qualifier(format);
+  for (char& c : name) c = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+  return name;
 }
 
 std::string image_format_qualifier(GLenum format) {

@@ -15,6 +15,12 @@ int technique_define(Technique technique);
 // The value of the SHADOW_FILTER define (FILTER_*) for the shadow settings.
 int filter_define(const ShadowSettings& settings);
 
+// Whether the renderer filters with the fused resolve + Gaussian pass
+// (FusedFilterPass): --fused on, the Gaussian filter, radius 1..kMaxFusedBlur.
+// Otherwise a filterable technique runs the resolve, then the two blur
+// passes or the summed-area table.
+bool uses_fused_filter(const ShadowSettings& settings);
+
 // Whether the map holds the moments in the optimized quantization basis of
 // Peters & Klein 2015 (msm_quantize): always for msm16, and for msm summed
 // in the fixed-point summed-area table, where the basis spreads the
@@ -23,8 +29,18 @@ bool uses_quantized_moments(const ShadowSettings& settings);
 
 // Sized internal format of the technique's map: vsm RG32F (z, z^2),
 // esm R32F exp(c (z - 1)), msm RGBA32F (z, z^2, z^3, z^4), msm16 RGBA16
-// (the quantized moments). Only for filterable techniques.
+// (the quantized moments), evsm2 RG32F (p, p^2), evsm4 RGBA32F
+// (p, p^2, n, n^2) (shaders/shadow/evsm.glsl). Only for filterable
+// techniques.
 GLenum representation_format(Technique technique);
+
+// Sets the uniforms u_esm_c, u_evsm_positive, u_evsm_negative (locations
+// 0-2) of a program that makes representations (representation.glsl's
+// RepresentationConstants).
+void set_representation_constants(GLuint program, const ShadowSettings& settings);
+
+// The name of a sized internal format used here, for reports ("RGBA16").
+std::string format_name(GLenum format);
 
 // The GLSL image format qualifier of a sized internal format ("rgba32f").
 std::string image_format_qualifier(GLenum format);

@@ -260,8 +260,8 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
     }
     if (offer("filter")) {
       choice_combo(state, "filter", state.shadow.filter, kFilterNames,
-                   "filter of the vsm/esm/msm/msm16 maps: separable Gaussian or summed-area "
-                   "table");
+                   "filter of the vsm/esm/msm/msm16/evsm2/evsm4 maps: separable Gaussian or "
+                   "summed-area table");
     }
     for (const auto& p : kShadowFlagParams) {
       if (!offer(p.name)) continue;

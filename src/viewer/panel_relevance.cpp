@@ -31,13 +31,17 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
   if (name == "pcf-width" || name == "pcf-samples") return t == Technique::Pcf;
   if (name == "pcss-blocker-samples" || name == "pcss-filter-samples") return t == Technique::Pcss;
   if (name == "esm-c") return t == Technique::Esm;
-  if (name == "vsm-min-variance") return t == Technique::Vsm;
+  const bool evsm = t == Technique::Evsm2 || t == Technique::Evsm4;
+  if (name == "evsm-positive") return evsm;
+  if (name == "evsm-negative") return t == Technique::Evsm4;
+  if (name == "fused") return is_filterable(t) && shadow.filter == Filter::Gaussian;
+  if (name == "vsm-min-variance") return t == Technique::Vsm || evsm;
   // 32-bit float moments are biased by msm-alpha; 16-bit ones and those
   // summed in the fixed-point summed-area table by msm16-alpha.
   if (name == "msm-alpha") return t == Technique::Msm && shadow.filter != Filter::Sat;
   if (name == "msm16-alpha")
     return t == Technique::Msm16 || (moments && shadow.filter == Filter::Sat);
-  if (name == "bleed-reduction") return t == Technique::Vsm || moments;
+  if (name == "bleed-reduction") return t == Technique::Vsm || moments || evsm;
   if (name == "soft") return supports_soft_shadows(t, shadow.filter);
   if (name == "soft-two-moment-blockers") return moments && shadow.soft;
   if (name == "light-size") return sized_source && positional;

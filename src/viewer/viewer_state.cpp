@@ -151,9 +151,12 @@ FrameInput frame_input(const ViewerState& state, int width, int height, int max_
     s.soft = false;
     f.notes.push_back("soft: off (needs vsm, msm or msm16 with the sat filter)");
   }
-  if (s.technique == Technique::Esm && s.filter == Filter::Sat && s.blur > 0) {
+  if (is_filterable(s.technique) && !supports_sat(s.technique) && s.filter == Filter::Sat &&
+      s.blur > 0) {
     s.filter = Filter::Gaussian;
-    f.notes.push_back("filter: gaussian (esm's exp(c z) exceeds the summed-area table's range)");
+    f.notes.push_back("filter: gaussian (" +
+                      std::string(enum_name<Technique>(kTechniqueNames, s.technique)) +
+                      "'s exponentials exceed the summed-area table's range)");
   }
   RenderSettings& r = f.render;
   const int lights = static_cast<int>(f.lights.size());

@@ -51,6 +51,11 @@ TEST(Cli, FilteredTechniqueUsageErrors) {
   expect_error("render --technique vsm --vsm-min-variance nan", 2, "--vsm-min-variance", out);
   expect_error("render --technique msm --filter box", 2, "box", out);
   expect_error("render --technique esm --filter sat", 2, "--filter sat", out);
+  expect_error("render --technique evsm2 --filter sat", 2, "--filter sat", out);
+  expect_error("render --technique evsm4 --filter sat --blur 4", 2, "--filter sat", out);
+  expect_error("render --technique evsm4 --evsm-positive 43", 2, "--evsm-positive", out);
+  expect_error("render --technique evsm4 --evsm-negative 0", 2, "--evsm-negative", out);
+  expect_error("render --technique msm --fused maybe", 2, "--fused", out);
   expect_error("render --technique hard --view moments", 2, "--view moments", out);
   expect_error("render --technique pcf --pcf-samples 0", 2, "--pcf-samples", out);
   expect_error("render --technique pcf --pcf-samples 65", 2, "--pcf-samples", out);
@@ -68,7 +73,7 @@ TEST(Cli, FilteredTechniqueUsageErrors) {
 TEST(Cli, BenchWritesJsonWithEveryPass) {
   const std::string json_path = out_path("bench.json");
   Result r =
-      run("bench --frames 2 --warmup 1 --technique msm,vsm --filter gaussian --blur 2 "
+      run("bench --frames 2 --warmup 1 --technique msm,vsm --filter gaussian --blur 2 --fused off "
           "--width 64 --height 48 --shadow-map-size 256 --json " +
           json_path);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -99,6 +104,49 @@ TEST(Cli, BenchWritesJsonWithEveryPass) {
   EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT columns"));
 }
 
+// --fused on (the default) replaces the resolve and both blur passes with
+// one, up to W = 16; past it the two-pass path runs, and the JSON says which.
+TEST(Cli, BenchReportsTheFusedFilterAndItsFallback) {
+  const std::string json_path = out_path("bench-fused.json");
+  Result r =
+      run("bench --frames 1 --warmup 0 --technique msm16 --filter gaussian --sweep blur "
+          "--width 32 --height 24 --shadow-map-size 64 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("msm16 gaussian W=4 fused (RGBA16)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("msm16 gaussian W=32 two-pass (RGBA16)"), std::string::npos) << r.out;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  int fused_runs = 0;
+  for (const auto& run : j.at("runs")) {
+    const int blur = run.at("blur").get<int>();
+    const auto& passes = run.at("passes");
+    const bool fused = blur >= 1 && blur <= 16;
+    EXPECT_EQ(run.at("fused").get<bool>(), fused) << blur;
+    EXPECT_EQ(passes.contains("resolve+filter (fused)"), fused) << blur;
+    EXPECT_EQ(passes.contains("resolve"), !fused) << blur;
+    EXPECT_EQ(passes.contains("filter H"), blur > 16) << blur;
+    EXPECT_EQ(run.at("representation_format").get<std::string>(), "RGBA16");
+    fused_runs += fused ? 1 : 0;
+  }
+  EXPECT_EQ(fused_runs, 5);  // W = 1, 2, 4, 8, 16
+
+  // --sweep fused measures both paths in one run, fused first.
+  r =
+      run("bench --frames 1 --warmup 0 --technique evsm4 --blur 4 --sweep fused "
+          "--width 32 --height 24 --shadow-map-size 64 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream again(json_path);
+  const nlohmann::json sweep = nlohmann::json::parse(again);
+  ASSERT_EQ(sweep.at("runs").size(), 2u);
+  EXPECT_TRUE(sweep.at("runs").at(0).at("fused").get<bool>());
+  EXPECT_TRUE(sweep.at("runs").at(0).at("passes").contains("resolve+filter (fused)"));
+  EXPECT_FALSE(sweep.at("runs").at(1).at("fused").get<bool>());
+  EXPECT_TRUE(sweep.at("runs").at(1).at("passes").contains("filter V"));
+  EXPECT_EQ(sweep.at("runs").at(1).at("representation_format").get<std::string>(), "RGBA32F");
+}
+
 TEST(Cli, BenchUsageErrors) {
   const std::string json_path = out_path("bench-bad.json");
   expect_error("bench --technique msm,blurry", 2, "blurry", json_path, "--json");
@@ -124,9 +172,11 @@ TEST(Cli, RendersEveryTechnique) {
 }
 
 TEST(Cli, RendersEveryFilteredTechnique) {
-  for (const char* technique : {"vsm", "esm", "msm", "msm16"}) {
+  for (const char* technique : {"vsm", "esm", "msm", "msm16", "evsm2", "evsm4"}) {
     for (const char* filter : {"gaussian", "sat"}) {
-      if (std::string(technique) == "esm" && std::string(filter) == "sat") continue;
+      const std::string t = technique;
+      const bool exponential = t == "esm" || t == "evsm2" || t == "evsm4";
+      if (exponential && std::string(filter) == "sat") continue;  // refused (UsageErrors)
       const std::string png = out_path(std::string(technique) + "-" + filter + ".png");
       Result r = run(std::string("render --width 48 --height 32 --shadow-map-size 128 --blur 3 ") +
                      "--technique " + technique + " --filter " + filter + " -o " + png);

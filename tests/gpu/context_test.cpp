@@ -56,7 +56,26 @@ TEST_F(GpuTest, EveryShaderCompiles) {
          {"IMAGE_FORMAT", "rgba32f"}},
         {{"REPRESENTATION", std::to_string(TECHNIQUE_MSM16)},
          {"MSM_QUANTIZED", "1"},
-         {"IMAGE_FORMAT", "rgba16"}}}},
+         {"IMAGE_FORMAT", "rgba16"}},
+        {{"REPRESENTATION", std::to_string(TECHNIQUE_EVSM2)},
+         {"MSM_QUANTIZED", "0"},
+         {"IMAGE_FORMAT", "rg32f"}},
+        {{"REPRESENTATION", std::to_string(TECHNIQUE_EVSM4)},
+         {"MSM_QUANTIZED", "0"},
+         {"IMAGE_FORMAT", "rgba32f"}}}},
+      {"filter/fused_filter.comp",
+       {{{"REPRESENTATION", std::to_string(TECHNIQUE_ESM)},
+         {"MSM_QUANTIZED", "0"},
+         {"IMAGE_FORMAT", "r32f"},
+         {"RADIUS", "1"},
+         {"TILE_Y", "32"},
+         {"GAUSSIAN_WEIGHTS", "0.25, 0.5, 0.25"}},
+        {{"REPRESENTATION", std::to_string(TECHNIQUE_EVSM4)},
+         {"MSM_QUANTIZED", "0"},
+         {"IMAGE_FORMAT", "rgba32f"},
+         {"RADIUS", "2"},
+         {"TILE_Y", "8"},
+         {"GAUSSIAN_WEIGHTS", "0.1, 0.2, 0.4, 0.2, 0.1"}}}},
       {"filter/gaussian_blur.comp",
        {{{"AXIS", "0"}, {"RADIUS", "1"}, {"IMAGE_FORMAT", "rgba16"}},
         {{"AXIS", "1"}, {"RADIUS", "64"}, {"IMAGE_FORMAT", "rgba32f"}}}},
@@ -85,7 +104,7 @@ TEST_F(GpuTest, EveryShaderCompiles) {
   for (auto& pair : pairs) {
     EXPECT_NO_THROW(gl::Program::graphics(pair[0], pair[1])) << pair[0] << " + " << pair[1];
   }
-  for (int technique = TECHNIQUE_NONE; technique <= TECHNIQUE_MSM16; ++technique) {
+  for (int technique = TECHNIQUE_NONE; technique <= TECHNIQUE_EVSM4; ++technique) {
     for (int filter = FILTER_NONE; filter <= FILTER_SAT; ++filter) {
       for (const char* quantized : {"0", "1"}) {
         for (const char* soft : {"0", "1"}) {

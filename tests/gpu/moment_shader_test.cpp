@@ -30,7 +30,8 @@ enum Mode : int {
   kBleeding = 5,
   kMsmMix = 6,
   kMsm16Mix = 7,
-  kMsmBlocker = 8
+  kMsmBlocker = 8,
+  kEvsm = 9
 };
 
 struct Case {
@@ -539,6 +540,57 @@ TEST_F(GpuTest, EsmMatchesDoubleReferenceWithoutOverflow) {
       max_error, max_encode_error);
   EXPECT_LE(max_error, 1e-4);
   EXPECT_LE(max_encode_error, 1e-4);
+}
+
+// EVSM2 and EVSM4 (shaders/shadow/evsm.glsl) on two texels' warped moments
+// mixed as a filter mixes them, against the double-precision formulas, at
+// the default exponents and at the largest (42, where p^2 reaches e^84).
+// Each is an upper bound of the true lit fraction (the weight of the texels
+// at or behind the receiver), and evsm4's is the tighter.
+TEST_F(GpuTest, EvsmMatchesDoubleReferenceAndBoundsTheLitFraction) {
+  std::mt19937 rng(2008);
+  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+  std::vector<Case> cases;
+  for (glm::vec2 c :
+       {glm::vec2(40.0f, 5.0f), glm::vec2(kEvsmMaxExponent), glm::vec2(5.0f, 40.0f)}) {
+    // Floors of a 2048^2 map's texel and of a few texels of a coarse one;
+    // at c = 42 the first once overflowed the float floor (2 c w)^2.
+    for (float min_variance : {1e-7f, 1e-5f, 1e-3f}) {
+      for (int i = 0; i < 500; ++i) {
+        const float d1 = u01(rng), d2 = u01(rng), w = u01(rng), z = u01(rng);
+        cases.push_back({glm::vec4(d1, d2, w, z), glm::vec4(c, min_variance, 0.0f), {}});
+      }
+    }
+  }
+  const std::vector<glm::vec4> gpu = run_kernel(kEvsm, cases);
+  double max_error2 = 0.0, max_error4 = 0.0;
+  int tighter = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const Case& k = cases[i];
+    ASSERT_TRUE(finite(gpu[i])) << i;
+    glm::dvec4 m(0.0);
+    for (int t = 0; t < 2; ++t) {
+      const double weight = t == 0 ? k.a.z : 1.0 - k.a.z;
+      const glm::dvec2 w = evsm_warp_reference(t == 0 ? k.a.x : k.a.y, k.b.x, k.b.y);
+      m += weight * glm::dvec4(w.x, w.x * w.x, w.y, w.y * w.y);
+    }
+    const double ref2 = evsm_reference(m, k.a.w, k.b.x, k.b.y, k.b.z, false);
+    const double ref4 = evsm_reference(m, k.a.w, k.b.x, k.b.y, k.b.z, true);
+    max_error2 = std::max(max_error2, std::abs(gpu[i].x - ref2));
+    max_error4 = std::max(max_error4, std::abs(gpu[i].y - ref4));
+    const double lit = (k.a.x >= k.a.w ? k.a.z : 0.0) + (k.a.y >= k.a.w ? 1.0 - k.a.z : 0.0);
+    EXPECT_GE(ref2, lit - 1e-9) << i;  // Chebyshev: an upper bound
+    EXPECT_GE(ref4, lit - 1e-9) << i;
+    EXPECT_LE(gpu[i].y, gpu[i].x + 1e-6f) << i;
+    tighter += ref4 < ref2 - 0.01 ? 1 : 0;
+  }
+  std::printf(
+      "shadow_evsm2/4 vs double reference: max error %.3g / %.3g; evsm4 tighter in %d of "
+      "%zu cases\n",
+      max_error2, max_error4, tighter, cases.size());
+  EXPECT_LE(max_error2, 1e-4);
+  EXPECT_LE(max_error4, 1e-4);
+  EXPECT_GT(tighter, 0);  // the negative warp matters somewhere
 }
 
 }  // namespace

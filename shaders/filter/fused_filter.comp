@@ -1,0 +1,115 @@
+// Resolve and separable Gaussian in one pass (Peters, Münstermann,
+// Wetzstein, Klein, "Non-Linearly Quantized Moment Shadow Maps", HPG 2017,
+// sec. 5: the depth is read, turned into moments and filtered in shared
+// memory, and the filtered moments are written once). The two-pass path
+// writes the representation, reads it back with an apron for the
+// horizontal blur, writes that, and reads it again for the vertical one;
+// here only the depth (4 bytes a texel) is read, with its apron, and the
+// filtered map is written once.
+//
+// Each workgroup filters a tile of TILE_X x TILE_Y texels of one layer:
+//  1. stage: the tile's depths and an apron of RADIUS texels on every side
+//     go to shared memory as representation_stage() values (one float a
+//     texel: z-bar, or the exponential of ESM and EVSM2);
+//  2. horizontal: for every staged row, the 2 RADIUS + 1 taps of the
+//     expanded representation (its moments) -> `rows`, TILE_X wide;
+//  3. vertical: the 2 RADIUS + 1 rows of `rows` above and below each
+//     texel, stored with representation_store(); each thread filters
+//     ROWS_PER_THREAD consecutive texels of a column at once.
+// Measured on llvmpipe (1024^2 msm16 maps, W = 4, `penumbra bench --sweep
+// fused`): 401 ms against 938 ms for the resolve and the two blur passes;
+// the tap loops with the weights as run-time data took 1258 ms, and step 3
+// one texel per thread 752 ms.
+// The weights are seed 001's Gaussian (gaussian_weights(), the two-pass
+// blur's), and coordinates clamp to the border texel as there, so the
+// result is the two-pass one up to the rounding of its intermediate maps.
+//
+// Shared memory is laid out so that the 32 threads of a row (a warp on
+// NVIDIA hardware) always read 32 consecutive words at once: in step 2
+// along a staged row, in step 3 along a row of `rows` (a thread's several
+// texels lie down its column, its neighbours' in the next columns) -- the
+// vertical filter walks down rows of the tile, not down a column, so it has
+// none of the two-pass vertical pass's 8-way bank conflicts. The staged
+// rows are padded to an odd stride, so that the flat staging loop, whose
+// rows do not start at a multiple of 32, never maps two lanes onto one bank
+// either.
+//
+// Defines: REPRESENTATION, MSM_QUANTIZED (shadow/representation.glsl),
+// IMAGE_FORMAT, RADIUS (W, 1..16), GAUSSIAN_WEIGHTS (the weights, comma-
+// separated), TILE_Y (a multiple of GROUP_Y, chosen by the host so that the
+// shared memory fits the device's limit).
+#include "../shared/bindings.h"
+#include "../shadow/representation.glsl"
+
+#define TILE_X 32
+#define GROUP_Y 8
+#define ROWS_PER_THREAD (TILE_Y / GROUP_Y)
+
+layout(local_size_x = TILE_X, local_size_y = GROUP_Y) in;
+
+layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray depth_map;
+layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2DArray target;
+// The 2 RADIUS + 1 weights, summing to 1, as compile-time constants (printed
+// exactly by the host): the tap loops unroll with them folded in, and the
+// symmetric pairs share one multiply.
+const float weights[2 * RADIUS + 1] = float[](GAUSSIAN_WEIGHTS);
+layout(location = 0) uniform float u_esm_c;
+layout(location = 1) uniform float u_evsm_positive;
+layout(location = 2) uniform float u_evsm_negative;
+
+#define SPAN_X (TILE_X + 2 * RADIUS)
+#define SPAN_Y (TILE_Y + 2 * RADIUS)
+#define STAGED_STRIDE (SPAN_X + 1 - SPAN_X % 2)  // odd: see above
+shared STAGE_TYPE staged[SPAN_Y * STAGED_STRIDE];
+shared REPRESENTATION_TYPE rows[SPAN_Y * TILE_X];
+
+void main() {
+  const RepresentationConstants constants =
+      RepresentationConstants(u_esm_c, u_evsm_positive, u_evsm_negative);
+  const ivec2 size = textureSize(depth_map, 0).xy;
+  const int layer = int(gl_WorkGroupID.z);
+  const ivec2 tile = ivec2(gl_WorkGroupID.xy) * ivec2(TILE_X, TILE_Y);
+  const ivec2 local = ivec2(gl_LocalInvocationID.xy);
+  const int thread = int(gl_LocalInvocationIndex);
+
+  // 1. Stage the tile and its apron, clamped to the border texel.
+  for (int i = thread; i < SPAN_X * SPAN_Y; i += TILE_X * GROUP_Y) {
+    const ivec2 s = ivec2(i % SPAN_X, i / SPAN_X);
+    const ivec2 p = clamp(tile + s - RADIUS, ivec2(0), size - 1);
+    staged[s.y * STAGED_STRIDE + s.x] =
+        representation_stage(texelFetch(depth_map, ivec3(p, layer), 0).r, constants);
+  }
+  barrier();
+
+  // 2. Horizontal: every staged row, the tile's columns.
+  for (int y = local.y; y < SPAN_Y; y += GROUP_Y) {
+    const int c = y * STAGED_STRIDE + local.x + RADIUS;  // the centre tap
+    REPRESENTATION_TYPE sum = weights[RADIUS] * representation_expand(staged[c], constants);
+    for (int k = 1; k <= RADIUS; ++k) {
+      sum += weights[RADIUS + k] * (representation_expand(staged[c - k], constants) +
+                                    representation_expand(staged[c + k], constants));
+    }
+    rows[y * TILE_X + local.x] = sum;
+  }
+  barrier();
+
+  // 3. Vertical: each thread filters ROWS_PER_THREAD consecutive texels of
+  // its column, so each row of `rows` it reads serves up to that many of
+  // them: ROWS_PER_THREAD + 2 RADIUS loads instead of ROWS_PER_THREAD
+  // (2 RADIUS + 1). The loops unroll, and the taps' order is the two-pass
+  // blur's (k = 0 .. 2 RADIUS).
+  const int first = local.y * ROWS_PER_THREAD;
+  REPRESENTATION_TYPE sums[ROWS_PER_THREAD];
+  for (int r = 0; r < ROWS_PER_THREAD; ++r) sums[r] = REPRESENTATION_TYPE(0.0);
+  for (int j = 0; j < ROWS_PER_THREAD + 2 * RADIUS; ++j) {
+    const REPRESENTATION_TYPE v = rows[(first + j) * TILE_X + local.x];
+    for (int r = 0; r < ROWS_PER_THREAD; ++r) {  // constant bounds: unrolled, sums in registers
+      const int k = j - r;
+      if (k >= 0 && k <= 2 * RADIUS) sums[r] += weights[k] * v;
+    }
+  }
+  for (int r = 0; r < ROWS_PER_THREAD; ++r) {
+    const ivec2 p = tile + ivec2(local.x, first + r);
+    if (all(lessThan(p, size))) imageStore(target, ivec3(p, layer), representation_store(sums[r]));
+  }
+}

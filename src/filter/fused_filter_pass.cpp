@@ -1,0 +1,92 @@
+#include "filter/fused_filter_pass.hpp"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "filter/gaussian.hpp"
+#include "shadow/representation.hpp"
+#include "shared/bindings.h"
+
+namespace penumbra {
+
+namespace {
+
+constexpr int kTileX = 32;  // TILE_X of fused_filter.comp
+
+GLuint groups(int size, int tile) {
+  return static_cast<GLuint>((size + tile - 1) / tile);
+}
+
+int channels_of(GLenum format) {
+  switch (format) {
+    case GL_R32F:
+      return 1;
+    case GL_RG32F:
+      return 2;
+    default:
+      return 4;
+  }
+}
+
+}  // namespace
+
+FusedFilterPass::FusedFilterPass() {
+  glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared_bytes_);
+}
+
+int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes) {
+  const int span_x = kTileX + 2 * radius;
+  const int stride = span_x + 1 - span_x % 2;  // STAGED_STRIDE
+  for (int rows : {32, 16, 8}) {               // multiples of the shader's GROUP_Y rows of threads
+    const int span_y = rows + 2 * radius;
+    const int bytes = span_y * stride * 4 + span_y * kTileX * 4 * channels;
+    if (bytes <= shared_bytes) return rows;
+  }
+  return 0;
+}
+
+void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
+  const int radius = settings.blur;
+  if (radius < 1 || radius > kMaxFusedBlur) {
+    throw RuntimeError("the fused filter takes radii 1.." + std::to_string(kMaxFusedBlur));
+  }
+  const Technique technique = settings.technique;
+  const GLenum format = representation_format(technique);
+  const int rows = tile_rows(radius, channels_of(format), shared_bytes_);
+  if (rows == 0) throw RuntimeError("the fused filter's tile does not fit in shared memory");
+  const bool quantized = uses_quantized_moments(settings);
+  const auto key = std::make_tuple(technique, quantized, radius, rows);
+  auto it = programs_.find(key);
+  if (it == programs_.end()) {
+    std::string weight_list;
+    for (float w : gaussian_weights(radius)) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%s%.9g", weight_list.empty() ? "" : ", ", w);
+      weight_list += text;  // 9 significant digits: the float itself, exactly
+    }
+    gl::Defines defines = {{"REPRESENTATION", std::to_string(technique_define(technique))},
+                           {"MSM_QUANTIZED", quantized ? "1" : "0"},
+                           {"IMAGE_FORMAT", image_format_qualifier(format)},
+                           {"RADIUS", std::to_string(radius)},
+                           {"TILE_Y", std::to_string(rows)},
+                           {"GAUSSIAN_WEIGHTS", weight_list}};
+    it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;
+  }
+  gl::ensure_texture_array(output_, format, depth_maps.width(), depth_maps.height(),
+                           depth_maps.layers(), "fused filtered shadow maps");
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve+filter (fused)");
+  it->second.use();
+  set_representation_constants(it->second.id(), settings);
+  glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
+  glBindSampler(UNIT_COMPUTE_INPUT, 0);
+  glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+  glDispatchCompute(groups(output_.width(), kTileX), groups(output_.height(), rows),
+                    static_cast<GLuint>(output_.layers()));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glPopDebugGroup();
+}
+
+}  // namespace penumbra

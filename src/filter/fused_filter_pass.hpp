@@ -1,0 +1,43 @@
+#pragma once
+// Resolve + separable Gaussian in one compute pass (Peters et al., HPG 2017):
+// the z-bar depth-map array -> the technique's filtered representation,
+// written once (shaders/filter/fused_filter.comp). The same result as
+// MomentResolvePass followed by GaussianBlurPass, up to the rounding of
+// their intermediate maps, for radii 1..kMaxFusedBlur; the renderer picks
+// it with uses_fused_filter().
+#include <epoxy/gl.h>
+
+#include <map>
+#include <tuple>
+
+#include "core/settings.hpp"
+#include "gl/program.hpp"
+#include "gl/resources.hpp"
+
+namespace penumbra {
+
+class FusedFilterPass {
+ public:
+  FusedFilterPass();
+
+  // Filters every layer of `depth_maps` with the settings' technique and
+  // radius (settings.blur in 1..kMaxFusedBlur) into output().
+  void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
+
+  // Same size, layers and format as the resolve's representation. Valid
+  // after execute().
+  [[nodiscard]] const gl::Texture& output() const { return output_; }
+
+  // Rows of the tile each workgroup filters (32 wide) for a radius and a
+  // representation of `channels` floats (one float staged per texel): the
+  // tallest of 32, 16 and 8 whose shared memory fits `shared_bytes`; 0 if
+  // none does.
+  static int tile_rows(int radius, int channels, int shared_bytes);
+
+ private:
+  std::map<std::tuple<Technique, bool, int, int>, gl::Program> programs_;
+  int shared_bytes_ = 0;  // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE
+  gl::Texture output_;
+};
+
+}  // namespace penumbra
