@@ -305,7 +305,7 @@ TEST(Cli, HelpListsEveryOptionWithItsDefault) {
 // unless told otherwise (its help used to say hard).
 TEST(Cli, HelpShowsTheTechniqueEachCommandRuns) {
   for (const auto& [command, shown] :
-       {std::pair{"render", "msm16; default: hard]"}, std::pair{"bench", "msm16; default: msm]"}}) {
+       {std::pair{"render", "evsm4; default: hard]"}, std::pair{"bench", "evsm4; default: msm]"}}) {
     Result r = run(std::string(command) + " --help");
     EXPECT_EQ(r.status, 0);
     // Descriptions are wrapped: read them as one line.
