@@ -9,9 +9,10 @@
 // mixed in. Each layer of the array (one shadow view) is filtered on its
 // own: workgroup z is the layer, so no view bleeds into another.
 #include "../shared/bindings.h"
+#include "../shared/filter_tiles.h"
 
-#define TILE_ALONG 64
-#define TILE_ACROSS 8
+#define TILE_ALONG GAUSSIAN_TILE_ALONG
+#define TILE_ACROSS GAUSSIAN_TILE_ACROSS
 
 #if AXIS == 0
 layout(local_size_x = TILE_ALONG, local_size_y = TILE_ACROSS) in;

@@ -28,6 +28,17 @@ const gl::Program& SummedAreaTablePass::program(const char* path, GLenum format)
   return it->second;
 }
 
+TexelTraffic SummedAreaTablePass::row_traffic(GLenum source_format) {
+  return {static_cast<double>(bytes_per_texel(source_format)),
+          static_cast<double>(bytes_per_texel(integer_format_with_channels_of(source_format)))};
+}
+
+TexelTraffic SummedAreaTablePass::column_traffic(GLenum source_format) {
+  const auto table =
+      static_cast<double>(bytes_per_texel(integer_format_with_channels_of(source_format)));
+  return {table, table};
+}
+
 void SummedAreaTablePass::execute(const gl::Texture& source, gl::GpuProfiler* profiler) {
   const GLenum format = integer_format_with_channels_of(source.format());
   gl::Texture& table = table_;

@@ -8,6 +8,7 @@
 #include "gl/gpu_profiler.hpp"
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
+#include "shadow/texel_traffic.hpp"
 
 namespace penumbra {
 
@@ -24,6 +25,12 @@ class SummedAreaTablePass {
  public:
   // Builds the table of every layer of the 2D array `source` (values in [0, 1]).
   void execute(const gl::Texture& source, gl::GpuProfiler* profiler = nullptr);
+
+  // Per texel of a `source_format` map: the row scan reads the source and
+  // writes the table (the integer format with the source's channels); the
+  // column scan reads and writes the table.
+  static TexelTraffic row_traffic(GLenum source_format);
+  static TexelTraffic column_traffic(GLenum source_format);
 
   // Valid after execute(): an unsigned-integer 2D array.
   [[nodiscard]] const gl::Texture& table() const { return table_; }
