@@ -9,4 +9,9 @@
 #define GAUSSIAN_TILE_ALONG 64
 #define GAUSSIAN_TILE_ACROSS 8
 
+// The parallel summed-area table (shaders/filter/sat_scan.comp): a
+// workgroup scans SAT_TILE_ACROSS lines, SAT_TILE_ALONG texels at a time.
+#define SAT_TILE_ALONG 32
+#define SAT_TILE_ACROSS 8
+
 #endif

@@ -11,6 +11,7 @@
 #include "app/option_style.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
+#include "filter/summed_area_table_pass.hpp"
 #include "gl/context.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "io/atomic_file.hpp"
@@ -19,6 +20,8 @@
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
+#include "shadow/representation.hpp"
+#include "shared/bindings.h"
 
 namespace penumbra {
 
@@ -223,6 +226,13 @@ int run_bench_command(BenchArgs& args) {
     std::printf("(timer queries miss compute work on this renderer: ratios use the wall clock)\n");
   }
   const Bandwidth bandwidth = device_bandwidth(args, context->renderer());
+  const bool parallel_sat = preferred_sat_scan(context->renderer()) == SatScan::Parallel;
+  if (std::any_of(plan.begin(), plan.end(),
+                  [](const ShadowSettings& s) { return filter_define(s) == FILTER_SAT; })) {
+    std::printf("summed-area tables: %s\n", parallel_sat
+                                                ? "parallel scans (tiles and carries)"
+                                                : "one thread per line (a CPU rasterizer)");
+  }
   Renderer renderer(scene);
   std::vector<PassTimes> runs;
   for (const ShadowSettings& settings : plan) {
@@ -247,6 +257,7 @@ int run_bench_command(BenchArgs& args) {
     j["bandwidth_gb_per_second"] = bandwidth.gb_per_second > 0.0
                                        ? nlohmann::json(bandwidth.gb_per_second)
                                        : nlohmann::json(nullptr);
+    j["sat_scan"] = parallel_sat ? "parallel" : "serial";
     j["bandwidth_source"] =
         bandwidth.source.empty() ? nlohmann::json(nullptr) : nlohmann::json(bandwidth.source);
     j["runs"] = nlohmann::json::array();

@@ -4,6 +4,7 @@
 
 #include "filter/gaussian_blur_pass.hpp"
 #include "filter/summed_area_table_pass.hpp"
+#include "gl/context.hpp"
 #include "shadow/moment_resolve_pass.hpp"
 #include "shadow/representation.hpp"
 #include "shadow/shadow_map_pass.hpp"
@@ -92,10 +93,7 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
 }
 
 bool is_software_renderer(std::string_view renderer) {
-  for (const char* software : {"llvmpipe", "softpipe", "SwiftShader"}) {
-    if (renderer.find(software) != std::string_view::npos) return true;
-  }
-  return false;
+  return gl::is_cpu_rasterizer(renderer);
 }
 
 bool timers_miss_compute(const std::string& renderer) {

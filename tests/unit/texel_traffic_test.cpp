@@ -118,5 +118,13 @@ TEST(DeviceBandwidth, KnownNvidiaParts) {
   EXPECT_FALSE(known_device_bandwidth("AMD Radeon Pro W7900 (radeonsi, navi31, LLVM 15.0.6)"));
 }
 
+// The summed-area table scans in parallel on a GPU, one thread per line on
+// a CPU rasterizer (where barriers are dear).
+TEST(SatScan, ParallelOnAGpuSerialOnTheCpu) {
+  EXPECT_EQ(preferred_sat_scan("NVIDIA H100 80GB HBM3/PCIe/SSE2"), SatScan::Parallel);
+  EXPECT_EQ(preferred_sat_scan("AMD Radeon RX 7900 XTX (radeonsi, navi31)"), SatScan::Parallel);
+  EXPECT_EQ(preferred_sat_scan("llvmpipe (LLVM 15.0.6, 256 bits)"), SatScan::Serial);
+}
+
 }  // namespace
 }  // namespace penumbra
