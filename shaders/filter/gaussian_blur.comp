@@ -28,7 +28,16 @@ layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer Weights {
 };
 
 #define APRON (TILE_ALONG + 2 * RADIUS)
-shared vec4 tile[TILE_ACROSS][APRON];
+// Each of the TILE_ACROSS lines of the tile is stored APRON | 1 entries
+// apart: an odd stride. The vertical pass's neighbouring threads (adjacent
+// in x) sit on different lines at the same position along them; with an
+// even stride such as APRON = 64 + 2 RADIUS for RADIUS a multiple of 4 the
+// 8 threads that share a 16-byte load cycle would hit the same banks
+// (an 8-way conflict on NVIDIA's 32 banks of 4 bytes); with an odd one
+// they hit 8 different ones. The horizontal pass's neighbours read along
+// one line, which an odd stride does not change.
+#define LINE_STRIDE (APRON | 1)
+shared vec4 tile[TILE_ACROSS][LINE_STRIDE];
 
 void main() {
   const ivec2 size = textureSize(source, 0).xy;
