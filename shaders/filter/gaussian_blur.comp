@@ -9,9 +9,10 @@
 // mixed in. Each layer of the array (one shadow view) is filtered on its
 // own: workgroup z is the layer, so no view bleeds into another.
 #include "../shared/bindings.h"
+#include "../shared/filter_tiles.h"
 
-#define TILE_ALONG 64
-#define TILE_ACROSS 8
+#define TILE_ALONG GAUSSIAN_TILE_ALONG
+#define TILE_ACROSS GAUSSIAN_TILE_ACROSS
 
 #if AXIS == 0
 layout(local_size_x = TILE_ALONG, local_size_y = TILE_ACROSS) in;
@@ -27,7 +28,16 @@ layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer Weights {
 };
 
 #define APRON (TILE_ALONG + 2 * RADIUS)
-shared vec4 tile[TILE_ACROSS][APRON];
+// Each of the TILE_ACROSS lines of the tile is stored APRON | 1 entries
+// apart: an odd stride. The vertical pass's neighbouring threads (adjacent
+// in x) sit on different lines at the same position along them; with an
+// even stride such as APRON = 64 + 2 RADIUS for RADIUS a multiple of 4 the
+// 8 threads that share a 16-byte load cycle would hit the same banks
+// (an 8-way conflict on NVIDIA's 32 banks of 4 bytes); with an odd one
+// they hit 8 different ones. The horizontal pass's neighbours read along
+// one line, which an odd stride does not change.
+#define LINE_STRIDE (APRON | 1)
+shared vec4 tile[TILE_ACROSS][LINE_STRIDE];
 
 void main() {
   const ivec2 size = textureSize(source, 0).xy;

@@ -11,14 +11,17 @@
 #include "app/option_style.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
+#include "filter/summed_area_table_pass.hpp"
 #include "gl/context.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
+#include "render/device_bandwidth.hpp"
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
 #include "shadow/representation.hpp"
+#include "shared/bindings.h"
 
 namespace penumbra {
 
@@ -65,6 +68,45 @@ std::string describe(const ShadowSettings& s) {
   return out.str();
 }
 
+// The device's memory bandwidth, where known: the floor of a pass is its
+// bytes at that rate.
+struct Bandwidth {
+  double gb_per_second = 0.0;  // 0: unknown
+  std::string source;          // where the figure comes from
+};
+
+Bandwidth device_bandwidth(const BenchArgs& args, const std::string& renderer) {
+  if (args.bandwidth > 0.0f) return {args.bandwidth, "--bandwidth"};
+  if (const std::optional<DeviceBandwidth> known = known_device_bandwidth(renderer)) {
+    return {known->gb_per_second, "NVIDIA " + std::string(known->part) + " data sheet"};
+  }
+  return {};
+}
+
+// Each pass over the shadow maps: its bytes per texel, the bandwidth it
+// achieved, and its floor at the device's bandwidth.
+void print_traffic(const PassTimes& run, bool timer, const Bandwidth& bandwidth) {
+  std::printf("  bytes per shadow-map texel (%.2f M texels a frame)", run.texels * 1e-6);
+  if (bandwidth.gb_per_second > 0.0) {
+    std::printf("; floor at %.0f GB/s (%s)", bandwidth.gb_per_second, bandwidth.source.c_str());
+  }
+  std::printf(":\n  %-18s %7s %8s %7s %10s", "pass", "read", "written", "total", "GB/s");
+  if (bandwidth.gb_per_second > 0.0) std::printf(" %10s %8s", "floor ms", "x floor");
+  std::printf("\n");
+  for (std::size_t p = 0; p < kPassCount; ++p) {
+    if (!run.ran[p] || !run.traffic[p]) continue;
+    const TexelTraffic& t = *run.traffic[p];
+    const std::string_view name = gl::kGpuPassNames[p];
+    std::printf("  %-18.*s %7.2f %8.2f %7.2f %10.2f", static_cast<int>(name.size()), name.data(),
+                t.read, t.written, t.total(), achieved_gb_per_second(run, p, timer));
+    if (bandwidth.gb_per_second > 0.0) {
+      const double floor_ms = t.total() * run.texels / (bandwidth.gb_per_second * 1e6);
+      std::printf(" %10.4f %8.2f", floor_ms, median_ms(run.passes[p], timer) / floor_ms);
+    }
+    std::printf("\n");
+  }
+}
+
 void print_run(const PassTimes& run, int frames, bool timer) {
   std::printf("\n%s (%d frames; ms: median [min, max])\n", describe(run.shadow).c_str(), frames);
   std::printf("  %-18s %27s %27s\n", "pass", "GPU timer queries", "wall clock, serialized");
@@ -84,7 +126,7 @@ void print_run(const PassTimes& run, int frames, bool timer) {
   }
 }
 
-nlohmann::json run_json(const PassTimes& run, int frames, bool timer) {
+nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Bandwidth& bandwidth) {
   nlohmann::json j;
   const ShadowSettings& s = run.shadow;
   j["technique"] = std::string(enum_name<Technique>(kTechniqueNames, s.technique));
@@ -113,6 +155,23 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer) {
   j["times_the_copy"] = nlohmann::json::object();
   for (const auto& [name, ratio] : ratios.values) j["times_the_copy"][name] = ratio;
   j["ratio_clock"] = ratios.clock;
+  // Bytes per texel of the passes over the shadow maps, the bandwidth
+  // each achieved (on the ratios' clock), and its floor at the device's.
+  j["texels"] = run.texels;
+  j["bytes_per_texel"] = nlohmann::json::object();
+  j["gb_per_second"] = nlohmann::json::object();
+  j["floor_ms"] = nlohmann::json::object();
+  for (std::size_t p = 0; p < kPassCount; ++p) {
+    if (!run.ran[p] || !run.traffic[p]) continue;
+    const TexelTraffic& t = *run.traffic[p];
+    const std::string name(gl::kGpuPassNames[p]);
+    j["bytes_per_texel"][name] = {{"read", t.read}, {"written", t.written}, {"total", t.total()}};
+    j["gb_per_second"][name] = achieved_gb_per_second(run, p, timer);
+    j["floor_ms"][name] =
+        bandwidth.gb_per_second > 0.0
+            ? nlohmann::json(t.total() * run.texels / (bandwidth.gb_per_second * 1e6))
+            : nlohmann::json(nullptr);
+  }
   return j;
 }
 
@@ -129,6 +188,10 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
              "measure each technique at several values: map-size (512, 1024, 2048, 4096), blur "
              "(W = 0, 1, 2, 4, 8, 16, 32) or fused (--fused, then --no-fused)",
              {"none", "map-size", "blur", "fused"}, OptionGroup::Measurement);
+  add_number(command, "bandwidth", args.bandwidth,
+             "the GPU's memory bandwidth in GB/s, for each pass's floor (0: from a table of NVIDIA "
+             "GPUs; none for others)",
+             1.0f, 1e6f, OptionGroup::Measurement);
   in_group(command.add_option("--json", args.json, "also write the numbers to this JSON file")
                ->type_name("FILE"),
            OptionGroup::Output);
@@ -171,6 +234,14 @@ int run_bench_command(BenchArgs& args) {
   if (!timer_clock) {
     std::printf("(timer queries miss compute work on this renderer: ratios use the wall clock)\n");
   }
+  const Bandwidth bandwidth = device_bandwidth(args, context->renderer());
+  const bool parallel_sat = preferred_sat_scan(context->renderer()) == SatScan::Parallel;
+  if (std::any_of(plan.begin(), plan.end(),
+                  [](const ShadowSettings& s) { return filter_define(s) == FILTER_SAT; })) {
+    std::printf("summed-area tables: %s\n", parallel_sat
+                                                ? "parallel scans (tiles and carries)"
+                                                : "one thread per line (a CPU rasterizer)");
+  }
   Renderer renderer(scene);
   std::vector<PassTimes> runs;
   for (const ShadowSettings& settings : plan) {
@@ -180,6 +251,7 @@ int run_bench_command(BenchArgs& args) {
                          " error(s); last: " + context->last_error());
     }
     print_run(run, args.frames, timer_clock);
+    print_traffic(run, timer_clock, bandwidth);
     runs.push_back(std::move(run));
   }
 
@@ -191,8 +263,15 @@ int run_bench_command(BenchArgs& args) {
     j["scene"] = scene.name;
     j["width"] = args.render.width;
     j["height"] = args.render.height;
+    j["bandwidth_gb_per_second"] = bandwidth.gb_per_second > 0.0
+                                       ? nlohmann::json(bandwidth.gb_per_second)
+                                       : nlohmann::json(nullptr);
+    j["sat_scan"] = parallel_sat ? "parallel" : "serial";
+    j["bandwidth_source"] =
+        bandwidth.source.empty() ? nlohmann::json(nullptr) : nlohmann::json(bandwidth.source);
     j["runs"] = nlohmann::json::array();
-    for (const PassTimes& run : runs) j["runs"].push_back(run_json(run, args.frames, timer_clock));
+    for (const PassTimes& run : runs)
+      j["runs"].push_back(run_json(run, args.frames, timer_clock, bandwidth));
     write_file_atomically(args.json, j.dump(2) + "\n");
   }
   return 0;

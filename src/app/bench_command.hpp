@@ -17,6 +17,7 @@ struct BenchArgs {
   std::string sweep = "none";      // none, map-size or blur
   int frames = 20;
   int warmup = 3;
+  float bandwidth = 0.0f;  // --bandwidth, GB/s (0: from the table of known GPUs)
   std::string json;
   RenderSettings render;
   ShadowSettings shadow;

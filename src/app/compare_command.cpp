@@ -310,6 +310,12 @@ std::string light_type_name(LightType type) {
   return std::string(enum_name<LightType>(kLightTypeNames, type));
 }
 
+// Shadow rays traced per second of `seconds` (0 if it took no measurable
+// time).
+double rays_per_second(const TracedReference& reference, double seconds) {
+  return seconds > 0.0 ? static_cast<double>(reference.rays_traced) / seconds : 0.0;
+}
+
 void print_report(const CompareArgs& args, const Scene& scene, const TracedReference& reference,
                   const std::vector<Item>& items) {
   const int light_index = args.render.light_index;
@@ -330,8 +336,12 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
   } else {
     std::printf("traced reference: point light, 1 ray per pixel");
   }
-  std::printf(", %s; %ld pixels compared (geometry the light reaches)\n\n",
-              reference.cached ? "cached" : (fixed(reference.seconds, 1) + " s").c_str(),
+  const std::string how =
+      reference.cached
+          ? "cached"
+          : fixed(reference.seconds, 1) + " s, " +
+                fixed(rays_per_second(reference, reference.trace_seconds) * 1e-6, 1) + " M rays/s";
+  std::printf(", %s; %ld pixels compared (geometry the light reaches)\n\n", how.c_str(),
               reference.pixels);
   std::vector<Row> rows = {
       {{"technique", "filter", "W", "reference", "MAE", "RMSE", "max", "leak", "over-dark"}}};
@@ -391,6 +401,14 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
         {"pixels", reference.pixels},
         {"cached", reference.cached},
         {"seconds", reference.seconds},
+        // The tracer's speed (null when the reference came from the cache).
+        {"rays_traced", reference.cached ? json(nullptr) : json(reference.rays_traced)},
+        {"rays_per_second", reference.cached
+                                ? json(nullptr)
+                                : json(rays_per_second(reference, reference.trace_seconds))},
+        {"rays_per_cpu_second",
+         reference.cached ? json(nullptr)
+                          : json(rays_per_second(reference, reference.trace_cpu_seconds))},
         {"image", args.output_dir.empty()
                       ? json(nullptr)
                       : json((fs::path(args.output_dir) / "reference-traced.png").string())}}},

@@ -47,6 +47,15 @@ int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes) {
   return 0;
 }
 
+TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width, int height,
+                                            int shared_bytes) {
+  const int rows = tile_rows(radius, channels_of(format), shared_bytes);
+  if (rows == 0 || width <= 0 || height <= 0) return {};
+  const double tiles = static_cast<double>(groups(width, kTileX)) * groups(height, rows);
+  const double texels_read = tiles * (kTileX + 2.0 * radius) * (rows + 2.0 * radius);
+  return {4.0 * texels_read / (static_cast<double>(width) * height), 1.0 * bytes_per_texel(format)};
+}
+
 void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
   const int radius = settings.blur;
   if (radius < 1 || radius > kMaxFusedBlur) {

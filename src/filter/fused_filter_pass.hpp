@@ -13,6 +13,7 @@
 #include "core/settings.hpp"
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
+#include "shadow/texel_traffic.hpp"
 
 namespace penumbra {
 
@@ -33,6 +34,12 @@ class FusedFilterPass {
   // tallest of 32, 16 and 8 whose shared memory fits `shared_bytes`; 0 if
   // none does.
   static int tile_rows(int radius, int channels, int shared_bytes);
+
+  // Bytes per texel of a width x height map: each 32 x tile_rows() tile
+  // reads the depth (R32F) under it and its apron of `radius` on every
+  // side, and writes the representation (`format`) once.
+  static TexelTraffic texel_traffic(GLenum format, int radius, int width, int height,
+                                    int shared_bytes);
 
  private:
   std::map<std::tuple<Technique, bool, int, int>, gl::Program> programs_;

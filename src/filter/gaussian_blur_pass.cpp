@@ -6,13 +6,11 @@
 #include "filter/gaussian.hpp"
 #include "shadow/representation.hpp"
 #include "shared/bindings.h"
+#include "shared/filter_tiles.h"
 
 namespace penumbra {
 
 namespace {
-
-constexpr int kTileAlong = 64;  // TILE_ALONG and TILE_ACROSS of gaussian_blur.comp
-constexpr int kTileAcross = 8;
 
 GLuint groups(int size, int tile) {
   return static_cast<GLuint>((size + tile - 1) / tile);
@@ -49,11 +47,24 @@ void GaussianBlurPass::dispatch(const gl::Program& program, const gl::Texture& f
   glBindImageTexture(IMAGE_OUTPUT, to.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, to.format());
   const auto layers = static_cast<GLuint>(from.layers());
   if (axis == 0) {
-    glDispatchCompute(groups(from.width(), kTileAlong), groups(from.height(), kTileAcross), layers);
+    glDispatchCompute(groups(from.width(), GAUSSIAN_TILE_ALONG),
+                      groups(from.height(), GAUSSIAN_TILE_ACROSS), layers);
   } else {
-    glDispatchCompute(groups(from.width(), kTileAcross), groups(from.height(), kTileAlong), layers);
+    glDispatchCompute(groups(from.width(), GAUSSIAN_TILE_ACROSS),
+                      groups(from.height(), GAUSSIAN_TILE_ALONG), layers);
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+TexelTraffic GaussianBlurPass::texel_traffic(GLenum format, int radius, int axis, int width,
+                                             int height) {
+  const double along = axis == 0 ? width : height, across = axis == 0 ? height : width;
+  const double tiles_along = groups(static_cast<int>(along), GAUSSIAN_TILE_ALONG);
+  const double tiles_across = groups(static_cast<int>(across), GAUSSIAN_TILE_ACROSS);
+  const double texels_read =
+      tiles_along * (GAUSSIAN_TILE_ALONG + 2.0 * radius) * tiles_across * GAUSSIAN_TILE_ACROSS;
+  const double bytes = bytes_per_texel(format);
+  return {bytes * texels_read / (along * across), bytes};
 }
 
 void GaussianBlurPass::execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler) {

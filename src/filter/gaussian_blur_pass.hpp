@@ -9,6 +9,7 @@
 #include "gl/gpu_profiler.hpp"
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
+#include "shadow/texel_traffic.hpp"
 
 namespace penumbra {
 
@@ -22,6 +23,14 @@ class GaussianBlurPass {
 
   // Valid after execute().
   [[nodiscard]] const gl::Texture& output() const { return output_; }
+
+  // Per texel of a width x height map of `format`, one direction (axis 0:
+  // along x): each workgroup reads its tile (shared/filter_tiles.h; the
+  // tiles that overhang the map read clamped border texels) with `radius`
+  // texels of apron on either side along the axis, and writes the tile's
+  // texels inside the map: about 1 + 2 radius / GAUSSIAN_TILE_ALONG reads
+  // and one write.
+  static TexelTraffic texel_traffic(GLenum format, int radius, int axis, int width, int height);
 
  private:
   const gl::Program& program(GLenum format, int axis, int radius);

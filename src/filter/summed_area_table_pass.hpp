@@ -1,13 +1,20 @@
 #pragma once
 // Summed-area table of a light's map, in 32-bit fixed point with
 // wrap-around sums (shaders/filter/sat*.glsl): rows, then columns. Works on
-// 2D array textures, one table per layer (shadow view).
+// 2D array textures, one table per layer (shadow view). The scans run in
+// parallel along each line (sat_scan.comp); the one-thread-per-line scans
+// they replace (sat_rows.comp, sat_columns.comp) stay as the reference
+// they equal bit for bit.
 #include <map>
+#include <string>
+#include <string_view>
+#include <tuple>
 
 #include "core/settings.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
+#include "shadow/texel_traffic.hpp"
 
 namespace penumbra {
 
@@ -20,10 +27,34 @@ inline constexpr double kSatMaxBoxArea = double(2 * kMaxBlur + 2) * double(2 * k
 // 64 that is 2^17: each value is stored to within 2^-18 (3.8e-6).
 double sat_fixed_point_scale();
 
+// How the prefix sums run: a workgroup per few lines scanning tiles in
+// parallel, or one thread per line.
+enum class SatScan { Parallel, Serial };
+
+// The scan for a GL_RENDERER: parallel on a GPU, where one thread per line
+// occupies a few percent of it (8,192 threads for four 2048^2 layers);
+// serial on a CPU rasterizer (llvmpipe, softpipe, SwiftShader), where
+// those threads already keep every core busy and each workgroup barrier
+// of the parallel scan costs a switch of every invocation (there the
+// parallel scan measures 4-6 times slower).
+SatScan preferred_sat_scan(std::string_view renderer);
+
 class SummedAreaTablePass {
  public:
+  // The scan preferred_sat_scan picks for the current context's renderer.
+  SummedAreaTablePass();
+  explicit SummedAreaTablePass(SatScan scan) : scan_(scan) {}
+
+  [[nodiscard]] SatScan scan() const { return scan_; }
+
   // Builds the table of every layer of the 2D array `source` (values in [0, 1]).
   void execute(const gl::Texture& source, gl::GpuProfiler* profiler = nullptr);
+
+  // Per texel of a `source_format` map: the row scan reads the source and
+  // writes the table (the integer format with the source's channels); the
+  // column scan reads and writes the table.
+  static TexelTraffic row_traffic(GLenum source_format);
+  static TexelTraffic column_traffic(GLenum source_format);
 
   // Valid after execute(): an unsigned-integer 2D array.
   [[nodiscard]] const gl::Texture& table() const { return table_; }
@@ -33,9 +64,13 @@ class SummedAreaTablePass {
   const gl::Texture& box_filtered(int radius);
 
  private:
-  const gl::Program& program(const char* path, GLenum format);
+  // axis: the AXIS define, or -1 for none.
+  const gl::Program& program(const char* path, GLenum format, int axis = -1);
+  void scan_serial(const gl::Texture& source, GLenum format, gl::GpuProfiler* profiler);
+  void scan_parallel(const gl::Texture& source, GLenum format, gl::GpuProfiler* profiler);
 
-  std::map<std::pair<std::string, GLenum>, gl::Program> programs_;
+  SatScan scan_;
+  std::map<std::tuple<std::string, GLenum, int>, gl::Program> programs_;
   gl::Texture table_;
   gl::Texture box_filtered_;
 };

@@ -5,8 +5,20 @@
 
 namespace penumbra {
 
+namespace {
+// Depth maps are copied into R32F, the same bytes per texel.
+GLenum copy_format(GLenum source_format) {
+  return source_format == GL_DEPTH_COMPONENT32F ? GL_R32F : source_format;
+}
+}  // namespace
+
+TexelTraffic TextureCopyPass::texel_traffic(GLenum source_format) {
+  return {static_cast<double>(bytes_per_texel(source_format)),
+          static_cast<double>(bytes_per_texel(copy_format(source_format)))};
+}
+
 void TextureCopyPass::execute(const gl::Texture& source) {
-  const GLenum format = source.format() == GL_DEPTH_COMPONENT32F ? GL_R32F : source.format();
+  const GLenum format = copy_format(source.format());
   auto it = programs_.find(format);
   if (it == programs_.end()) {
     it = programs_

@@ -7,12 +7,15 @@
 
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
+#include "shadow/texel_traffic.hpp"
 
 namespace penumbra {
 
 class TextureCopyPass {
  public:
   void execute(const gl::Texture& source);
+  // Per texel: one read of the source, one write of the copy.
+  static TexelTraffic texel_traffic(GLenum source_format);
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
  private:

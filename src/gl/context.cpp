@@ -82,6 +82,13 @@ std::string try_display(EGLDisplay display, bool debug, Attempt& out) {
 
 }  // namespace
 
+bool is_cpu_rasterizer(std::string_view renderer) {
+  for (const char* software : {"llvmpipe", "softpipe", "SwiftShader"}) {
+    if (renderer.find(software) != std::string_view::npos) return true;
+  }
+  return false;
+}
+
 std::unique_ptr<Context> Context::create_headless(const ContextOptions& options) {
   // Mesa's libEGL prints warnings of its own (a device it cannot open, a
   // driver it cannot load) before a platform that works is found: only on

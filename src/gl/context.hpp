@@ -7,10 +7,15 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "gl/debug_output.hpp"
 
 namespace penumbra::gl {
+
+// Whether a GL_RENDERER string names a rasterizer that runs on the CPU
+// (Mesa's llvmpipe and softpipe, SwiftShader).
+bool is_cpu_rasterizer(std::string_view renderer);
 
 struct ContextOptions {
   // Routes KHR_debug messages to the log; errors are always counted.

@@ -55,23 +55,68 @@ float randfloat(std::uint32_t i, std::uint32_t p) {
   return static_cast<float>(static_cast<double>(i) / 4294967808.0);
 }
 
-}  // namespace
+// The pattern-dependent seeds of Kensler's Listing 6.
+struct CmjSeeds {
+  std::uint32_t order, column, row, jitter_x, jitter_y;
+  explicit CmjSeeds(std::uint32_t pattern)
+      : order(pattern * 0x51633e2du),
+        column(pattern * 0x68bc21ebu),
+        row(pattern * 0x02e5be93u),
+        jitter_x(pattern * 0x967a889bu),
+        jitter_y(pattern * 0x368cc8b7u) {}
+};
 
-glm::vec2 cmj_sample(std::uint32_t s, std::uint32_t n, std::uint32_t pattern) {
-  // Kensler 2013, Listing 6: any n, aspect ratio 1.
-  const auto m = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(n)));
-  const std::uint32_t rows = (n + m - 1) / m;
-  s = permute(s, n, pattern * 0x51633e2du);
-  const std::uint32_t sx = permute(s % m, m, pattern * 0x68bc21ebu);
-  const std::uint32_t sy = permute(s / m, rows, pattern * 0x02e5be93u);
-  const float jx = randfloat(s, pattern * 0x967a889bu);
-  const float jy = randfloat(s, pattern * 0x368cc8b7u);
+// The grid of n points: m columns (floor(sqrt(n))) and ceil(n / m) rows.
+std::uint32_t cmj_columns(std::uint32_t n) {
+  return static_cast<std::uint32_t>(std::sqrt(static_cast<double>(n)));
+}
+
+// Point s (in stratum order) whose column and row strata were permuted to
+// sx and sy; one expression for cmj_sample and CmjPointSet, so the two
+// round alike.
+glm::vec2 cmj_point(std::uint32_t s, std::uint32_t sx, std::uint32_t sy, std::uint32_t n,
+                    std::uint32_t m, std::uint32_t rows, const CmjSeeds& seeds) {
+  const float jx = randfloat(s, seeds.jitter_x);
+  const float jy = randfloat(s, seeds.jitter_y);
   const float x =
       (static_cast<float>(sx) + (static_cast<float>(sy) + jx) / static_cast<float>(rows)) /
       static_cast<float>(m);
   const float y = (static_cast<float>(s) + jy) / static_cast<float>(n);
   // Float rounding can reach 1 exactly; the square is half-open.
   return glm::min(glm::vec2(x, y), glm::vec2(1.0f - 0x1p-24f));
+}
+
+}  // namespace
+
+glm::vec2 cmj_sample(std::uint32_t s, std::uint32_t n, std::uint32_t pattern) {
+  // Kensler 2013, Listing 6: any n, aspect ratio 1.
+  const std::uint32_t m = cmj_columns(n);
+  const std::uint32_t rows = (n + m - 1) / m;
+  const CmjSeeds seeds(pattern);
+  s = permute(s, n, seeds.order);
+  const std::uint32_t sx = permute(s % m, m, seeds.column);
+  const std::uint32_t sy = permute(s / m, rows, seeds.row);
+  return cmj_point(s, sx, sy, n, m, rows, seeds);
+}
+
+void CmjPointSet::generate(std::uint32_t n, std::uint32_t pattern) {
+  const std::uint32_t m = cmj_columns(n);
+  const std::uint32_t rows = (n + m - 1) / m;
+  const CmjSeeds seeds(pattern);
+  column_.resize(m);
+  row_.resize(rows);
+  for (std::uint32_t i = 0; i < m; ++i) column_[i] = permute(i, m, seeds.column);
+  for (std::uint32_t i = 0; i < rows; ++i) row_[i] = permute(i, rows, seeds.row);
+  points_.resize(n);
+  // cmj_sample's s runs over every stratum 0 .. n-1 once whatever the
+  // first permutation does; here it runs in order, so s / m and s % m
+  // step through the rows and columns.
+  std::uint32_t s = 0;
+  for (std::uint32_t r = 0; r < rows && s < n; ++r) {
+    for (std::uint32_t c = 0; c < m && s < n; ++c, ++s) {
+      points_[s] = cmj_point(s, column_[c], row_[r], n, m, rows, seeds);
+    }
+  }
 }
 
 glm::vec2 concentric_disk(glm::vec2 u) {
@@ -90,7 +135,10 @@ glm::vec2 concentric_disk(glm::vec2 u) {
 }
 
 glm::vec3 uniform_cone(glm::vec2 u, float one_minus_cos_max) {
-  const glm::vec2 d = concentric_disk(u);
+  return uniform_cone_from_disk(concentric_disk(u), one_minus_cos_max);
+}
+
+glm::vec3 uniform_cone_from_disk(glm::vec2 d, float one_minus_cos_max) {
   const float r2 = glm::dot(d, d);
   if (r2 == 0.0f) return glm::vec3(0.0f, 0.0f, 1.0f);
   // 1 - cos(theta) and sin(theta) from it without cancellation:

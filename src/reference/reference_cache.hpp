@@ -19,8 +19,9 @@ namespace penumbra {
 
 // Bumped whenever the tracer's output for the same inputs changes (2: the
 // radiometric shadow factor and ray origins offset by the position's error
-// bound).
-inline constexpr std::uint32_t kReferenceFormatVersion = 2;
+// bound; 3: source points from precomputed sets, other noise of the same
+// size).
+inline constexpr std::uint32_t kReferenceFormatVersion = 3;
 
 std::uint64_t reference_key(const TriangleMesh& mesh, const SurfacePoints& surfaces,
                             const ReferenceLight& light, int samples);

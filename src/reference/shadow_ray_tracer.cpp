@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -13,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "reference/light_sampling.hpp"
+#include "reference/source_point_sets.hpp"
 
 namespace penumbra {
 
@@ -26,18 +28,6 @@ void on_embree_error(void* /*user*/, RTCError /*code*/, const char* /*message*/)
 std::string embree_error(RTCDevice device, const std::string& what) {
   const RTCError code = rtcGetDeviceError(device);
   return "Embree: " + what + " failed (error " + std::to_string(static_cast<int>(code)) + ")";
-}
-
-// An unbiased, well-mixed 32-bit hash of the pixel index, so neighbouring
-// pixels use unrelated sample patterns (noise rather than structured
-// aliasing). The "lowbias32" finalizer (C. Wellons, hash-prospector).
-std::uint32_t hash_pixel(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
 }
 
 // A unit-sphere frame around w (unit): two axes perpendicular to it.
@@ -54,58 +44,130 @@ constexpr float gamma(int n) {
   return static_cast<float>(n) * epsilon / (1.0f - static_cast<float>(n) * epsilon);
 }
 
-// 1 - cos(theta) of a cone of half-angle theta, without cancellation.
-float one_minus_cos(float theta) {
-  const float s = std::sin(0.5f * theta);
-  return 2.0f * s * s;
-}
+// Shadow rays traced 16 at a time with Embree's rtcOccluded16 (one call
+// per packet instead of per ray; Embree traverses the packet's rays
+// together, and a pixel's rays to one light share their origin and nearly
+// their direction). Each ray remembers the pixel it serves and the weight
+// of its source point; one that reaches the light adds the weight to that
+// pixel's lit sum, in the order the rays were added. An occlusion filter
+// attached to a geometry sees these packets (N up to 16).
+class OcclusionPackets {
+ public:
+  static constexpr int kWidth = 16;
 
-bool occluded(RTCScene scene, const glm::vec3& origin, const glm::vec3& direction, float tfar) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay ray{};
-  ray.org_x = origin.x;
-  ray.org_y = origin.y;
-  ray.org_z = origin.z;
-  ray.tnear = 0.0f;
-  ray.dir_x = direction.x;
-  ray.dir_y = direction.y;
-  ray.dir_z = direction.z;
-  ray.time = 0.0f;
-  ray.tfar = tfar;
-  ray.mask = 0xffffffffu;
-  ray.flags = 0;
-  rtcOccluded1(scene, &context, &ray);
-  // rtcOccluded1 sets tfar to -inf when it finds a hit.
-  return ray.tfar < 0.0f;
-}
+  // `lit`: the pixels' lit sums, indexed as add() is given them.
+  OcclusionPackets(RTCScene scene, double* lit) : scene_(scene), lit_(lit) {}
 
-// The geometric normal of the triangle under p (which lies within
-// `reach` of it along n), facing n's side; n itself if no triangle is
-// there (a point not on the mesh).
-glm::vec3 facet_normal(RTCScene scene, const glm::vec3& p, const glm::vec3& n, float reach) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit hit{};
-  const glm::vec3 origin = p + reach * n;
-  hit.ray.org_x = origin.x;
-  hit.ray.org_y = origin.y;
-  hit.ray.org_z = origin.z;
-  hit.ray.dir_x = -n.x;
-  hit.ray.dir_y = -n.y;
-  hit.ray.dir_z = -n.z;
-  hit.ray.tnear = 0.0f;
-  hit.ray.tfar = 2.0f * reach;
-  hit.ray.mask = 0xffffffffu;
-  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &context, &hit);
-  if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return n;
-  glm::vec3 ng(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z);
-  const float length = glm::length(ng);
-  if (!(length > 0.0f)) return n;
-  ng /= length;
-  return glm::dot(ng, n) < 0.0f ? -ng : ng;
-}
+  void add(const glm::vec3& origin, const glm::vec3& direction, float tfar, int pixel,
+           float weight) {
+    const int lane = size_;
+    rays_.org_x[lane] = origin.x;
+    rays_.org_y[lane] = origin.y;
+    rays_.org_z[lane] = origin.z;
+    rays_.tnear[lane] = 0.0f;
+    rays_.dir_x[lane] = direction.x;
+    rays_.dir_y[lane] = direction.y;
+    rays_.dir_z[lane] = direction.z;
+    rays_.time[lane] = 0.0f;
+    rays_.tfar[lane] = tfar;
+    rays_.mask[lane] = 0xffffffffu;
+    rays_.id[lane] = static_cast<unsigned>(lane);
+    rays_.flags[lane] = 0;
+    pixel_[lane] = pixel;
+    weight_[lane] = weight;
+    if (++size_ == kWidth) flush();
+  }
+
+  // Traces the rays added since the last flush.
+  void flush() {
+    if (size_ == 0) return;
+    for (int lane = 0; lane < kWidth; ++lane) valid_[lane] = lane < size_ ? -1 : 0;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcOccluded16(valid_, scene_, &context, &rays_);
+    // rtcOccluded16 sets tfar to -inf where it finds a hit.
+    for (int lane = 0; lane < size_; ++lane) {
+      if (rays_.tfar[lane] >= 0.0f) lit_[pixel_[lane]] += weight_[lane];
+    }
+    traced_ += size_;
+    size_ = 0;
+  }
+
+  [[nodiscard]] std::int64_t traced() const { return traced_; }
+
+ private:
+  RTCScene scene_;
+  double* lit_;
+  RTCRay16 rays_;
+  alignas(64) int valid_[kWidth] = {};
+  int pixel_[kWidth] = {};
+  float weight_[kWidth] = {};
+  int size_ = 0;
+  std::int64_t traced_ = 0;
+};
+
+// The geometric normals of the triangles under receivers, 16 at a time
+// (rtcIntersect16): for a point p within `reach` of its triangle along n,
+// the triangle's normal facing n's side; n itself if no triangle is there
+// (a point not on the mesh).
+class FacetPackets {
+ public:
+  static constexpr int kWidth = 16;
+
+  // `normals`: where the normals go, indexed as add() is given them.
+  FacetPackets(RTCScene scene, glm::vec3* normals) : scene_(scene), normals_(normals) {}
+
+  void add(const glm::vec3& p, const glm::vec3& n, float reach, int index) {
+    const int lane = size_;
+    const glm::vec3 origin = p + reach * n;
+    hits_.ray.org_x[lane] = origin.x;
+    hits_.ray.org_y[lane] = origin.y;
+    hits_.ray.org_z[lane] = origin.z;
+    hits_.ray.tnear[lane] = 0.0f;
+    hits_.ray.dir_x[lane] = -n.x;
+    hits_.ray.dir_y[lane] = -n.y;
+    hits_.ray.dir_z[lane] = -n.z;
+    hits_.ray.time[lane] = 0.0f;
+    hits_.ray.tfar[lane] = 2.0f * reach;
+    hits_.ray.mask[lane] = 0xffffffffu;
+    hits_.ray.id[lane] = static_cast<unsigned>(lane);
+    hits_.ray.flags[lane] = 0;
+    hits_.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    normal_[lane] = n;
+    index_[lane] = index;
+    if (++size_ == kWidth) flush();
+  }
+
+  void flush() {
+    if (size_ == 0) return;
+    for (int lane = 0; lane < kWidth; ++lane) valid_[lane] = lane < size_ ? -1 : 0;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect16(valid_, scene_, &context, &hits_);
+    for (int lane = 0; lane < size_; ++lane) {
+      const glm::vec3 n = normal_[lane];
+      glm::vec3 ng = n;
+      if (hits_.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
+        const glm::vec3 g(hits_.hit.Ng_x[lane], hits_.hit.Ng_y[lane], hits_.hit.Ng_z[lane]);
+        const float length = glm::length(g);
+        if (length > 0.0f) ng = glm::dot(g, n) < 0.0f ? -g / length : g / length;
+      }
+      normals_[index_[lane]] = ng;
+    }
+    size_ = 0;
+  }
+
+ private:
+  RTCScene scene_;
+  glm::vec3* normals_;
+  RTCRayHit16 hits_;
+  alignas(64) int valid_[kWidth] = {};
+  glm::vec3 normal_[kWidth];
+  int index_[kWidth] = {};
+  int size_ = 0;
+};
 
 }  // namespace
 
@@ -125,6 +187,45 @@ ReferenceLight make_reference_light(const Light& light, const LightView& view,
   return r;
 }
 
+namespace {
+
+// Above this many triangles the BVH is built at Embree's medium quality
+// (binned SAH without spatial splits): the high quality's spatial splits
+// make the build of a multi-million-triangle model take longer than the
+// rays it saves on a reference's few million rays.
+constexpr std::size_t kHighQualityBuildTriangles = std::size_t{1} << 20;
+
+// The mesh's triangles as one Embree geometry attached to `scene`: the one
+// place the tracer's geometry is set up (and where per-geometry state,
+// such as an occlusion filter, belongs). Returns false if Embree cannot
+// allocate its buffers.
+bool attach_triangles(RTCDevice device, RTCScene scene, const TriangleMesh& mesh) {
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  const std::size_t triangles = mesh.indices.size() / 3;
+  rtcSetGeometryBuildQuality(geometry, triangles > kHighQualityBuildTriangles
+                                           ? RTC_BUILD_QUALITY_MEDIUM
+                                           : RTC_BUILD_QUALITY_HIGH);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                               mesh.vertices.size()));
+  auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), triangles));
+  if (vertices == nullptr || indices == nullptr) {
+    rtcReleaseGeometry(geometry);
+    return false;
+  }
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    std::memcpy(vertices + 3 * i, &mesh.vertices[i].position, 3 * sizeof(float));
+  }
+  std::memcpy(indices, mesh.indices.data(), triangles * 3 * sizeof(std::uint32_t));
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+  return true;
+}
+
+}  // namespace
+
 ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh) {
   device_ = rtcNewDevice(nullptr);
   if (device_ == nullptr) throw RuntimeError(embree_error(nullptr, "creating a device"));
@@ -134,30 +235,13 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh) {
   // Robust traversal: no ray slips through the shared edge of two
   // triangles, so a closed mesh never leaks light.
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-  if (!mesh.indices.empty()) {
-    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                3 * sizeof(float), mesh.vertices.size()));
-    auto* indices = static_cast<std::uint32_t*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                3 * sizeof(std::uint32_t), mesh.indices.size() / 3));
-    if (vertices == nullptr || indices == nullptr) {
-      rtcReleaseGeometry(geometry);
-      const std::string message = embree_error(device_, "allocating the mesh");
-      rtcReleaseScene(scene_);
-      rtcReleaseDevice(device_);
-      throw RuntimeError(message);
-    }
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-      std::memcpy(vertices + 3 * i, &mesh.vertices[i].position, 3 * sizeof(float));
-    }
-    std::memcpy(indices, mesh.indices.data(),
-                (mesh.indices.size() / 3) * 3 * sizeof(std::uint32_t));
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene_, geometry);
-    rtcReleaseGeometry(geometry);
+  const bool large = mesh.indices.size() / 3 > kHighQualityBuildTriangles;
+  rtcSetSceneBuildQuality(scene_, large ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH);
+  if (!mesh.indices.empty() && !attach_triangles(device_, scene_, mesh)) {
+    const std::string message = embree_error(device_, "allocating the mesh");
+    rtcReleaseScene(scene_);
+    rtcReleaseDevice(device_);
+    throw RuntimeError(message);
   }
   rtcCommitScene(scene_);
   if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) {
@@ -181,151 +265,244 @@ ShadowRayTracer::~ShadowRayTracer() {
   rtcReleaseDevice(device_);
 }
 
+namespace {
+
+// The receiver as its shadow rays see it.
+struct Receiver {
+  glm::vec3 p;       // the surface point
+  glm::vec3 n;       // its shading normal
+  glm::vec3 ng;      // its triangle's normal, on n's side
+  glm::vec3 origin;  // where its rays start: p raised by its error bound
+  float offset;      // how far: the bound of p's error along n
+};
+
+// `value` where `keep`, else 0: a select written as a bit mask, which the
+// compiler vectorizes (it keeps a ?: between floats a branch, since a
+// float comparison may trap).
+float keep_if(bool keep, float value) {
+  return std::bit_cast<float>(std::bit_cast<std::uint32_t>(value) &
+                              (0u - static_cast<std::uint32_t>(keep)));
+}
+
+// One pixel's shadow rays, one per source point: from the receiver's
+// origin towards the point (the direction is not normalized: t = tfar
+// reaches the point; the sun's rays are unit and unbounded) and the
+// point's weight in the irradiance, 0 where it sends the receiver no
+// light with or without occluders: the part of the source below either
+// tangent plane (the shading normal's, or the triangle's), or the source's
+// back. Struct of arrays, written by branch-free loops the compiler
+// vectorizes (the arrays are passed as restrict parameters so that it
+// knows they do not overlap).
+struct PixelRays {
+  std::vector<float> x, y, z, tfar, weight;
+  explicit PixelRays(std::size_t n) : x(n), y(n), z(n), tfar(n), weight(n) {}
+};
+
+// A square facing `facing` (a spot light; its `direction`), or a point
+// (facing 0): each point of the source weighs cos(theta_source)
+// cos(theta_receiver) / d^2 dA; a point light's source has no side, so
+// cos(theta_source) = 1. The cosines are taken times d, so that a
+// square's weights need no square root.
+template <bool kOneSided>
+void square_rays(const float* __restrict sx, const float* __restrict sy, const float* __restrict sz,
+                 std::uint32_t count, const Receiver& r, glm::vec3 facing, float* __restrict x,
+                 float* __restrict y, float* __restrict z, float* __restrict tfar,
+                 float* __restrict weight) {
+  const glm::vec3 n = r.n, ng = r.ng, p = r.p, o = r.origin, l = facing;
+  for (std::uint32_t s = 0; s < count; ++s) {
+    const float tx = sx[s] - p.x, ty = sy[s] - p.y, tz = sz[s] - p.z;
+    const float d2 = tx * tx + ty * ty + tz * tz;
+    const float receiver = n.x * tx + n.y * ty + n.z * tz;  // d cos(theta_receiver)
+    const float facet = ng.x * tx + ng.y * ty + ng.z * tz;
+    const float source = kOneSided ? -(l.x * tx + l.y * ty + l.z * tz) : std::sqrt(d2);
+    const float inv_d2 = 1.0f / d2;
+    // Bitwise, not short-circuit: no branch in the loop.
+    const bool lit = (receiver > 0.0f) & (facet > 0.0f) & (source > 0.0f);
+    weight[s] = keep_if(lit, (source * inv_d2) * (receiver * inv_d2));
+    // Aim from the raised origin at the same point of the source.
+    x[s] = sx[s] - o.x;
+    y[s] = sy[s] - o.y;
+    z[s] = sz[s] - o.z;
+    tfar[s] = 1.0f;
+  }
+}
+
+// The sun: its disc of directions, uniform in solid angle, each weighing
+// cos(theta_receiver) d(omega).
+void sun_rays(const float* __restrict sx, const float* __restrict sy, const float* __restrict sz,
+              std::uint32_t count, const Receiver& r, float* __restrict x, float* __restrict y,
+              float* __restrict z, float* __restrict tfar, float* __restrict weight) {
+  const glm::vec3 n = r.n, ng = r.ng;
+  const float infinity = std::numeric_limits<float>::infinity();
+  for (std::uint32_t s = 0; s < count; ++s) {
+    const float wx = sx[s], wy = sy[s], wz = sz[s];
+    const float receiver = n.x * wx + n.y * wy + n.z * wz;
+    const float facet = ng.x * wx + ng.y * wy + ng.z * wz;
+    weight[s] = keep_if((receiver > 0.0f) & (facet > 0.0f), receiver);
+    x[s] = wx;
+    y[s] = wy;
+    z[s] = wz;
+    tfar[s] = infinity;
+  }
+}
+
+// A sphere of uniform radiance sends p L cos(theta_receiver) d(omega) from
+// each direction of the cone it subtends (the form factor's kernel over
+// its visible half, in solid angle): the cone sampled uniformly, up to the
+// sphere's near side. False if p is inside the sphere (nothing can shade
+// it).
+bool sphere_rays(const ReferenceLight& light, const SourcePointSets::Set& set, std::uint32_t count,
+                 const Receiver& r, PixelRays& out) {
+  const float radius = 0.5f * light.size;
+  const glm::vec3 to_centre = light.position - r.p;
+  const float d = glm::length(to_centre);
+  if (d <= radius) return false;
+  const glm::vec3 w = to_centre / d;
+  glm::vec3 a, b;
+  frame_around(w, a, b);
+  const float sin2 = (radius / d) * (radius / d);
+  const float cone = sin2 / (1.0f + std::sqrt(1.0f - sin2));  // 1 - cos(theta_max)
+  for (std::uint32_t s = 0; s < count; ++s) {
+    const glm::vec3 c = uniform_cone_from_disk(glm::vec2(set.x[s], set.y[s]), cone);
+    const glm::vec3 direction = glm::normalize(c.x * a + c.y * b + c.z * w);
+    const float along = d * glm::dot(direction, w);
+    const float distance =
+        along - std::sqrt(std::max(0.0f, radius * radius - (d * d - along * along)));
+    const float receiver = glm::dot(r.n, direction);
+    out.weight[s] = receiver > 0.0f && glm::dot(r.ng, direction) > 0.0f ? receiver : 0.0f;
+    // Aim from the raised origin at the same point of the sphere.
+    const glm::vec3 to_target = r.p + distance * direction - r.origin;
+    out.x[s] = to_target.x;
+    out.y[s] = to_target.y;
+    out.z[s] = to_target.z;
+    out.tfar[s] = 1.0f;
+  }
+  return true;
+}
+
+}  // namespace
+
 Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight& light,
-                             int samples, const TraceProgress& progress) const {
+                             int samples, const TraceProgress& progress, TraceStats* stats) const {
   const int width = surfaces.width, height = surfaces.height;
   Image image(width, height);
   const bool spot = light.type == LightType::Spot;
-  const bool area = light.size > 0.0f;
-  const auto count = static_cast<std::uint32_t>(area ? std::max(samples, 1) : 1);
-  const float infinity = std::numeric_limits<float>::infinity();
-  const float radius = 0.5f * light.size;  // a point light's sphere
-  // The sun's cone of directions around -direction.
-  const float sun_one_minus_cos = one_minus_cos(0.5f * light.size);
-  std::atomic<std::int64_t> rows_done{0};
+  const auto covered = static_cast<std::uint32_t>(
+      std::count(surfaces.covered.begin(), surfaces.covered.end(), std::uint8_t{1}));
+  const SourcePointSets sources(light, static_cast<std::uint32_t>(std::max(samples, 1)),
+                                std::max(covered, 1u));
+  const std::uint32_t count = sources.count();
+  std::atomic<std::int64_t> rows_done{0}, rays_traced{0};
 
-  // A point of the source as seen from p: the unit direction towards it,
-  // how far away it is, and its weight in the irradiance (0: it sends p
-  // no light, occluders or not).
-  struct SourcePoint {
-    glm::vec3 direction{0.0f};
-    float distance = 0.0f;
-    float weight = 0.0f;
-  };
-  auto source_point = [&](const glm::vec3& p, const glm::vec3& n, glm::vec2 u) {
-    SourcePoint q;
-    if (light.type == LightType::Directional) {
-      // The disc of directions, uniform in solid angle: each direction
-      // weighs cos(theta_receiver) d(omega).
-      q.direction = -light.direction;
-      if (area) {
-        const glm::vec3 c = uniform_cone(u, sun_one_minus_cos);
-        q.direction =
-            glm::normalize(c.x * light.axis_u + c.y * light.axis_v - c.z * light.direction);
-      }
-      q.distance = infinity;
-      q.weight = glm::dot(n, q.direction);
-    } else if (light.type == LightType::Point && area) {
-      // A sphere of uniform radiance sends p L cos(theta_receiver) d(omega)
-      // from each direction of the cone it subtends (the form factor's
-      // kernel over its visible half, in solid angle): sample that cone
-      // uniformly, up to the sphere's near side.
-      const glm::vec3 to_centre = light.position - p;
-      const float d = glm::length(to_centre);
-      if (d <= radius) {  // inside the light: nothing can shade it
-        q.direction = n;
-        q.distance = 0.0f;
-        q.weight = 1.0f;
-        return q;
-      }
-      const glm::vec3 w = to_centre / d;
-      glm::vec3 a, b;
-      frame_around(w, a, b);
-      const float sin2 = (radius / d) * (radius / d);
-      const float cone = sin2 / (1.0f + std::sqrt(1.0f - sin2));  // 1 - cos(theta_max)
-      const glm::vec3 c = uniform_cone(u, cone);
-      q.direction = glm::normalize(c.x * a + c.y * b + c.z * w);
-      const float along = d * glm::dot(q.direction, w);
-      q.distance = along - std::sqrt(std::max(0.0f, radius * radius - (d * d - along * along)));
-      q.weight = glm::dot(n, q.direction);
-    } else {
-      // A square facing `direction` (spot), or a point: each point weighs
-      // cos(theta_source) cos(theta_receiver) / d^2 dA; a point light's
-      // source has no side, so cos(theta_source) = 1.
-      glm::vec3 target = light.position;
-      if (area) {
-        const glm::vec2 offset = (u - 0.5f) * light.size;
-        target += offset.x * light.axis_u + offset.y * light.axis_v;
-      }
-      const glm::vec3 to_light = target - p;
-      q.distance = glm::length(to_light);
-      q.direction = to_light / q.distance;
-      const float cos_source = spot && area ? -glm::dot(light.direction, q.direction) : 1.0f;
-      q.weight = cos_source > 0.0f
-                     ? cos_source * glm::dot(n, q.direction) / (q.distance * q.distance)
-                     : 0.0f;
-    }
-    return q;
-  };
-
-  // Irradiance with occluders over without, from p with normal n whose
-  // position is within `error` of its surface along n.
-  auto shadow_factor = [&](const glm::vec3& p, const glm::vec3& n, float error,
-                           std::uint32_t pattern) {
+  // Receiver i as far as it needs no ray: its facet normal comes later.
+  auto receiver = [&](std::size_t i) {
+    Receiver r;
+    r.p = surfaces.position[i];
+    r.n = surfaces.normal[i];
+    const float error = i < surfaces.position_error.size() ? surfaces.position_error[i] : 0.0f;
     // pbrt-v4's spawned ray origin: p moved along the normal by the bound
     // of its error, so that the ray starts on the light's side of the
     // surface it lies on however the rounding fell.
-    const float offset = error + rounding_error(p, n);
-    const glm::vec3 origin = p + offset * n;
-    // The G-buffer's normal is interpolated from the vertices' (a smooth
-    // sphere's), while the rays meet the flat triangles: near a terminator
-    // a direction above the shading normal's tangent plane can be below
-    // the triangle's own, and would be shadowed by the object's far side
-    // (the "shadow terminator" artefact; Hanika, "Hacking the Shadow
-    // Terminator", Ray Tracing Gems II, 2021). Such directions send no
-    // light with or without occluders, as a path tracer's reflection
-    // treats them (Cycles: no reflection below the geometric normal).
-    const glm::vec3 ng = facet_normal(scene_, p, n, 2.0f * offset + 1e-6f);
-    double with = 0.0, without = 0.0;
-    for (std::uint32_t s = 0; s < count; ++s) {
-      const SourcePoint q = source_point(p, n, cmj_sample(s, count, pattern));
-      // Below either tangent plane, or the source's back: no light either
-      // way.
-      if (!(q.weight > 0.0f) || glm::dot(ng, q.direction) <= 0.0f) continue;
-      without += q.weight;
-      if (q.distance == 0.0f) {
-        with += q.weight;
-        continue;
-      }
-      glm::vec3 direction = q.direction;
-      float distance = infinity;
-      if (std::isfinite(q.distance)) {
-        // Aim from the raised origin at the same point of the source.
-        const glm::vec3 to_target = p + q.distance * q.direction - origin;
-        distance = glm::length(to_target);
-        direction = to_target / distance;
-      }
-      if (!occluded(scene_, origin, direction, distance)) with += q.weight;
+    r.offset = error + rounding_error(r.p, r.n);
+    r.origin = r.p + r.offset * r.n;
+    return r;
+  };
+
+  // Irradiance with occluders over without, for pixel i (column x of its
+  // row): adds its source points' weights to `total` and queues their
+  // shadow rays, which add them to lit[x] when they reach the light.
+  auto sample_pixel = [&](std::size_t i, int x, const Receiver& r, PixelRays& rays, double& total,
+                          double& lit, OcclusionPackets& packets) {
+    const SourcePointSets::Set set = sources.set_for(static_cast<std::uint32_t>(i));
+    float *rx = rays.x.data(), *ry = rays.y.data(), *rz = rays.z.data();
+    switch (sources.kind()) {
+      case SourcePointKind::SquarePoint:
+        if (light.type == LightType::Spot && light.size > 0.0f) {
+          square_rays<true>(set.x, set.y, set.z, count, r, light.direction, rx, ry, rz,
+                            rays.tfar.data(), rays.weight.data());
+        } else {
+          square_rays<false>(set.x, set.y, set.z, count, r, glm::vec3(0.0f), rx, ry, rz,
+                             rays.tfar.data(), rays.weight.data());
+        }
+        break;
+      case SourcePointKind::SunDirection:
+        sun_rays(set.x, set.y, set.z, count, r, rx, ry, rz, rays.tfar.data(), rays.weight.data());
+        break;
+      case SourcePointKind::SphereDiskPoint:
+        if (!sphere_rays(light, set, count, r, rays)) {
+          // Inside the light: every direction sends light, unoccluded.
+          if (glm::dot(r.ng, r.n) > 0.0f) total = lit = static_cast<double>(count);
+          return;
+        }
+        break;
     }
-    // No light reaches the point, occluders or not: the ratio is
-    // undefined (-1: not judged). On a smooth mesh's terminator the
-    // triangle can face away from all of the source while the
-    // interpolated normal a rasterizer shades with sees some of it.
-    return without > 0.0 ? static_cast<float>(with / without) : -1.0f;
+    for (std::uint32_t s = 0; s < count; ++s) {
+      const float weight = rays.weight[s];
+      if (!(weight > 0.0f)) continue;
+      total += weight;
+      packets.add(r.origin, glm::vec3(rx[s], ry[s], rz[s]), rays.tfar[s], x, weight);
+    }
   };
 
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+    PixelRays rays(count);
+    const auto w = static_cast<std::size_t>(width);
+    std::vector<Receiver> receivers(w);
+    std::vector<glm::vec3> facets(w);
+    std::vector<double> total(w), lit(w);
+    FacetPackets facet_packets(scene_, facets.data());
+    OcclusionPackets packets(scene_, lit.data());
     for (int y = rows.begin(); y != rows.end(); ++y) {
+      std::fill(total.begin(), total.end(), 0.0);
+      std::fill(lit.begin(), lit.end(), 0.0);
+      const std::size_t row = static_cast<std::size_t>(y) * width;
       for (int x = 0; x < width; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * width + x;
+        if (!surfaces.covered[row + x]) continue;
+        Receiver& r = receivers[x];
+        r = receiver(row + x);
+        // The G-buffer's normal is interpolated from the vertices' (a
+        // smooth sphere's), while the rays meet the flat triangles: near a
+        // terminator a direction above the shading normal's tangent plane
+        // can be below the triangle's own, and would be shadowed by the
+        // object's far side (the "shadow terminator" artefact; Hanika,
+        // "Hacking the Shadow Terminator", Ray Tracing Gems II, 2021).
+        // Such directions send no light with or without occluders, as a
+        // path tracer's reflection treats them (Cycles: no reflection
+        // below the geometric normal).
+        facet_packets.add(r.p, r.n, 2.0f * r.offset + 1e-6f, x);
+      }
+      facet_packets.flush();
+      for (int x = 0; x < width; ++x) {
+        if (!surfaces.covered[row + x]) continue;
+        receivers[x].ng = facets[x];
+        sample_pixel(row + x, x, receivers[x], rays, total[x], lit[x], packets);
+      }
+      packets.flush();
+      for (int x = 0; x < width; ++x) {
+        const std::size_t i = row + x;
         float* out = image.pixel(x, y);
         if (!surfaces.covered[i]) {
           out[0] = out[1] = out[2] = 1.0f;
           out[3] = 0.0f;
           continue;
         }
-        const glm::vec3 p = surfaces.position[i], n = surfaces.normal[i];
-        const float error = i < surfaces.position_error.size() ? surfaces.position_error[i] : 0.0f;
-        const float v = shadow_factor(p, n, error, hash_pixel(static_cast<std::uint32_t>(i)));
-        out[0] = out[1] = out[2] = std::max(v, 0.0f);
-        const bool inside_cone = !spot || glm::dot(glm::normalize(p - light.position),
-                                                   light.direction) >= light.cos_cone;
-        out[3] = inside_cone && v >= 0.0f ? 1.0f : 0.0f;
+        // No light reaches the point, occluders or not: the ratio is
+        // undefined (not judged). On a smooth mesh's terminator the
+        // triangle can face away from all of the source while the
+        // interpolated normal a rasterizer shades with sees some of it.
+        const bool reached = total[x] > 0.0;
+        out[0] = out[1] = out[2] = reached ? static_cast<float>(lit[x] / total[x]) : 0.0f;
+        const bool inside_cone =
+            !spot || glm::dot(glm::normalize(surfaces.position[i] - light.position),
+                              light.direction) >= light.cos_cone;
+        out[3] = inside_cone && reached ? 1.0f : 0.0f;
       }
       const std::int64_t done = ++rows_done;
       if (progress) progress(done, height);
     }
+    rays_traced += packets.traced();
   });
+  if (stats != nullptr) stats->rays = rays_traced.load();
   return image;
 }
 

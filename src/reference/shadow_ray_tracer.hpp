@@ -61,6 +61,11 @@ ReferenceLight make_reference_light(const Light& light, const LightView& view,
 // Called from worker threads, possibly at once: rows done so far, of total.
 using TraceProgress = std::function<void(std::int64_t done, std::int64_t total)>;
 
+// What a trace did, for reporting its speed.
+struct TraceStats {
+  std::int64_t rays = 0;  // shadow rays traced (source points below a tangent plane take none)
+};
+
 class ShadowRayTracer {
  public:
   // Builds Embree's BVH over the mesh. Throws RuntimeError if Embree fails.
@@ -78,9 +83,10 @@ class ShadowRayTracer {
   // facing away); background pixels read (1, 1, 1, 0), as in the `shadow`
   // view. `samples` rays per pixel for an area light, 1 for a point.
   // Shadow rays start above the surface by the surface point's
-  // position_error plus the rounding bound below. Uses every core.
+  // position_error plus the rounding bound below. Uses every core; fills
+  // `stats` if given.
   [[nodiscard]] Image trace(const SurfacePoints& surfaces, const ReferenceLight& light, int samples,
-                            const TraceProgress& progress = {}) const;
+                            const TraceProgress& progress = {}, TraceStats* stats = nullptr) const;
 
   // A bound of the rounding error of the point p (normal n) as stored and
   // as Embree tests a ray from it against a triangle, along n: pbrt-v4's

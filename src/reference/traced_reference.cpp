@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <optional>
 
 #include "core/error.hpp"
@@ -37,9 +38,16 @@ TracedReference traced_reference(Renderer& renderer, const RenderSettings& rende
   } else {
     const ShadowRayTracer tracer(renderer.mesh());
     ProgressBar progress("tracing the reference");
-    r.image = tracer.trace(surfaces, r.light, r.rays, [&](std::int64_t done, std::int64_t total) {
-      progress.update(done, total);
-    });
+    TraceStats stats;
+    const auto trace_start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
+    r.image = tracer.trace(
+        surfaces, r.light, r.rays,
+        [&](std::int64_t done, std::int64_t total) { progress.update(done, total); }, &stats);
+    r.trace_cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    r.trace_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - trace_start).count();
+    r.rays_traced = stats.rays;
     progress.finish();
     if (!cache_dir.empty()) {
       try {

@@ -1,6 +1,7 @@
 #pragma once
 // The traced reference of a camera view: the G-buffer's surfaces, shadow
 // rays to the light through Embree, cached on disk.
+#include <cstdint>
 #include <string>
 
 #include "core/settings.hpp"
@@ -15,8 +16,13 @@ struct TracedReference {
   ReferenceLight light;
   int rays = 1;
   bool cached = false;
-  double seconds = 0.0;
+  double seconds = 0.0;  // finding or tracing it, all told
   long pixels = 0;
+  // The tracing itself (0 when cached): shadow rays traced, and the
+  // seconds they took on the clock and of CPU time (all threads).
+  std::int64_t rays_traced = 0;
+  double trace_seconds = 0.0;
+  double trace_cpu_seconds = 0.0;
 };
 
 // The traced shadow of the surfaces the camera sees for render.light_index,

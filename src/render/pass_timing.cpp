@@ -2,6 +2,15 @@
 
 #include <algorithm>
 
+#include "filter/fused_filter_pass.hpp"
+#include "filter/gaussian_blur_pass.hpp"
+#include "filter/summed_area_table_pass.hpp"
+#include "gl/context.hpp"
+#include "shadow/moment_resolve_pass.hpp"
+#include "shadow/representation.hpp"
+#include "shadow/shadow_map_pass.hpp"
+#include "shared/bindings.h"
+
 namespace penumbra {
 
 using gl::GpuPass;
@@ -15,6 +24,46 @@ Spread spread_of(std::vector<double> values) {
   s.min = values.front();
   s.max = values.back();
   return s;
+}
+
+std::array<std::optional<TexelTraffic>, kPassCount> shadow_map_traffic(const ShadowSettings& shadow,
+                                                                       int width, int height,
+                                                                       int shared_bytes) {
+  std::array<std::optional<TexelTraffic>, kPassCount> traffic{};
+  auto set = [&](GpuPass pass, TexelTraffic t) { traffic[static_cast<std::size_t>(pass)] = t; };
+  const GLenum depth = ShadowMapPass::kDepthFormat;
+  GLenum maps = depth;  // what the frame's shadow_maps() hold, which the copy copies
+  if (is_filterable(shadow.technique)) {
+    maps = representation_format(shadow.technique);
+    const int filter = filter_define(shadow);
+    if (!uses_fused_filter(shadow)) {
+      set(GpuPass::Resolve, MomentResolvePass::texel_traffic(depth, shadow.technique));
+    }
+    if (uses_fused_filter(shadow)) {
+      set(GpuPass::FusedFilter,
+          FusedFilterPass::texel_traffic(maps, shadow.blur, width, height, shared_bytes));
+    } else if (filter == FILTER_GAUSSIAN) {
+      set(GpuPass::FilterHorizontal,
+          GaussianBlurPass::texel_traffic(maps, shadow.blur, 0, width, height));
+      set(GpuPass::FilterVertical,
+          GaussianBlurPass::texel_traffic(maps, shadow.blur, 1, width, height));
+    } else if (filter == FILTER_SAT) {
+      set(GpuPass::SatRows, SummedAreaTablePass::row_traffic(maps));
+      set(GpuPass::SatColumns, SummedAreaTablePass::column_traffic(maps));
+    }
+  }
+  set(GpuPass::BandwidthCopy, TextureCopyPass::texel_traffic(maps));
+  return traffic;
+}
+
+double median_ms(const Samples& samples, bool timer_clock) {
+  return spread_of(timer_clock ? samples.timer_ms : samples.wall_ms).median;
+}
+
+double achieved_gb_per_second(const PassTimes& run, std::size_t pass, bool timer_clock) {
+  const double ms = median_ms(run.passes[pass], timer_clock);
+  if (!run.traffic[pass] || !(ms > 0.0)) return 0.0;
+  return run.traffic[pass]->total() * run.texels / (ms * 1e6);
 }
 
 PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
@@ -44,14 +93,16 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
     run.total.timer_ms.push_back(times->total_ms);
     run.total.wall_ms.push_back(times->total_wall_ms);
   }
+  const gl::Texture& maps = renderer.shadow_maps();
+  run.texels = static_cast<double>(maps.width()) * maps.height() * maps.layers();
+  GLint shared_bytes = 0;
+  glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared_bytes);
+  run.traffic = shadow_map_traffic(shadow, maps.width(), maps.height(), shared_bytes);
   return run;
 }
 
 bool is_software_renderer(std::string_view renderer) {
-  for (const char* software : {"llvmpipe", "softpipe", "SwiftShader"}) {
-    if (renderer.find(software) != std::string_view::npos) return true;
-  }
-  return false;
+  return gl::is_cpu_rasterizer(renderer);
 }
 
 bool timers_miss_compute(const std::string& renderer) {

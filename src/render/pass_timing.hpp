@@ -2,6 +2,7 @@
 // Measuring every pass of a frame over several frames: the numbers of
 // `penumbra bench` and of the report's timing table.
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "filter/texture_copy_pass.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "render/renderer.hpp"
+#include "shadow/texel_traffic.hpp"
 
 namespace penumbra {
 
@@ -25,12 +27,32 @@ struct Samples {
   std::vector<double> timer_ms, wall_ms;
 };
 
+// Bytes per texel of each pass a frame with these settings runs over a
+// width x height shadow-map array, from the passes' own formats, tiles and
+// aprons: the resolve, the filter's passes and the copy yardstick;
+// nullopt for the passes that are not a pass over the map's texels (the
+// shadow depth pass rasterizes; the camera's passes).
+// `shared_bytes` is the device's GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, which
+// sets the fused pass's tile (32 KiB: the least any GL 4.5 device has).
+std::array<std::optional<TexelTraffic>, kPassCount> shadow_map_traffic(const ShadowSettings& shadow,
+                                                                       int width, int height,
+                                                                       int shared_bytes = 32768);
+
 struct PassTimes {
   ShadowSettings shadow;
   std::array<Samples, kPassCount> passes;
   std::array<bool, kPassCount> ran{};
   Samples total;
+  // The shadow-map array's texels (all layers) each pass went over, and
+  // its bytes per texel.
+  double texels = 0.0;
+  std::array<std::optional<TexelTraffic>, kPassCount> traffic{};
 };
+
+// A pass's median time on one clock, and the bandwidth that is: the
+// pass's bytes over its time (0 where either is unknown).
+double median_ms(const Samples& samples, bool timer_clock);
+double achieved_gb_per_second(const PassTimes& run, std::size_t pass, bool timer_clock);
 
 // Renders warmup + frames frames, each followed by the bandwidth yardstick
 // (a copy of light 0's map), with a serializing profiler, and keeps the

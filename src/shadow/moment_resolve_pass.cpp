@@ -13,6 +13,11 @@ GLuint groups(int size, int local) {
 }
 }  // namespace
 
+TexelTraffic MomentResolvePass::texel_traffic(GLenum depth_format, Technique technique) {
+  return {static_cast<double>(bytes_per_texel(depth_format)),
+          static_cast<double>(bytes_per_texel(representation_format(technique)))};
+}
+
 void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);

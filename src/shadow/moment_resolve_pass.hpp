@@ -6,6 +6,7 @@
 #include "core/settings.hpp"
 #include "gl/program.hpp"
 #include "gl/resources.hpp"
+#include "shadow/texel_traffic.hpp"
 
 namespace penumbra {
 
@@ -14,6 +15,10 @@ class MomentResolvePass {
   // Writes the representation of every layer of `depth_maps`. The array is
   // reallocated only when its size, layer count or format changes.
   void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
+
+  // Per texel: one depth read (of `depth_format`), one texel of the
+  // technique's representation written.
+  static TexelTraffic texel_traffic(GLenum depth_format, Technique technique);
 
   // A 2D array like the depth maps. Valid after execute().
   [[nodiscard]] const gl::Texture& representation() const { return maps_; }

@@ -8,7 +8,7 @@ ShadowMapPass::ShadowMapPass()
     : program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag")) {}
 
 void ShadowMapPass::execute(const GpuScene& scene, int view_count, int map_size) {
-  if (gl::ensure_texture_array(maps_, GL_DEPTH_COMPONENT32F, map_size, map_size, view_count,
+  if (gl::ensure_texture_array(maps_, kDepthFormat, map_size, map_size, view_count,
                                "shadow maps")) {
     framebuffers_.clear();
     for (int i = 0; i < view_count; ++i) {

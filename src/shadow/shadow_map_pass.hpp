@@ -12,6 +12,9 @@ namespace penumbra {
 
 class ShadowMapPass {
  public:
+  // The depth maps' format.
+  static constexpr GLenum kDepthFormat = GL_DEPTH_COMPONENT32F;
+
   ShadowMapPass();
 
   // Draws the scene from views 0..view_count-1 of the shadow-views block

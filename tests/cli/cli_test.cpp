@@ -130,6 +130,14 @@ TEST(Cli, BenchReportsTheFusedFilterAndItsFallback) {
     fused_runs += fused ? 1 : 0;
   }
   EXPECT_EQ(fused_runs, 5);  // W = 1, 2, 4, 8, 16
+  // Its bytes per texel at W = 4: the depth under each 32 x 32 tile and its
+  // apron, (40 / 32)^2 x 4, and the RGBA16 moments written once: 14.25.
+  for (const auto& run : j.at("runs")) {
+    if (run.at("blur").get<int>() != 4) continue;
+    const auto& fused = run.at("bytes_per_texel").at("resolve+filter (fused)");
+    EXPECT_LE(fused.at("total").get<double>(), 16.0);
+    EXPECT_EQ(fused.at("written").get<double>(), 8.0);
+  }
 
   // --sweep fused measures both paths in one run, fused first.
   r =
@@ -147,11 +155,47 @@ TEST(Cli, BenchReportsTheFusedFilterAndItsFallback) {
   EXPECT_EQ(sweep.at("runs").at(1).at("representation_format").get<std::string>(), "RGBA32F");
 }
 
+// Each pass over the shadow maps reports its bytes per texel (as its
+// formats give them: msm's resolve writes RGBA32F, a W = 2 Gaussian pass
+// over a 256^2 map reads 16 (1 + 4 / 64) bytes), the bandwidth it
+// achieved, and with --bandwidth its floor: its bytes at that rate.
+TEST(Cli, BenchCountsBytesPerTexel) {
+  const std::string json_path = out_path("bench-bytes.json");
+  Result r =
+      run("bench --frames 1 --warmup 0 --technique msm --filter gaussian --blur 2 "
+          "--no-fused --width 48 --height 32 --shadow-map-size 256 --bandwidth 500 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("floor at 500 GB/s (--bandwidth)"), std::string::npos) << r.out;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j.at("bandwidth_gb_per_second").get<double>(), 500.0);
+  const auto& run = j.at("runs").at(0);
+  const auto& bytes = run.at("bytes_per_texel");
+  EXPECT_EQ(bytes.at("resolve").at("read").get<double>(), 4.0);
+  EXPECT_EQ(bytes.at("resolve").at("written").get<double>(), 16.0);
+  for (const char* pass : {"filter H", "filter V"}) {
+    EXPECT_DOUBLE_EQ(bytes.at(pass).at("read").get<double>(), 16.0 * (1.0 + 4.0 / 64.0)) << pass;
+    EXPECT_EQ(bytes.at(pass).at("written").get<double>(), 16.0) << pass;
+  }
+  EXPECT_EQ(bytes.at("copy (yardstick)").at("total").get<double>(), 32.0);
+  EXPECT_FALSE(bytes.contains("shadow depth")) << "rasterized: not a per-texel count";
+  const double texels = run.at("texels").get<double>();
+  EXPECT_EQ(static_cast<long>(texels) % (256 * 256), 0) << "whole layers of the map";
+  for (const auto& [pass, b] : bytes.items()) {
+    EXPECT_GT(run.at("gb_per_second").at(pass).get<double>(), 0.0) << pass;
+    EXPECT_DOUBLE_EQ(run.at("floor_ms").at(pass).get<double>(),
+                     b.at("total").get<double>() * texels / 500e6)
+        << pass;
+  }
+}
+
 TEST(Cli, BenchUsageErrors) {
   const std::string json_path = out_path("bench-bad.json");
   expect_error("bench --technique msm,blurry", 2, "blurry", json_path, "--json");
   expect_error("bench --sweep sideways", 2, "--sweep", json_path, "--json");
   expect_error("bench --frames 0", 2, "--frames", json_path, "--json");
+  expect_error("bench --bandwidth 0", 2, "--bandwidth", json_path, "--json");
   expect_error("bench", 2, "does not exist", "/no/such/folder/b.json", "--json");
 }
 

@@ -97,6 +97,13 @@ TEST(Compare, WritesTableJsonImagesAndCache) {
   EXPECT_EQ(j["width"], 48);
   EXPECT_EQ(j["reference"]["cached"], false);
   EXPECT_GT(j["reference"]["pixels"].get<long>(), 100);
+  // The tracer's speed: at least one ray per judged pixel (pixels outside
+  // the spot's cone are traced but not judged), at most one per pixel.
+  const long rays = j["reference"]["rays_traced"].get<long>();
+  EXPECT_GE(rays, j["reference"]["pixels"].get<long>());
+  EXPECT_LE(rays, 48L * 32L);
+  EXPECT_GT(j["reference"]["rays_per_second"].get<double>(), 0.0);
+  EXPECT_GT(j["reference"]["rays_per_cpu_second"].get<double>(), 0.0);
   const auto& results = j["results"];
   ASSERT_EQ(results.size(), 5u);  // hard; esm gaussian, esm sat; msm gaussian, msm sat
   int ok = 0;
@@ -153,7 +160,9 @@ TEST(Compare, WritesTableJsonImagesAndCache) {
   ASSERT_EQ(again.status, 0) << again.err;
   EXPECT_NE(again.out.find("1 ray per pixel, cached"), std::string::npos) << again.out;
   std::ifstream in2(json_path);
-  EXPECT_EQ(nlohmann::json::parse(in2)["reference"]["cached"], true);
+  const nlohmann::json j2 = nlohmann::json::parse(in2);
+  EXPECT_EQ(j2["reference"]["cached"], true);
+  EXPECT_TRUE(j2["reference"]["rays_per_second"].is_null()) << "nothing traced";
 }
 
 // An area light: the table names it, and without -o, --json or a cache

@@ -81,6 +81,8 @@ TEST_F(GpuTest, EveryShaderCompiles) {
         {{"AXIS", "1"}, {"RADIUS", "64"}, {"IMAGE_FORMAT", "rgba32f"}}}},
       {"filter/sat_rows.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "rg32ui"}}}},
       {"filter/sat_columns.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "r32ui"}}}},
+      {"filter/sat_scan.comp",
+       {{{"AXIS", "0"}, {"IMAGE_FORMAT", "rgba32ui"}}, {{"AXIS", "1"}, {"IMAGE_FORMAT", "r32ui"}}}},
       {"filter/sat_box.comp", {{}}},
       {"filter/copy.comp", {{{"IMAGE_FORMAT", "r32f"}}, {{"IMAGE_FORMAT", "rgba16"}}}},
       {"test/shadow_math.comp", {{}}},

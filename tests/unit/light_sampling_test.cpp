@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace penumbra {
 namespace {
@@ -50,6 +52,28 @@ TEST(LightSampling, PatternsAreDeterministicAndDistinct) {
   mean /= 256.0;
   EXPECT_NEAR(mean.x, 0.5, 0.01);
   EXPECT_NEAR(mean.y, 0.5, 0.01);
+}
+
+// A set generated at once holds cmj_sample's very points, bit for bit (so
+// the reference sums over the same stratified points however it lists
+// them), for counts that fill the m x n grid and counts that do not.
+TEST(LightSampling, PointSetHoldsTheSamePointsAsCmjSample) {
+  auto key = [](glm::vec2 p) { return std::make_pair(p.x, p.y); };
+  CmjPointSet set;
+  for (std::uint32_t n : {1u, 2u, 7u, 16u, 50u, 256u, 1000u}) {
+    for (std::uint32_t pattern : {0u, 3u, 0xdeadbeefu}) {
+      set.generate(n, pattern);
+      ASSERT_EQ(set.points().size(), n);
+      std::vector<std::pair<float, float>> listed, sampled;
+      for (std::uint32_t s = 0; s < n; ++s) {
+        listed.push_back(key(set.points()[s]));
+        sampled.push_back(key(cmj_sample(s, n, pattern)));
+      }
+      std::sort(listed.begin(), listed.end());
+      std::sort(sampled.begin(), sampled.end());
+      EXPECT_EQ(listed, sampled) << "n " << n << " pattern " << pattern;
+    }
+  }
 }
 
 // The cone map is uniform in solid angle: on a 64 x 64 grid of the

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "scene/builtin_scenes.hpp"
 
@@ -282,6 +283,50 @@ TEST(ShadowRayTracer, RaysStartAboveThePositionErrorBound) {
   const Image image = tracer.trace(s, spot_down(2.0f, 0.0f), 1);
   EXPECT_EQ(image.pixel(0, 0)[0], 1.0f);
   EXPECT_EQ(image.pixel(1, 0)[0], 0.0f);
+}
+
+// Rays travel in packets of 16 that mix pixels and rows: every pixel gets
+// its own rays' answers. Three rows of 37 points (some uncovered) under a
+// half-plane x < 0 at height 1, lit from 3 above the origin: with a point
+// light a point is shadowed exactly where x < 0; with a square 0.2 wide
+// and 7 rays per pixel (packets straddle pixels) the penumbra is 0.05 on
+// either side, so every point here is exactly lit or exactly shadowed.
+// Each covered point above the horizon traces one ray per sample.
+TEST(ShadowRayTracer, PacketsGiveEachPixelItsOwnRays) {
+  TriangleMesh mesh;
+  add_quad(mesh, -5.0f, 0.0f, -2.5f, 2.5f, 1.0f);
+  const ShadowRayTracer tracer(mesh);
+  constexpr int kColumns = 37, kRows = 3;
+  SurfacePoints s(kColumns, kRows);
+  long covered = 0;
+  for (int y = 0; y < kRows; ++y) {
+    for (int x = 0; x < kColumns; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * kColumns + x;
+      s.position[i] = {-1.85f + 0.1f * static_cast<float>(x), 0.0f, 0.3f * (y - 1)};
+      s.normal[i] = {0.0f, 1.0f, 0.0f};
+      s.covered[i] = (x + 2 * y) % 5 != 0;
+      covered += s.covered[i];
+    }
+  }
+  for (const auto& [size, samples] : {std::pair{0.0f, 1}, std::pair{0.2f, 7}}) {
+    TraceStats stats;
+    const Image image = tracer.trace(s, spot_down(3.0f, size), samples, {}, &stats);
+    EXPECT_EQ(stats.rays, covered * samples) << "light size " << size;
+    for (int y = 0; y < kRows; ++y) {
+      for (int x = 0; x < kColumns; ++x) {
+        const float* v = image.pixel(x, y);
+        const std::size_t i = static_cast<std::size_t>(y) * kColumns + x;
+        if (!s.covered[i]) {
+          EXPECT_EQ(v[0], 1.0f);
+          EXPECT_EQ(v[3], 0.0f);
+          continue;
+        }
+        EXPECT_EQ(v[0], s.position[i].x < 0.0f ? 0.0f : 1.0f)
+            << "light size " << size << ", point " << x << ", " << y;
+        EXPECT_EQ(v[3], 1.0f);
+      }
+    }
+  }
 }
 
 // The 10 %-90 % width of the visibility's rise along a line of ground

@@ -1,0 +1,17 @@
+// Workgroup tiles of the filter passes, shared by the C++ host (dispatch
+// sizes, the bytes each pass moves) and the compute shaders.
+#ifndef PENUMBRA_FILTER_TILES_H
+#define PENUMBRA_FILTER_TILES_H
+
+// The separable Gaussian (shaders/filter/gaussian_blur.comp): a workgroup
+// filters GAUSSIAN_TILE_ALONG texels along the axis in GAUSSIAN_TILE_ACROSS
+// rows, staging them with their apron in shared memory.
+#define GAUSSIAN_TILE_ALONG 64
+#define GAUSSIAN_TILE_ACROSS 8
+
+// The parallel summed-area table (shaders/filter/sat_scan.comp): a
+// workgroup scans SAT_TILE_ACROSS lines, SAT_TILE_ALONG texels at a time.
+#define SAT_TILE_ALONG 32
+#define SAT_TILE_ACROSS 8
+
+#endif
