@@ -107,6 +107,22 @@ glm::vec3 facet_normal(RTCScene scene, const glm::vec3& p, const glm::vec3& n, f
   return glm::dot(ng, n) < 0.0f ? -ng : ng;
 }
 
+// Embree's occlusion filter: a hit on a hole or on the back of a
+// single-sided caster does not count.
+void pass_cutouts(const RTCFilterFunctionNArguments* args) {
+  const auto* cutouts = static_cast<const CasterCutouts*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    const glm::vec3 direction(RTCRayN_dir_x(args->ray, args->N, i),
+                              RTCRayN_dir_y(args->ray, args->N, i),
+                              RTCRayN_dir_z(args->ray, args->N, i));
+    if (cutouts->passes(RTCHitN_primID(args->hit, args->N, i), RTCHitN_u(args->hit, args->N, i),
+                        RTCHitN_v(args->hit, args->N, i), direction)) {
+      args->valid[i] = 0;
+    }
+  }
+}
+
 }  // namespace
 
 ReferenceLight make_reference_light(const Light& light, const LightView& view,
@@ -125,7 +141,13 @@ ReferenceLight make_reference_light(const Light& light, const LightView& view,
   return r;
 }
 
-ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh) {
+ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh)
+    : ShadowRayTracer(mesh, std::vector<Material>{}) {}
+
+ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Material>& materials) {
+  if (CasterCutouts cutouts(mesh, materials); cutouts.any()) {
+    cutouts_ = std::make_unique<CasterCutouts>(mesh, materials);
+  }
   device_ = rtcNewDevice(nullptr);
   if (device_ == nullptr) throw RuntimeError(embree_error(nullptr, "creating a device"));
   rtcSetDeviceErrorFunction(device_, on_embree_error, nullptr);
@@ -155,6 +177,10 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh) {
     }
     std::memcpy(indices, mesh.indices.data(),
                 (mesh.indices.size() / 3) * 3 * sizeof(std::uint32_t));
+    if (cutouts_ != nullptr) {
+      rtcSetGeometryUserData(geometry, cutouts_.get());
+      rtcSetGeometryOccludedFilterFunction(geometry, pass_cutouts);
+    }
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(scene_, geometry);
     rtcReleaseGeometry(geometry);

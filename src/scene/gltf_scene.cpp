@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "scene/gltf_extensions.hpp"
 #include "scene/mesh.hpp"
 #include "scene/model.hpp"
 #include "shared/bindings.h"
@@ -14,6 +15,22 @@
 namespace penumbra {
 
 static_assert(kMaxSceneLights == MAX_LIGHTS);
+
+namespace {
+
+// The extensions of a file the model reader can read at all: one it
+// cannot is left for load_model's own message.
+GltfExtensions read_gltf_extensions_checked(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return {};
+  try {
+    return read_gltf_extensions(path);
+  } catch (const RuntimeError&) {
+    return {};
+  }
+}
+
+}  // namespace
 
 bool is_gltf_path(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -23,6 +40,25 @@ bool is_gltf_path(const std::string& path) {
 }
 
 Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& notes) {
+  // The checks load_model makes first (a missing file, a folder, a FIFO)
+  // come before the extensions are read.
+  const GltfExtensions extensions = read_gltf_extensions_checked(path);
+  std::string unread;
+  for (const std::string& e : extensions.required) {
+    if (!is_supported_gltf_extension(e)) {
+      throw RuntimeError(path + ": requires the glTF extension " + e +
+                         ", which penumbra does not read");
+    }
+  }
+  for (const std::string& e : extensions.used) {
+    if (!is_supported_gltf_extension(e)) unread += (unread.empty() ? "" : ", ") + e;
+  }
+  if (!unread.empty()) {
+    notes.warnings.push_back(path +
+                             ": ignoring the glTF extensions it uses that penumbra does not "
+                             "read: " +
+                             unread);
+  }
   Scene scene;
   scene.name = path;
   Shape shape;

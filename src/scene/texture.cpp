@@ -96,6 +96,10 @@ glm::vec4 sample_texture(const Material& m, glm::vec2 t) {
     return glm::vec4(srgb_to_linear(p[0] / 255.0f), srgb_to_linear(p[1] / 255.0f),
                      srgb_to_linear(p[2] / 255.0f), p[3] / 255.0f);
   };
+  if (!std::isfinite(t.x) || !std::isfinite(t.y)) t = glm::vec2(0.0f);
+  // Beyond a few periods the wrap is exact anyway; this keeps the texel
+  // index within int.
+  t = glm::clamp(t, glm::vec2(-1e6f), glm::vec2(1e6f));
   // Texel centres at half-integers, as OpenGL samples (section 8.14.2).
   const float x = t.x * static_cast<float>(image.width) - 0.5f;
   const float y = t.y * static_cast<float>(image.height) - 0.5f;
