@@ -226,6 +226,7 @@ std::string write_gltf(const std::string& name, const GltfSpec& spec) {
     gltf["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9987}}};
   }
   if (transform) used.push_back("KHR_texture_transform");
+  for (const std::string& e : spec.extensions_used) used.push_back(e);
   for (const std::string& e : spec.extensions_required) used.push_back(e);
   if (!used.empty()) gltf["extensionsUsed"] = used;
   if (!spec.extensions_required.empty()) gltf["extensionsRequired"] = spec.extensions_required;

@@ -51,7 +51,8 @@ struct GltfSpec {
   std::vector<GltfMaterialSpec> materials;  // at least one
   std::vector<GltfCameraSpec> cameras;
   std::vector<GltfLightSpec> lights;
-  std::vector<std::string> extensions_required;  // beyond the ones used above
+  std::vector<std::string> extensions_used;      // beyond the ones the above need
+  std::vector<std::string> extensions_required;  // also listed as used
 };
 
 // Writes the scene as `name` (a .gltf with its buffer embedded) under the

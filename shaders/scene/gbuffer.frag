@@ -2,9 +2,10 @@
 // back from the depth buffer.
 #include "../shared/bindings.h"
 #include "material.glsl"
+#include "surface.glsl"
 
 in vec3 v_normal;
-in vec2 v_uv;
+in vec2 v_texcoord;
 in vec4 v_color;
 flat in uint v_material;
 
@@ -14,7 +15,7 @@ layout(location = 2) out vec4 out_specular;  // rgb: specular colour
 
 void main() {
   Material m = materials[v_material];
-  vec4 base = base_color(m, v_uv, v_color);
+  vec4 base = base_color(m, v_texcoord, v_color);
   if (is_discarded(m, base.a)) discard;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;  // double-sided surfaces seen from behind

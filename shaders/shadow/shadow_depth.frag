@@ -13,21 +13,20 @@
 // depth; single-sided surfaces cast only from their front.
 #include "../common/uniforms.glsl"
 #include "../scene/material.glsl"
+#include "../scene/surface.glsl"
 #include "lookup.glsl"
 
 layout(location = 0) uniform int u_view;
 
 in vec3 v_view_position;
-in vec2 v_uv;
+in vec2 v_texcoord;
 in float v_alpha;
 flat in uint v_material;
 layout(depth_any) out float gl_FragDepth;
 
 void main() {
   Material m = materials[v_material];
-  // The texture is read only where it can cut a hole.
-  float coverage = m.uv_row0.w >= 0.0 ? base_color(m, v_uv, vec4(1.0, 1.0, 1.0, v_alpha)).a : 1.0;
-  if (is_discarded(m, coverage)) discard;
+  if (is_discarded(m, base_color(m, v_texcoord, vec4(1.0, 1.0, 1.0, v_alpha)).a)) discard;
   GpuShadowView view = shadow_views[u_view];
   gl_FragDepth = clamp(relative_depth_of(view, view_space_depth(view, v_view_position)), 0.0, 1.0);
 }

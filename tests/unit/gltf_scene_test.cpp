@@ -303,5 +303,17 @@ TEST(GltfScene, UnknownRequiredExtensionIsAnErrorNamingIt) {
   }
 }
 
+// An extension the file only uses (not requires) is ignored, with one
+// warning naming it.
+TEST(GltfScene, UnknownUsedExtensionIsAWarningNamingIt) {
+  GltfSpec spec = ground_quad();
+  spec.extensions_used.push_back("EXT_also_made_up");
+  GltfSceneNotes notes;
+  const Scene scene = gltf_scene(testing::write_gltf("used-extension.gltf", spec), -1, notes);
+  EXPECT_EQ(scene.shapes.size(), 1u);
+  ASSERT_EQ(notes.warnings.size(), 1u);
+  EXPECT_NE(notes.warnings[0].find("EXT_also_made_up"), std::string::npos) << notes.warnings[0];
+}
+
 }  // namespace
 }  // namespace penumbra
