@@ -203,7 +203,7 @@ constexpr glm::vec3 kLight{0.3f, 6.0f, 0.2f};
 // The alpha-masked card over a ground, a point-like spot light above,
 // seen from above by the file's camera.
 Scene masked_card_scene(const std::string& name, const std::string& alpha_mode, bool facing_up,
-                        bool double_sided) {
+                        bool double_sided, const std::string& light_type = "spot") {
   testing::write_rgba_png("mask4.png", 4, 4, checker_mask());
   GltfSpec spec;
   spec.quads = {ground(4.0f), card(kCardCentre, kCardHalf, 1, facing_up)};
@@ -211,12 +211,15 @@ Scene masked_card_scene(const std::string& name, const std::string& alpha_mode, 
   spec.materials.push_back(
       {.image = "mask4.png", .alpha_mode = alpha_mode, .double_sided = double_sided});
   spec.cameras.push_back({.position = {0.0f, 8.0f, 5.5f}, .target = {0, 0, 0.5f}, .yfov = 0.7f});
-  spec.lights.push_back({.type = "spot",
-                         .intensity = 36,
+  // The directional light shines along -kLight: the same paths to it as
+  // from a light at kLight, up to parallax.
+  const bool directional = light_type == "directional";
+  spec.lights.push_back({.type = light_type,
+                         .intensity = directional ? 1.0f : 36.0f,
                          .inner_cone = 0.6f,
                          .outer_cone = 0.75f,
                          .position = kLight,
-                         .direction = {0, -1, 0}});
+                         .direction = directional ? -kLight : glm::vec3(0, -1, 0)});
   return gltf_scene(testing::write_gltf(name, spec));
 }
 
@@ -227,7 +230,8 @@ struct HoleCount {
 // Ground pixels whose path to the light crosses the card well inside a
 // hole texel, or well inside a solid one; the card is seen from the
 // camera at (0, 8, 5.5).
-HoleCount count_holes(const Image& factor, float lit_above, float dark_below) {
+HoleCount count_holes(const Image& factor, float lit_above, float dark_below,
+                      bool directional = false) {
   HoleCount h;
   const glm::vec3 eye{0.0f, 8.0f, 5.5f}, target{0, 0, 0.5f};
   for (int y = 0; y < kSize; ++y) {
@@ -237,7 +241,7 @@ HoleCount count_holes(const Image& factor, float lit_above, float dark_below) {
       const glm::vec3 to_eye = eye - *p;
       const glm::vec3 seen = *p + to_eye * ((kCardCentre.y - p->y) / to_eye.y);
       if (std::max(std::abs(seen.x), std::abs(seen.z)) < kCardHalf + 0.1f) continue;  // the card
-      const glm::vec3 to_light = kLight - *p;
+      const glm::vec3 to_light = directional ? kLight : kLight - *p;
       const glm::vec3 q = *p + to_light * ((kCardCentre.y - p->y) / to_light.y);
       // Texel coordinates on the card: u along x, v along z, 4 texels.
       const float u = (q.x - kCardCentre.x + kCardHalf) / (2.0f * kCardHalf) * 4.0f;
@@ -297,6 +301,32 @@ TEST_F(GpuTest, AlphaMaskedCardShadowHasTheCardsHoles) {
   const ShadowMetrics m = compare_shadow(hard, traced.image);
   std::printf("hard (4096) vs traced: MAE %.5f over %ld pixels\n", m.mean_absolute_error, m.pixels);
   EXPECT_LT(m.mean_absolute_error, 0.01);
+}
+
+// The holes in a point light's cube faces and a directional light's
+// cascades, with a single-sided card facing the light (a face turned the
+// wrong way in any view would drop its shadow there).
+TEST_F(GpuTest, AlphaMaskedCardHolesInCubeFacesAndCascades) {
+  for (const std::string light : {"point", "directional"}) {
+    Renderer renderer(
+        masked_card_scene("masked-card-" + light + ".gltf", "MASK", true, false, light));
+    const bool directional = light == "directional";
+    for (Technique t : {Technique::Hard, Technique::Msm}) {
+      const HoleCount h =
+          count_holes(render(renderer, View::Shadow, technique(t)), 0.8f, 0.2f, directional);
+      std::printf("%s light, technique %d: holes %d/%d lit, solid %d/%d dark\n", light.c_str(),
+                  static_cast<int>(t), h.holes_lit, h.holes, h.solid_dark, h.solid);
+      ASSERT_GT(h.holes, 12);
+      ASSERT_GT(h.solid, 12);
+      EXPECT_EQ(h.holes_lit, h.holes);
+      EXPECT_EQ(h.solid_dark, h.solid);
+    }
+    const TracedReference traced =
+        traced_reference(renderer, shadow_view(), technique(Technique::Hard), 1, "");
+    const HoleCount h = count_holes(traced.image, 0.99f, 0.01f, directional);
+    EXPECT_EQ(h.holes_lit, h.holes) << light;
+    EXPECT_EQ(h.solid_dark, h.solid) << light;
+  }
 }
 
 // BLEND is drawn as MASK at 0.5: the same holes.
