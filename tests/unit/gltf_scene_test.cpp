@@ -3,6 +3,7 @@
 // broken.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 
@@ -313,6 +314,61 @@ TEST(GltfScene, UnknownUsedExtensionIsAWarningNamingIt) {
   EXPECT_EQ(scene.shapes.size(), 1u);
   ASSERT_EQ(notes.warnings.size(), 1u);
   EXPECT_NE(notes.warnings[0].find("EXT_also_made_up"), std::string::npos) << notes.warnings[0];
+}
+
+}  // namespace
+}  // namespace penumbra
+
+namespace penumbra {
+namespace {
+
+// OBJ: map_Kd is the base-colour texture and map_d its alpha mask.
+TEST(ObjTextures, MapKdAndMapDMakeAMaskedTexture) {
+  std::vector<std::uint8_t> colour, mask;
+  for (int i = 0; i < 4; ++i) {
+    for (const int c : {200, 100, 50, 255}) colour.push_back(static_cast<std::uint8_t>(c));
+    for (const int c : {i < 2 ? 255 : 0, 0, 0, 255}) mask.push_back(static_cast<std::uint8_t>(c));
+  }
+  testing::write_rgba_png("obj-card/colour.png", 2, 2, colour);
+  testing::write_rgba_png("obj-card/mask.png", 2, 2, mask);
+  testing::write_model_file("obj-card/card.mtl",
+                            "newmtl leaf\nKd 1 1 1\nmap_Kd colour.png\nmap_d mask.png\n");
+  const Model model = load_model(testing::write_model_file(
+      "obj-card/card.obj",
+      "mtllib card.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+      "usemtl leaf\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n"));
+  ASSERT_EQ(model.materials.size(), 1u);
+  const Material& m = model.materials[0];
+  ASSERT_NE(m.texture, nullptr);
+  EXPECT_EQ(m.alpha_mode, AlphaMode::Mask);
+  EXPECT_TRUE(m.double_sided) << "OBJ has no sidedness: double-sided";
+  // Colour from map_Kd, alpha from map_d's grey level (it has no alpha).
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(m.texture->rgba[4 * i], 200);
+    EXPECT_EQ(m.texture->rgba[4 * i + 3], i < 2 ? 255 : 0);
+  }
+  // OBJ's vt has v up: the mask's top row (solid) is at v near 1, its
+  // bottom row (holes) at v near 0.
+  EXPECT_TRUE(is_cut_out(m, 1.0f, glm::vec2(0.25f, 0.25f)));
+  EXPECT_FALSE(is_cut_out(m, 1.0f, glm::vec2(0.25f, 0.75f)));
+}
+
+// Vertex colours (here a PLY's red, green, blue) reach the vertices.
+TEST(VertexColors, PlyColoursAreRead) {
+  const Model model = load_model(testing::write_model_file(
+      "coloured.ply",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n"));
+  ASSERT_EQ(model.mesh.vertices.size(), 3u);
+  std::vector<glm::vec4> colours;
+  for (const Vertex& v : model.mesh.vertices) colours.push_back(unpack_color(v.color));
+  for (const glm::vec4& expected :
+       {glm::vec4(1, 0, 0, 1), glm::vec4(0, 1, 0, 1), glm::vec4(0, 0, 1, 1)}) {
+    EXPECT_NE(std::find(colours.begin(), colours.end(), expected), colours.end())
+        << expected.r << " " << expected.g << " " << expected.b;
+  }
 }
 
 }  // namespace
