@@ -3,6 +3,8 @@
 #include <array>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "model_files.hpp"
@@ -11,6 +13,7 @@ namespace penumbra::testing {
 
 namespace {
 
+namespace fs = std::filesystem;
 using nlohmann::json;
 
 std::string base64(const std::string& bytes) {
@@ -161,7 +164,17 @@ std::string write_gltf(const std::string& name, const GltfSpec& spec) {
         {"baseColorFactor", {m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a}},
         {"metallicFactor", 0.0}};
     if (!m.image.empty()) {
-      images.push_back({{"uri", m.image}});
+      if (spec.binary) {
+        std::ifstream in(fs::path(PENUMBRA_TEST_OUTPUT) / "models" / m.image, std::ios::binary);
+        const std::string png((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+        while (buffer.size() % 4 != 0) buffer += '\0';
+        views.push_back({{"buffer", 0}, {"byteOffset", buffer.size()}, {"byteLength", png.size()}});
+        buffer += png;
+        images.push_back({{"bufferView", views.size() - 1}, {"mimeType", "image/png"}});
+      } else {
+        images.push_back({{"uri", m.image}});
+      }
       textures.push_back({{"source", images.size() - 1}, {"sampler", 0}});
       json info = {{"index", textures.size() - 1}};
       if (!m.texture_transform.empty()) {
@@ -230,7 +243,24 @@ std::string write_gltf(const std::string& name, const GltfSpec& spec) {
   for (const std::string& e : spec.extensions_required) used.push_back(e);
   if (!used.empty()) gltf["extensionsUsed"] = used;
   if (!spec.extensions_required.empty()) gltf["extensionsRequired"] = spec.extensions_required;
-  return write_model_file(name, gltf.dump());
+  if (!spec.binary) return write_model_file(name, gltf.dump());
+  // glTF 2.0, "Binary glTF Layout": a 12-byte header, the JSON chunk
+  // (padded with spaces), the BIN chunk (padded with zeros).
+  gltf["buffers"] = {{{"byteLength", buffer.size()}}};
+  std::string text = gltf.dump();
+  while (text.size() % 4 != 0) text += ' ';
+  while (buffer.size() % 4 != 0) buffer += '\0';
+  std::string glb = "glTF";
+  const auto u32 = [&](std::uint32_t v) { append(glb, v); };
+  u32(2);
+  u32(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + buffer.size()));
+  u32(static_cast<std::uint32_t>(text.size()));
+  u32(0x4E4F534Au);  // "JSON"
+  glb += text;
+  u32(static_cast<std::uint32_t>(buffer.size()));
+  u32(0x004E4942u);  // "BIN"
+  glb += buffer;
+  return write_model_file(name, glb);
 }
 
 }  // namespace penumbra::testing

@@ -51,12 +51,15 @@ struct GltfSpec {
   std::vector<GltfMaterialSpec> materials;  // at least one
   std::vector<GltfCameraSpec> cameras;
   std::vector<GltfLightSpec> lights;
+  // A .glb: one binary buffer holding the geometry and the images (read
+  // from the files the materials name, under the model folder).
+  bool binary = false;
   std::vector<std::string> extensions_used;      // beyond the ones the above need
   std::vector<std::string> extensions_required;  // also listed as used
 };
 
-// Writes the scene as `name` (a .gltf with its buffer embedded) under the
-// tests' model folder, and returns the path.
+// Writes the scene as `name` (a .gltf with its buffer embedded, or a .glb)
+// under the tests' model folder, and returns the path.
 std::string write_gltf(const std::string& name, const GltfSpec& spec);
 
 // Writes an 8-bit RGBA PNG (rows top to bottom) under the model folder.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <glm/gtc/constants.hpp>
 
 #include "core/error.hpp"
@@ -218,6 +219,26 @@ TEST(GltfTextures, MaterialReadsTextureAlphaModeAndTransform) {
     EXPECT_NEAR(t.x, expected.x, 1e-5f);
     EXPECT_NEAR(t.y, expected.y, 1e-5f);
   }
+}
+
+// A .glb with its texture embedded in the binary buffer (as exporters
+// write them): the texture is decoded from the buffer.
+TEST(GltfTextures, GlbWithAnEmbeddedTexture) {
+  testing::write_rgba_png("embedded-checker.png", 4, 4, checker_rgba(4));
+  GltfSpec spec = ground_quad();
+  spec.binary = true;
+  spec.materials[0] = {.image = "embedded-checker.png", .alpha_mode = "MASK"};
+  spec.cameras.push_back({.position = {0, 3, 3}, .target = {0, 0, 0}});
+  const std::string path = testing::write_gltf("embedded.glb", spec);
+  std::filesystem::remove(std::filesystem::path(path).parent_path() / "embedded-checker.png");
+  GltfSceneNotes notes;
+  const Scene scene = gltf_scene(path, -1, notes);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  ASSERT_NE(scene.materials[0].texture, nullptr);
+  EXPECT_EQ(scene.materials[0].texture->rgba, checker_rgba(4));
+  EXPECT_EQ(scene.materials[0].alpha_mode, AlphaMode::Mask);
+  expect_near(scene.camera.position, {0, 3, 3}, 1e-5f);
+  EXPECT_TRUE(notes.warnings.empty());
 }
 
 // A texture that is missing or not an image: one warning naming it, and
