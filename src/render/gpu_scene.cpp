@@ -67,6 +67,10 @@ gl::Sampler make_sampler(TextureWrap s, TextureWrap t, bool nearest) {
 
 }  // namespace
 
+bool is_cut_out_material(const Material& m) {
+  return coverage_cutoff(m) >= 0.0f || !m.double_sided;
+}
+
 GpuMaterial gpu_material(const Material& m) {
   const glm::mat3x2& t = m.uv_transform;
   int flags = 0;
@@ -86,30 +90,39 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
   if (materials.empty()) materials.push_back(gpu_material(Material{}));
   materials_ = gl::Buffer::from(std::span<const GpuMaterial>(materials), "materials");
 
-  // Batch b of each material: the untextured ones share batch 0 (and a
-  // white texel); textured ones share a batch per texture and sampler.
+  // Batch b of each material: untextured opaque ones share batch 0 (and
+  // a white texel); the others share a batch per texture, sampler and
+  // whether they are cut out.
   TextureImage white;
   white.name = "white";
   white.width = white.height = 1;
   white.rgba = {255, 255, 255, 255};
   textures_.push_back(upload(white));
-  samplers_.push_back(make_sampler(TextureWrap::Repeat, TextureWrap::Repeat, false));
-  batches_.push_back({});
   std::vector<std::size_t> batch_of(scene.materials.size(), 0);
   std::map<const TextureImage*, std::size_t> texture_index;
-  std::map<std::tuple<std::size_t, TextureWrap, TextureWrap, bool>, std::size_t> batch_index;
+  using Key = std::tuple<std::size_t, TextureWrap, TextureWrap, bool, bool>;
+  std::map<Key, std::size_t> batch_index;
+  const auto batch_for = [&](const Key& key) {
+    auto [b, added] = batch_index.try_emplace(key, batches_.size());
+    if (added) {
+      samplers_.push_back(make_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key)));
+      batches_.push_back({.cut_out = std::get<4>(key)});
+    }
+    return b->second;
+  };
+  batch_for({0, TextureWrap::Repeat, TextureWrap::Repeat, false, false});
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
-    if (m.texture == nullptr || m.texture->width <= 0 || m.texture->height <= 0) continue;
-    auto [t, new_texture] = texture_index.try_emplace(m.texture.get(), textures_.size());
-    if (new_texture) textures_.push_back(upload(*m.texture));
-    const auto key = std::make_tuple(t->second, m.wrap_s, m.wrap_t, m.nearest_magnification);
-    auto [b, new_batch] = batch_index.try_emplace(key, batches_.size());
-    if (new_batch) {
-      samplers_.push_back(make_sampler(m.wrap_s, m.wrap_t, m.nearest_magnification));
-      batches_.push_back({});
+    std::size_t texture = 0;
+    if (m.texture != nullptr && m.texture->width > 0 && m.texture->height > 0) {
+      auto [t, added] = texture_index.try_emplace(m.texture.get(), textures_.size());
+      if (added) textures_.push_back(upload(*m.texture));
+      texture = t->second;
     }
-    batch_of[i] = b->second;
+    batch_of[i] = texture == 0 ? batch_for({0, TextureWrap::Repeat, TextureWrap::Repeat, false,
+                                            is_cut_out_material(m)})
+                               : batch_for({texture, m.wrap_s, m.wrap_t, m.nearest_magnification,
+                                            is_cut_out_material(m)});
   }
   // Triangles ordered by batch (a counting sort; the order within a batch
   // is the mesh's).
@@ -134,13 +147,11 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
     }
   }
   indices_ = gl::Buffer::from(std::span<const std::uint32_t>(ordered), "scene indices");
-  // Batch b > 0 uses samplers_[b] and the texture of its key.
+  // Batch b uses samplers_[b] and the texture of its key.
   for (const auto& [key, b] : batch_index) {
     batches_[b].texture = &textures_[std::get<0>(key)];
     batches_[b].sampler = &samplers_[b];
   }
-  batches_[0].texture = &textures_[0];
-  batches_[0].sampler = &samplers_[0];
 
   const GLuint vao = vao_.id();
   glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
@@ -162,11 +173,15 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
   glVertexArrayAttribBinding(vao, 4, 0);
 }
 
-void GpuScene::draw() const {
+void GpuScene::draw(SurfaceSet set) const {
   glBindVertexArray(vao_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS_SSBO, materials_.id());
   for (const Batch& batch : batches_) {
     if (batch.index_count == 0) continue;
+    if ((set == SurfaceSet::Opaque && batch.cut_out) ||
+        (set == SurfaceSet::CutOut && !batch.cut_out)) {
+      continue;
+    }
     glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
     glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(batch.index_count), GL_UNSIGNED_INT,

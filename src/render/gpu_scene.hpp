@@ -23,13 +23,21 @@ static_assert(sizeof(GpuMaterial) == 64);
 // The material as the shaders read it.
 GpuMaterial gpu_material(const Material& m);
 
+// Which surfaces a draw covers. Passes draw cut-out surfaces (alpha-tested
+// or single-sided: their fragment shaders may discard) with a program of
+// their own, so that opaque surfaces keep early depth testing.
+enum class SurfaceSet { All, Opaque, CutOut };
+
+// Whether a material's fragments may be discarded (a hole, or a back).
+bool is_cut_out_material(const Material& m);
+
 class GpuScene {
  public:
   GpuScene(const Scene& scene, const TriangleMesh& mesh);
 
   // Binds the vertex array, the materials and each batch's texture (unit
-  // UNIT_BASE_COLOR), and draws every triangle.
-  void draw() const;
+  // UNIT_BASE_COLOR), and draws the triangles of the set.
+  void draw(SurfaceSet set = SurfaceSet::All) const;
   [[nodiscard]] std::size_t triangle_count() const { return index_count_ / 3; }
 
  private:
@@ -40,6 +48,7 @@ class GpuScene {
     std::size_t index_count = 0;
     const gl::Texture* texture = nullptr;
     const gl::Sampler* sampler = nullptr;
+    bool cut_out = false;
   };
   gl::Buffer vertices_;
   gl::Buffer indices_;
