@@ -22,6 +22,7 @@
 #define UNIT_GBUFFER_ALBEDO 2
 #define UNIT_GBUFFER_SPECULAR 3
 #define UNIT_AMBIENT_OCCLUSION 4  // the AO texture: read by the lighting pass and the SSAO blur
+#define UNIT_BASE_COLOR 5         // the scene's base-colour texture of the batch drawn
 // The shadow maps of every light's views, one array layer per view:
 #define UNIT_SHADOW_DEPTH 8     // z-bar depth maps
 #define UNIT_SHADOW_FILTERED 9  // the filtered representations (or summed-area tables)
@@ -46,6 +47,10 @@
 #define MAX_SOFT_RADIUS 64
 // Most samples per pixel of the SSAO kernel (GpuSsao::kernel)
 #define SSAO_MAX_SAMPLES 64
+
+// Material flags (GpuMaterial::uv_row1.w)
+#define MATERIAL_TEXTURED 1
+#define MATERIAL_DOUBLE_SIDED 2
 
 // Light types (GpuLight::position_type.w)
 #define LIGHT_SPOT 0

@@ -11,8 +11,9 @@ namespace penumbra {
 
 struct BenchArgs {
   std::string scene = "default";
-  std::string model;  // --model: instead of --scene
-  std::string light;  // --light: one light of this type alone (empty: the scene's lights)
+  std::string model;      // --model: instead of --scene
+  int camera_index = -1;  // --camera-index: a glTF scene's camera
+  std::string light;      // --light: one light of this type alone (empty: the scene's lights)
   std::string techniques = "msm";  // a name, a comma-separated list, or "all"
   std::string sweep = "none";      // none, map-size or blur
   int frames = 20;

@@ -19,7 +19,7 @@ namespace penumbra {
 namespace fs = std::filesystem;
 
 void add_report_command_options(CLI::App& command, ReportArgs& args) {
-  add_scene_source_options(command, args.scene, args.model);
+  add_scene_source_options(command, args.scene, args.model, args.camera_index);
   add_light_choice_option(command, args.light);
   in_group(command.add_option("-o,--output", args.output, "folder for index.html and its images")
                ->required()
@@ -44,7 +44,7 @@ int run_report_command(const ReportArgs& args) {
   check_output_path(fs::is_directory(args.output, ec)
                         ? (fs::path(args.output) / "index.html").string()
                         : args.output);
-  Scene scene = resolve_scene_source(args.scene, args.model);
+  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index);
   apply_light_choice(args.light, scene);
   auto context = gl::Context::create_headless();
   // Built in a temporary folder, moved into place when the page is

@@ -7,8 +7,9 @@ namespace penumbra {
 
 struct ReportArgs {
   std::string scene = "default";
-  std::string model;  // --model: instead of --scene
-  std::string light;  // --light: one light of this type alone (empty: the scene's lights)
+  std::string model;      // --model: instead of --scene
+  int camera_index = -1;  // --camera-index: a glTF scene's camera
+  std::string light;      // --light: one light of this type alone (empty: the scene's lights)
   std::string output;
   bool quick = false;
 };

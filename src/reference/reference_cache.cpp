@@ -67,9 +67,10 @@ std::size_t payload_size(int width, int height) {
 }  // namespace
 
 std::uint64_t reference_key(const TriangleMesh& mesh, const SurfacePoints& surfaces,
-                            const ReferenceLight& light, int samples) {
+                            const ReferenceLight& light, int samples, std::uint64_t cutouts) {
   Fnv1a h;
   h.value(kReferenceFormatVersion);
+  if (cutouts != 0) h.value(cutouts);  // keys of scenes without cut-outs are unchanged
   h.value(mesh.vertices.size());
   for (const Vertex& v : mesh.vertices) h.value(v.position);
   h.value(mesh.indices.size());

@@ -23,8 +23,9 @@ namespace penumbra {
 // size).
 inline constexpr std::uint32_t kReferenceFormatVersion = 3;
 
+// `cutouts`: CasterCutouts::hash() of the scene (0: none).
 std::uint64_t reference_key(const TriangleMesh& mesh, const SurfacePoints& surfaces,
-                            const ReferenceLight& light, int samples);
+                            const ReferenceLight& light, int samples, std::uint64_t cutouts = 0);
 
 // $XDG_CACHE_HOME/penumbra, else $HOME/.cache/penumbra; empty if neither
 // variable is set.

@@ -169,6 +169,22 @@ class FacetPackets {
   int size_ = 0;
 };
 
+// Embree's occlusion filter: a hit on a hole or on the back of a
+// single-sided caster does not count.
+void pass_cutouts(const RTCFilterFunctionNArguments* args) {
+  const auto* cutouts = static_cast<const CasterCutouts*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    const glm::vec3 direction(RTCRayN_dir_x(args->ray, args->N, i),
+                              RTCRayN_dir_y(args->ray, args->N, i),
+                              RTCRayN_dir_z(args->ray, args->N, i));
+    if (cutouts->passes(RTCHitN_primID(args->hit, args->N, i), RTCHitN_u(args->hit, args->N, i),
+                        RTCHitN_v(args->hit, args->N, i), direction)) {
+      args->valid[i] = 0;
+    }
+  }
+}
+
 }  // namespace
 
 ReferenceLight make_reference_light(const Light& light, const LightView& view,
@@ -197,9 +213,10 @@ constexpr std::size_t kHighQualityBuildTriangles = std::size_t{1} << 20;
 
 // The mesh's triangles as one Embree geometry attached to `scene`: the one
 // place the tracer's geometry is set up (and where per-geometry state,
-// such as an occlusion filter, belongs). Returns false if Embree cannot
-// allocate its buffers.
-bool attach_triangles(RTCDevice device, RTCScene scene, const TriangleMesh& mesh) {
+// such as the occlusion filter of `cutouts`, when given, belongs). Returns
+// false if Embree cannot allocate its buffers.
+bool attach_triangles(RTCDevice device, RTCScene scene, const TriangleMesh& mesh,
+                      const CasterCutouts* cutouts) {
   RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   const std::size_t triangles = mesh.indices.size() / 3;
   rtcSetGeometryBuildQuality(geometry, triangles > kHighQualityBuildTriangles
@@ -218,6 +235,11 @@ bool attach_triangles(RTCDevice device, RTCScene scene, const TriangleMesh& mesh
     std::memcpy(vertices + 3 * i, &mesh.vertices[i].position, 3 * sizeof(float));
   }
   std::memcpy(indices, mesh.indices.data(), triangles * 3 * sizeof(std::uint32_t));
+  if (cutouts != nullptr) {
+    // Const for the filter, which only reads it; Embree's user data is void*.
+    rtcSetGeometryUserData(geometry, const_cast<CasterCutouts*>(cutouts));
+    rtcSetGeometryOccludedFilterFunction(geometry, pass_cutouts);
+  }
   rtcCommitGeometry(geometry);
   rtcAttachGeometry(scene, geometry);
   rtcReleaseGeometry(geometry);
@@ -226,7 +248,13 @@ bool attach_triangles(RTCDevice device, RTCScene scene, const TriangleMesh& mesh
 
 }  // namespace
 
-ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh) {
+ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh)
+    : ShadowRayTracer(mesh, std::vector<Material>{}) {}
+
+ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Material>& materials) {
+  if (CasterCutouts cutouts(mesh, materials); cutouts.any()) {
+    cutouts_ = std::make_unique<CasterCutouts>(mesh, materials);
+  }
   device_ = rtcNewDevice(nullptr);
   if (device_ == nullptr) throw RuntimeError(embree_error(nullptr, "creating a device"));
   rtcSetDeviceErrorFunction(device_, on_embree_error, nullptr);
@@ -237,7 +265,7 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh) {
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   const bool large = mesh.indices.size() / 3 > kHighQualityBuildTriangles;
   rtcSetSceneBuildQuality(scene_, large ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH);
-  if (!mesh.indices.empty() && !attach_triangles(device_, scene_, mesh)) {
+  if (!mesh.indices.empty() && !attach_triangles(device_, scene_, mesh, cutouts_.get())) {
     const std::string message = embree_error(device_, "allocating the mesh");
     rtcReleaseScene(scene_);
     rtcReleaseDevice(device_);

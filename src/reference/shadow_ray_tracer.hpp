@@ -16,9 +16,12 @@
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
+#include <memory>
+#include <vector>
 
 #include "core/settings.hpp"
 #include "io/image.hpp"
+#include "reference/caster_cutouts.hpp"
 #include "render/surface_points.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
@@ -70,6 +73,10 @@ class ShadowRayTracer {
  public:
   // Builds Embree's BVH over the mesh. Throws RuntimeError if Embree fails.
   explicit ShadowRayTracer(const TriangleMesh& mesh);
+  // The same, with the scene's materials: shadow rays pass through the
+  // holes of alpha-tested casters and the backs of single-sided ones
+  // (caster_cutouts.hpp). Keeps references to both.
+  ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Material>& materials);
   ~ShadowRayTracer();
   ShadowRayTracer(const ShadowRayTracer&) = delete;
   ShadowRayTracer& operator=(const ShadowRayTracer&) = delete;
@@ -100,7 +107,8 @@ class ShadowRayTracer {
  private:
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
-  float max_coordinate_ = 0.0f;  // the largest |x|, |y| or |z| of a vertex
+  float max_coordinate_ = 0.0f;             // the largest |x|, |y| or |z| of a vertex
+  std::unique_ptr<CasterCutouts> cutouts_;  // null: nothing to cut
 };
 
 }  // namespace penumbra

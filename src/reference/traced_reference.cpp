@@ -26,7 +26,9 @@ TracedReference traced_reference(Renderer& renderer, const RenderSettings& rende
   r.light = make_reference_light(renderer.scene().lights[static_cast<std::size_t>(light_index)],
                                  renderer.light_view(light_index), shadow);
   r.rays = r.light.size > 0.0f ? samples : 1;
-  const std::uint64_t key = reference_key(renderer.mesh(), surfaces, r.light, r.rays);
+  const std::uint64_t key =
+      reference_key(renderer.mesh(), surfaces, r.light, r.rays,
+                    CasterCutouts(renderer.mesh(), renderer.scene().materials).hash());
   const auto start = std::chrono::steady_clock::now();
   std::optional<Image> cached;
   if (!cache_dir.empty()) {
@@ -36,7 +38,7 @@ TracedReference traced_reference(Renderer& renderer, const RenderSettings& rende
     r.image = std::move(*cached);
     r.cached = true;
   } else {
-    const ShadowRayTracer tracer(renderer.mesh());
+    const ShadowRayTracer tracer(renderer.mesh(), renderer.scene().materials);
     ProgressBar progress("tracing the reference");
     TraceStats stats;
     const auto trace_start = std::chrono::steady_clock::now();

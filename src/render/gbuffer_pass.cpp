@@ -3,7 +3,10 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass()
-    : program_(gl::Program::graphics("scene/gbuffer.vert", "scene/gbuffer.frag")) {}
+    : program_(
+          gl::Program::graphics("scene/gbuffer.vert", "scene/gbuffer.frag", {{"CUT_OUTS", "0"}})),
+      cut_out_program_(
+          gl::Program::graphics("scene/gbuffer.vert", "scene/gbuffer.frag", {{"CUT_OUTS", "1"}})) {}
 
 void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   if (width != width_ || height != height_) {
@@ -38,13 +41,15 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
-  program_.use();
   // The albedo target is sRGB8: with GL_FRAMEBUFFER_SRGB on, the linear
   // albedo the shader writes is encoded on the way in, and sampling decodes
   // it back (OpenGL 4.5, section 17.3.7). Off, the linear value would be
   // stored as if encoded and read back as albedo^2.2.
   glEnable(GL_FRAMEBUFFER_SRGB);
-  scene.draw();
+  program_.use();
+  scene.draw(SurfaceSet::Opaque);
+  cut_out_program_.use();
+  scene.draw(SurfaceSet::CutOut);
   glDisable(GL_FRAMEBUFFER_SRGB);
   glPopDebugGroup();
 }

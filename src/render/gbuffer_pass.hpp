@@ -20,7 +20,8 @@ class GBufferPass {
   [[nodiscard]] const gl::Texture& specular() const { return specular_; }
 
  private:
-  gl::Program program_;
+  gl::Program program_;          // opaque surfaces
+  gl::Program cut_out_program_;  // alpha-tested and single-sided ones
   gl::Texture depth_, normal_, albedo_, specular_;
   gl::Framebuffer framebuffer_;
   int width_ = 0, height_ = 0;

@@ -1,24 +1,157 @@
 #include "render/gpu_scene.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <map>
+#include <tuple>
 #include <vector>
 
 #include "shared/bindings.h"
 
 namespace penumbra {
 
+namespace {
+
+GLenum gl_wrap(TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::ClampToEdge:
+      return GL_CLAMP_TO_EDGE;
+    case TextureWrap::MirroredRepeat:
+      return GL_MIRRORED_REPEAT;
+    default:
+      return GL_REPEAT;
+  }
+}
+
+int mip_levels(int width, int height) {
+  int levels = 1;
+  while ((std::max(width, height) >> levels) > 0) ++levels;
+  return levels;
+}
+
+// An sRGB texture with its full mip chain: the colour is decoded to linear
+// before filtering (OpenGL 4.5, section 8.24), so that minified texels
+// average light, not its encoding.
+gl::Texture upload(const TextureImage& image) {
+  gl::Texture texture(gl::TextureInfo{.format = GL_SRGB8_ALPHA8,
+                                      .width = image.width,
+                                      .height = image.height,
+                                      .levels = mip_levels(image.width, image.height),
+                                      .label = image.name});
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                      image.rgba.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glGenerateTextureMipmap(texture.id());
+  return texture;
+}
+
+gl::Sampler make_sampler(TextureWrap s, TextureWrap t, bool nearest) {
+  gl::Sampler sampler(
+      gl::SamplerInfo{.min_filter = GL_LINEAR_MIPMAP_LINEAR,
+                      .mag_filter = static_cast<GLenum>(nearest ? GL_NEAREST : GL_LINEAR),
+                      .wrap = gl_wrap(s),
+                      .label = "base colour"});
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(gl_wrap(t)));
+  // Anisotropic filtering (core in OpenGL 4.6; an extension before): the
+  // ground and leaf cards are seen at grazing angles.
+  if (epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
+      epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic")) {
+    float most = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &most);
+    glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(16.0f, most));
+  }
+  return sampler;
+}
+
+}  // namespace
+
+bool is_cut_out_material(const Material& m) {
+  return coverage_cutoff(m) >= 0.0f || !m.double_sided;
+}
+
+GpuMaterial gpu_material(const Material& m) {
+  const glm::mat3x2& t = m.uv_transform;
+  int flags = 0;
+  if (m.texture != nullptr) flags |= MATERIAL_TEXTURED;
+  if (m.double_sided) flags |= MATERIAL_DOUBLE_SIDED;
+  return {glm::vec4(m.albedo, m.alpha), glm::vec4(m.specular, m.shininess),
+          glm::vec4(t[0][0], t[1][0], t[2][0], coverage_cutoff(m)),
+          glm::vec4(t[0][1], t[1][1], t[2][1], static_cast<float>(flags))};
+}
+
 GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
     : vertices_(gl::Buffer::from(std::span<const Vertex>(mesh.vertices), "scene vertices")),
-      indices_(gl::Buffer::from(std::span<const std::uint32_t>(mesh.indices), "scene indices")),
       vao_("scene"),
       index_count_(mesh.indices.size()) {
   std::vector<GpuMaterial> materials;
-  for (const Material& m : scene.materials) {
-    materials.push_back({glm::vec4(m.albedo, 1.0f), glm::vec4(m.specular, m.shininess)});
-  }
-  if (materials.empty())
-    materials.push_back({glm::vec4(0.8f), glm::vec4(0.04f, 0.04f, 0.04f, 32.0f)});
+  for (const Material& m : scene.materials) materials.push_back(gpu_material(m));
+  if (materials.empty()) materials.push_back(gpu_material(Material{}));
   materials_ = gl::Buffer::from(std::span<const GpuMaterial>(materials), "materials");
+
+  // Batch b of each material: untextured opaque ones share batch 0 (and
+  // a white texel); the others share a batch per texture, sampler and
+  // whether they are cut out.
+  TextureImage white;
+  white.name = "white";
+  white.width = white.height = 1;
+  white.rgba = {255, 255, 255, 255};
+  textures_.push_back(upload(white));
+  std::vector<std::size_t> batch_of(scene.materials.size(), 0);
+  std::map<const TextureImage*, std::size_t> texture_index;
+  using Key = std::tuple<std::size_t, TextureWrap, TextureWrap, bool, bool>;
+  std::map<Key, std::size_t> batch_index;
+  const auto batch_for = [&](const Key& key) {
+    auto [b, added] = batch_index.try_emplace(key, batches_.size());
+    if (added) {
+      samplers_.push_back(make_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key)));
+      batches_.push_back({.cut_out = std::get<4>(key)});
+    }
+    return b->second;
+  };
+  batch_for({0, TextureWrap::Repeat, TextureWrap::Repeat, false, false});
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    std::size_t texture = 0;
+    if (m.texture != nullptr && m.texture->width > 0 && m.texture->height > 0) {
+      auto [t, added] = texture_index.try_emplace(m.texture.get(), textures_.size());
+      if (added) textures_.push_back(upload(*m.texture));
+      texture = t->second;
+    }
+    batch_of[i] = texture == 0 ? batch_for({0, TextureWrap::Repeat, TextureWrap::Repeat, false,
+                                            is_cut_out_material(m)})
+                               : batch_for({texture, m.wrap_s, m.wrap_t, m.nearest_magnification,
+                                            is_cut_out_material(m)});
+  }
+  // Triangles ordered by batch (a counting sort; the order within a batch
+  // is the mesh's).
+  const auto triangle_batch = [&](std::size_t triangle) {
+    const std::uint32_t material = mesh.vertices[mesh.indices[3 * triangle]].material;
+    return material < batch_of.size() ? batch_of[material] : 0;
+  };
+  const std::size_t triangles = mesh.indices.size() / 3;
+  for (std::size_t i = 0; i < triangles; ++i) batches_[triangle_batch(i)].index_count += 3;
+  for (std::size_t b = 1; b < batches_.size(); ++b) {
+    batches_[b].first_index = batches_[b - 1].first_index + batches_[b - 1].index_count;
+  }
+  std::vector<std::uint32_t> ordered(mesh.indices.size());
+  {
+    std::vector<std::size_t> next(batches_.size());
+    for (std::size_t b = 0; b < batches_.size(); ++b) next[b] = batches_[b].first_index;
+    for (std::size_t i = 0; i < triangles; ++i) {
+      std::size_t& at = next[triangle_batch(i)];
+      std::copy_n(mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * i), 3,
+                  ordered.begin() + static_cast<std::ptrdiff_t>(at));
+      at += 3;
+    }
+  }
+  indices_ = gl::Buffer::from(std::span<const std::uint32_t>(ordered), "scene indices");
+  // Batch b uses samplers_[b] and the texture of its key.
+  for (const auto& [key, b] : batch_index) {
+    batches_[b].texture = &textures_[std::get<0>(key)];
+    batches_[b].sampler = &samplers_[b];
+  }
 
   const GLuint vao = vao_.id();
   glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
@@ -32,12 +165,29 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
   glEnableVertexArrayAttrib(vao, 2);
   glVertexArrayAttribIFormat(vao, 2, 1, GL_UNSIGNED_INT, offsetof(Vertex, material));
   glVertexArrayAttribBinding(vao, 2, 0);
+  glEnableVertexArrayAttrib(vao, 3);
+  glVertexArrayAttribFormat(vao, 3, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, uv));
+  glVertexArrayAttribBinding(vao, 3, 0);
+  glEnableVertexArrayAttrib(vao, 4);
+  glVertexArrayAttribFormat(vao, 4, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(Vertex, color));
+  glVertexArrayAttribBinding(vao, 4, 0);
 }
 
-void GpuScene::draw() const {
+void GpuScene::draw(SurfaceSet set) const {
   glBindVertexArray(vao_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS_SSBO, materials_.id());
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(index_count_), GL_UNSIGNED_INT, nullptr);
+  for (const Batch& batch : batches_) {
+    if (batch.index_count == 0) continue;
+    if ((set == SurfaceSet::Opaque && batch.cut_out) ||
+        (set == SurfaceSet::CutOut && !batch.cut_out)) {
+      continue;
+    }
+    glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
+    glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(batch.index_count), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(batch.first_index * sizeof(std::uint32_t)));
+  }
+  glBindSampler(UNIT_BASE_COLOR, 0);
 }
 
 }  // namespace penumbra

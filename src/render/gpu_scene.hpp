@@ -1,5 +1,8 @@
 #pragma once
-// A scene's triangles and materials on the GPU, drawn with one call.
+// A scene's triangles, materials and base-colour textures on the GPU, drawn
+// with one call per texture.
+#include <vector>
+
 #include "gl/resources.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
@@ -8,25 +11,53 @@ namespace penumbra {
 
 // Mirrors the Material struct of shaders/scene/material.glsl (std430).
 struct GpuMaterial {
-  glm::vec4 albedo;
-  glm::vec4 specular_shininess;
+  glm::vec4 albedo;              // rgb: linear albedo, a: coverage factor
+  glm::vec4 specular_shininess;  // rgb: specular colour, w: Blinn-Phong exponent
+  // xyz: the rows of Material::uv_transform; row0.w: the coverage cutoff
+  // (negative: opaque), row1.w: MATERIAL_* flags
+  glm::vec4 uv_row0;
+  glm::vec4 uv_row1;
 };
-static_assert(sizeof(GpuMaterial) == 32);
+static_assert(sizeof(GpuMaterial) == 64);
+
+// The material as the shaders read it.
+GpuMaterial gpu_material(const Material& m);
+
+// Which surfaces a draw covers. Passes draw cut-out surfaces (alpha-tested
+// or single-sided: their fragment shaders may discard) with a program of
+// their own, so that opaque surfaces keep early depth testing.
+enum class SurfaceSet { All, Opaque, CutOut };
+
+// Whether a material's fragments may be discarded (a hole, or a back).
+bool is_cut_out_material(const Material& m);
 
 class GpuScene {
  public:
   GpuScene(const Scene& scene, const TriangleMesh& mesh);
 
-  // Binds the vertex array and the materials, and draws every triangle.
-  void draw() const;
+  // Binds the vertex array, the materials and each batch's texture (unit
+  // UNIT_BASE_COLOR), and draws the triangles of the set.
+  void draw(SurfaceSet set = SurfaceSet::All) const;
   [[nodiscard]] std::size_t triangle_count() const { return index_count_ / 3; }
 
  private:
+  // Triangles whose materials share a texture and sampler, contiguous in
+  // the index buffer.
+  struct Batch {
+    std::size_t first_index = 0;
+    std::size_t index_count = 0;
+    const gl::Texture* texture = nullptr;
+    const gl::Sampler* sampler = nullptr;
+    bool cut_out = false;
+  };
   gl::Buffer vertices_;
   gl::Buffer indices_;
   gl::Buffer materials_;
   gl::VertexArray vao_;
   std::size_t index_count_ = 0;
+  std::vector<gl::Texture> textures_;  // [0]: 1x1 white, for untextured materials
+  std::vector<gl::Sampler> samplers_;
+  std::vector<Batch> batches_;
 };
 
 }  // namespace penumbra

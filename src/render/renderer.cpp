@@ -174,6 +174,10 @@ void Renderer::camera_depth_range(int width, int height, float& near_plane,
   }
   far_plane = std::max(zmax * 1.01f, 1e-2f);
   near_plane = std::max(zmin * 0.99f, far_plane * 1e-4f);
+  // A scene file's own clip planes (glTF's znear, zfar) bound the fit.
+  if (scene_.camera.far_plane > 0.0f) far_plane = std::min(far_plane, scene_.camera.far_plane);
+  if (scene_.camera.near_plane > 0.0f) near_plane = std::max(near_plane, scene_.camera.near_plane);
+  if (!(near_plane < far_plane)) far_plane = 2.0f * near_plane;  // nothing between them
   depth_range_ = {.valid = true,
                   .camera = scene_.camera,
                   .width = width,

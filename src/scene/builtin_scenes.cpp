@@ -156,7 +156,6 @@ Scene framed_model_scene(const std::string& path) {
   model.scale = glm::vec3(scale);
   // Centred over the origin, its lowest point on the ground.
   model.position = {-scale * b.center().x, -scale * b.min.y, -scale * b.center().z};
-  const float height = scale * extent.y;
   const float radius = 0.5f * scale * glm::length(extent);  // of the bounding sphere
   scene.shapes.push_back(model);
 
@@ -167,32 +166,51 @@ Scene framed_model_scene(const std::string& path) {
   ground.size = {10.0f * radius, 0.0f, 10.0f * radius};
   scene.shapes.insert(scene.shapes.begin(), ground);
 
+  Bounds placed;
+  placed.extend(scale * b.min + model.position);
+  placed.extend(scale * b.max + model.position);
+  scene.camera = framing_camera(placed);
+  scene.lights = framing_lights(placed);
+  return scene;
+}
+
+Camera framing_camera(const Bounds& bounds) {
+  const glm::vec3 extent = bounds.max - bounds.min;
+  const float height = extent.y;
+  const float radius = 0.5f * glm::length(extent);  // of the bounding sphere
+  const glm::vec3 base{bounds.center().x, bounds.min.y, bounds.center().z};
   // From the front, 40 degrees above the horizon (so that the top edge of
   // a 16:9 image still meets the ground), the bounding sphere filling 80%
   // of the image's height; the aim is a little below the middle, so that
   // the ground and the shadow show.
-  scene.camera.fov_y_degrees = 40.0f;
-  const float distance = radius / std::sin(glm::radians(0.5f * scene.camera.fov_y_degrees)) / 0.8f;
+  Camera camera;
+  camera.fov_y_degrees = 40.0f;
+  const float distance = radius / std::sin(glm::radians(0.5f * camera.fov_y_degrees)) / 0.8f;
   const float elevation = glm::radians(40.0f);
-  scene.camera.target = {0.0f, 0.4f * height, 0.0f};
-  scene.camera.position =
-      scene.camera.target + distance * glm::vec3(0.0f, std::sin(elevation), std::cos(elevation));
+  camera.target = base + glm::vec3(0.0f, 0.4f * height, 0.0f);
+  camera.position =
+      camera.target + distance * glm::vec3(0.0f, std::sin(elevation), std::cos(elevation));
+  return camera;
+}
 
+std::vector<Light> framing_lights(const Bounds& bounds) {
+  const glm::vec3 extent = bounds.max - bounds.min;
+  const float height = extent.y;
+  const float radius = 0.5f * glm::length(extent);
+  const glm::vec3 base{bounds.center().x, bounds.min.y, bounds.center().z};
   // Up and to the front right, as in the default scene, far enough for a
   // narrow cone to hold the model and its shadow behind it.
   Light spot;
   spot.type = LightType::Spot;
-  spot.position = radius * glm::vec3(1.6f, 4.0f, 2.2f);
-  const glm::vec3 aim{0.0f, 0.25f * height, 0.0f};
+  spot.position = base + radius * glm::vec3(1.6f, 4.0f, 2.2f);
+  const glm::vec3 aim = base + glm::vec3(0.0f, 0.25f * height, 0.0f);
   spot.direction = glm::normalize(aim - spot.position);
   spot.color = {1.0f, 0.95f, 0.85f};
   // About the default scene's irradiance where the light meets the model.
   spot.intensity = 0.9f * glm::dot(spot.position - aim, spot.position - aim);
   spot.cone_degrees = 32.0f;
   spot.inner_cone_degrees = 24.0f;
-  scene.lights.push_back(spot);
-  scene.lights.push_back(sky_light());
-  return scene;
+  return {spot, sky_light()};
 }
 
 std::vector<std::string> builtin_scene_names() {

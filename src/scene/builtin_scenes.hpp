@@ -22,4 +22,13 @@ std::optional<Scene> builtin_scene(const std::string& name);
 inline constexpr float kFramedModelSize = 2.0f;
 Scene framed_model_scene(const std::string& path);
 
+// The camera framed_model_scene aims at a model, for any world-space
+// bounds: from the front, 40 degrees above the horizon, the bounding
+// sphere filling 80% of the image's height.
+Camera framing_camera(const Bounds& bounds);
+
+// framed_model_scene's lights for any world-space bounds: the key spot
+// light from the front right, up high, and the dim directional sky light.
+std::vector<Light> framing_lights(const Bounds& bounds);
+
 }  // namespace penumbra

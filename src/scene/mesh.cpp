@@ -23,7 +23,7 @@ constexpr float kPi = std::numbers::pi_v<float>;
 struct Builder {
   TriangleMesh local;
   std::uint32_t add(glm::vec3 p, glm::vec3 n) {
-    local.vertices.push_back({p, n, 0});
+    local.vertices.push_back({p, n, 0, glm::vec2(0.0f), 0xffffffffu});
     return static_cast<std::uint32_t>(local.vertices.size() - 1);
   }
   void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
@@ -187,7 +187,7 @@ void append_transformed(TriangleMesh& mesh, const TriangleMesh& local, const Sha
   for (const Vertex& v : local.vertices) {
     mesh.vertices.push_back({glm::vec3(m * glm::vec4(v.position, 1.0f)),
                              glm::normalize(normal_matrix * v.normal),
-                             material_offsets ? material + v.material : material});
+                             material_offsets ? material + v.material : material, v.uv, v.color});
   }
   for (std::uint32_t i : local.indices) mesh.indices.push_back(base + i);
 }

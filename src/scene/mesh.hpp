@@ -16,6 +16,8 @@ struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
   std::uint32_t material;
+  glm::vec2 uv{0.0f};                 // texture coordinates, v up (see Material::uv_transform)
+  std::uint32_t color = 0xffffffffu;  // linear RGBA, 8 bits each, red in the low byte
 };
 
 struct TriangleMesh {

@@ -1,5 +1,6 @@
 #include "scene/model.hpp"
 
+#include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -12,17 +13,22 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <memory>
 #include <new>
 #include <sstream>
 #include <type_traits>
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
+#include "scene/gltf_lights.hpp"
 #include "scene/smooth_normals.hpp"
+#include "scene/texture.hpp"
 
 namespace penumbra {
 
@@ -175,10 +181,142 @@ bool read_color(const aiMaterial& m, const char* key, unsigned type, unsigned in
   return true;
 }
 
+// Textures of one model, each decoded once however many materials use it.
+class TextureReader {
+ public:
+  TextureReader(const aiScene& scene, const std::string& model_path,
+                std::vector<std::string>& warnings)
+      : scene_(scene),
+        model_path_(model_path),
+        folder_(fs::path(model_path).parent_path()),
+        warnings_(warnings) {}
+
+  // The texture a material names, or null (with a warning) if it cannot be
+  // read.
+  std::shared_ptr<const TextureImage> get(const std::string& reference) {
+    auto [it, added] = cache_.try_emplace(reference);
+    if (added) it->second = read(reference);
+    return it->second;
+  }
+
+ private:
+  std::shared_ptr<const TextureImage> read(const std::string& reference) {
+    std::string error;
+    std::optional<TextureImage> image;
+    std::string name = reference;
+    if (const aiTexture* embedded = scene_.GetEmbeddedTexture(reference.c_str())) {
+      name = model_path_ + ": embedded texture " + reference;
+      if (embedded->mHeight == 0) {  // compressed: mWidth bytes of a PNG, JPEG, ...
+        image = decode_texture(reinterpret_cast<const std::uint8_t*>(embedded->pcData),
+                               embedded->mWidth, name, error);
+      } else {  // raw aiTexel, BGRA
+        TextureImage raw;
+        raw.name = name;
+        raw.width = static_cast<int>(embedded->mWidth);
+        raw.height = static_cast<int>(embedded->mHeight);
+        const std::size_t count = std::size_t{embedded->mWidth} * embedded->mHeight;
+        raw.rgba.resize(4 * count);
+        for (std::size_t i = 0; i < count; ++i) {
+          const aiTexel& t = embedded->pcData[i];
+          raw.rgba[4 * i] = t.r;
+          raw.rgba[4 * i + 1] = t.g;
+          raw.rgba[4 * i + 2] = t.b;
+          raw.rgba[4 * i + 3] = t.a;
+        }
+        image = std::move(raw);
+      }
+    } else {
+      // OBJ files written on Windows separate folders with backslashes.
+      std::string relative = reference;
+      std::replace(relative.begin(), relative.end(), '\\', '/');
+      const fs::path file = folder_ / relative;
+      name = file.string();
+      std::error_code ec;
+      if (!fs::is_regular_file(file, ec)) {
+        error = fs::exists(file, ec) ? "is not a regular file" : "no such file";
+      } else {
+        image = read_texture(file.string(), error);
+      }
+    }
+    if (!image) {
+      warnings_.push_back(name + ": " + error + "; using the material's flat colour");
+      return nullptr;
+    }
+    return std::make_shared<const TextureImage>(std::move(*image));
+  }
+
+  const aiScene& scene_;
+  std::string model_path_;
+  fs::path folder_;
+  std::vector<std::string>& warnings_;
+  std::map<std::string, std::shared_ptr<const TextureImage>> cache_;
+};
+
+TextureWrap to_wrap(int mode) {
+  switch (mode) {
+    case aiTextureMapMode_Clamp:
+    case aiTextureMapMode_Decal:
+      return TextureWrap::ClampToEdge;
+    case aiTextureMapMode_Mirror:
+      return TextureWrap::MirroredRepeat;
+    default:
+      return TextureWrap::Repeat;
+  }
+}
+
+// glTF's KHR_texture_transform as assimp 5.2 stores it: it negates the
+// rotation and moves the translation so that the transform turns about
+// the texture's centre in its v-flipped coordinates (glTF2Importer.cpp).
+// This undoes that, then maps uv (v up) to the image's coordinates:
+// glTF's uv' = T(offset) R(rotation) S(scale) uv, on uv with v down.
+glm::mat3x2 gltf_uv_transform(const aiUVTransform& t) {
+  const float sx = t.mScaling.x, sy = t.mScaling.y;
+  const float rotation = -t.mRotation;
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  const float offset_x = t.mTranslation.x - 0.5f * sx * (-c + s + 1.0f);
+  const float offset_y = -(t.mTranslation.y - 0.5f * sy * (s + c - 1.0f) - 1.0f + sy);
+  // glTF's matrix (column-major): [[c, -s], [s, c]] * diag(sx, sy), then
+  // the offset; applied to (u, 1 - v).
+  const glm::mat3 gltf(glm::vec3(c * sx, -s * sx, 0.0f), glm::vec3(s * sy, c * sy, 0.0f),
+                       glm::vec3(offset_x, offset_y, 1.0f));
+  const glm::mat3 flip(glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f),
+                       glm::vec3(0.0f, 1.0f, 1.0f));
+  return glm::mat3x2(gltf * flip);
+}
+
+// OBJ's map_d as the base colour's alpha: the opacity image's alpha (or
+// its grey level, for an image without alpha) at the same texture
+// coordinate, nearest texel.
+std::shared_ptr<const TextureImage> with_opacity(const std::shared_ptr<const TextureImage>& base,
+                                                 const TextureImage& opacity) {
+  TextureImage out;
+  if (base != nullptr) {
+    out = *base;
+  } else {
+    out.name = opacity.name;
+    out.width = opacity.width;
+    out.height = opacity.height;
+    out.rgba.assign(opacity.rgba.size(), 255);
+  }
+  bool has_alpha = false;
+  for (std::size_t i = 3; i < opacity.rgba.size(); i += 4) has_alpha |= opacity.rgba[i] != 255;
+  for (int y = 0; y < out.height; ++y) {
+    const int oy = y * opacity.height / out.height;
+    for (int x = 0; x < out.width; ++x) {
+      const int ox = x * opacity.width / out.width;
+      const std::size_t o = 4 * (static_cast<std::size_t>(oy) * opacity.width + ox);
+      out.rgba[4 * (static_cast<std::size_t>(y) * out.width + x) + 3] =
+          opacity.rgba[o + (has_alpha ? 3 : 0)];
+    }
+  }
+  return std::make_shared<const TextureImage>(std::move(out));
+}
+
 // The base colour (glTF's metallic-roughness model) or else the diffuse
-// colour (OBJ's Kd, PLY, ...), both linear; the specular colour and
-// exponent where the file has them. Textures are not read.
-Material to_material(const aiMaterial& m) {
+// colour (OBJ's Kd, PLY, ...), both linear, and its texture; the specular
+// colour and exponent where the file has them; glTF's alpha mode, cutoff
+// and doubleSided; OBJ's map_d as a mask.
+Material to_material(const aiMaterial& m, TextureReader& textures) {
   Material out;
   aiString name;
   if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
@@ -191,6 +329,54 @@ Material to_material(const aiMaterial& m) {
   if (m.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && std::isfinite(shininess) &&
       shininess >= 1.0f) {
     out.shininess = std::min(shininess, 10000.0f);
+  }
+  float opacity = 1.0f;
+  if (m.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && std::isfinite(opacity)) {
+    out.alpha = std::clamp(opacity, 0.0f, 1.0f);
+  }
+  aiString alpha_mode;
+  const bool gltf = m.Get(AI_MATKEY_GLTF_ALPHAMODE, alpha_mode) == AI_SUCCESS;
+  if (gltf) {
+    const std::string mode = alpha_mode.C_Str();
+    out.alpha_mode = mode == "MASK"    ? AlphaMode::Mask
+                     : mode == "BLEND" ? AlphaMode::Blend
+                                       : AlphaMode::Opaque;
+    float cutoff = 0.5f;
+    if (m.Get(AI_MATKEY_GLTF_ALPHACUTOFF, cutoff) == AI_SUCCESS && std::isfinite(cutoff)) {
+      out.alpha_cutoff = std::clamp(cutoff, 0.0f, 1.0f);
+    }
+    int two_sided = 0;
+    out.double_sided = m.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS && two_sided != 0;
+  }
+
+  aiString file;
+  const aiTextureType type = m.GetTextureCount(aiTextureType_BASE_COLOR) > 0
+                                 ? aiTextureType_BASE_COLOR
+                                 : aiTextureType_DIFFUSE;
+  if (m.GetTextureCount(type) > 0 &&
+      m.GetTexture(type, 0, &file, nullptr, nullptr, nullptr, nullptr) == AI_SUCCESS) {
+    out.texture = textures.get(file.C_Str());
+    int mode = 0;
+    if (m.Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS) out.wrap_s = to_wrap(mode);
+    if (m.Get(AI_MATKEY_MAPPINGMODE_V(type, 0), mode) == AI_SUCCESS) out.wrap_t = to_wrap(mode);
+    int filter = 0;
+    // glTF's magFilter: 9728 is NEAREST.
+    if (m.Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), filter) == AI_SUCCESS) {
+      out.nearest_magnification = filter == 9728;
+    }
+    aiUVTransform transform;
+    if (gltf && m.Get(AI_MATKEY_UVTRANSFORM(type, 0), transform) == AI_SUCCESS) {
+      out.uv_transform = gltf_uv_transform(transform);
+    }
+  }
+  // OBJ's map_d: a cut-out mask (OBJ has no alpha mode; a mask is what
+  // such a texture is for on leaves and fences).
+  if (!gltf && m.GetTextureCount(aiTextureType_OPACITY) > 0 &&
+      m.GetTexture(aiTextureType_OPACITY, 0, &file) == AI_SUCCESS) {
+    if (auto opacity = textures.get(file.C_Str())) {
+      out.texture = with_opacity(out.texture, *opacity);
+      out.alpha_mode = AlphaMode::Mask;
+    }
   }
   return out;
 }
@@ -268,6 +454,85 @@ void smooth_normals(TriangleMesh& mesh, std::uint32_t first_vertex, std::size_t 
   for (std::uint32_t i : part.indices) mesh.indices.push_back(first_vertex + i);
 }
 
+// The node's transform to the file's world space (its ancestors' applied).
+glm::mat4 world_transform(const aiNode* node) {
+  glm::mat4 m(1.0f);
+  for (; node != nullptr; node = node->mParent) {
+    const aiMatrix4x4& t = node->mTransformation;  // row-major
+    const glm::mat4 local(t.a1, t.b1, t.c1, t.d1, t.a2, t.b2, t.c2, t.d2, t.a3, t.b3, t.c3, t.d3,
+                          t.a4, t.b4, t.c4, t.d4);
+    m = local * m;
+  }
+  return m;
+}
+
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Cameras and lights, placed as glTF places them: at their node's origin,
+// looking (shining) down its -z axis, the camera's up its +y (glTF 2.0,
+// "Cameras"; KHR_lights_punctual). Assimp 5.2 also copies a camera's node
+// translation into aiCamera::mPosition, so that is not added again here.
+// A camera or light whose node is missing or degenerate is left out.
+void read_cameras_and_lights(const aiScene& scene, Model& model) {
+  for (unsigned i = 0; i < scene.mNumCameras; ++i) {
+    const aiCamera& in = *scene.mCameras[i];
+    const aiNode* node = scene.mRootNode ? scene.mRootNode->FindNode(in.mName) : nullptr;
+    if (node == nullptr) continue;
+    const glm::mat4 w = world_transform(node);
+    ModelCamera out;
+    out.name = in.mName.C_Str();
+    const glm::vec3 position(w[3]);
+    const glm::vec3 forward = glm::vec3(w * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+    const glm::vec3 up = glm::vec3(w * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+    const float length = glm::length(forward);
+    if (!finite(position) || !(length > 0.0f) || !std::isfinite(length) ||
+        !(glm::length(glm::cross(forward, up)) > 0.0f)) {
+      continue;
+    }
+    out.camera.position = position;
+    out.camera.target = position + forward / length;
+    out.camera.up = glm::normalize(up);
+    // Assimp 5.2 stores glTF's yfov times aspectRatio as the horizontal
+    // field of view (and the aspect ratio, 0 when the file gives none).
+    const float yfov = in.mAspect > 0.0f ? in.mHorizontalFOV / in.mAspect : in.mHorizontalFOV;
+    out.camera.fov_y_degrees = std::clamp(glm::degrees(yfov), 1.0f, 170.0f);
+    if (std::isfinite(in.mClipPlaneNear) && in.mClipPlaneNear > 0.0f) {
+      out.camera.near_plane = in.mClipPlaneNear;
+    }
+    if (std::isfinite(in.mClipPlaneFar) && in.mClipPlaneFar > out.camera.near_plane) {
+      out.camera.far_plane = in.mClipPlaneFar;
+    }
+    out.orthographic = in.mOrthographicWidth > 0.0f;
+    model.cameras.push_back(out);
+  }
+  for (unsigned i = 0; i < scene.mNumLights; ++i) {
+    const aiLight& in = *scene.mLights[i];
+    ModelLight out;
+    out.name = in.mName.C_Str();
+    const aiNode* node = scene.mRootNode ? scene.mRootNode->FindNode(in.mName) : nullptr;
+    if (node == nullptr) continue;
+    const glm::mat4 w = world_transform(node);
+    // Assimp gives colour times intensity.
+    const glm::vec3 power(in.mColorDiffuse.r, in.mColorDiffuse.g, in.mColorDiffuse.b);
+    if (!finite(power)) continue;
+    GltfLightType type = GltfLightType::Point;
+    if (in.mType == aiLightSource_DIRECTIONAL)
+      type = GltfLightType::Directional;
+    else if (in.mType == aiLightSource_SPOT)
+      type = GltfLightType::Spot;
+    else if (in.mType != aiLightSource_POINT)
+      continue;
+    out.light = light_from_gltf(type, power, 1.0f, in.mAngleInnerCone, in.mAngleOuterCone);
+    out.light.position = glm::vec3(w[3]);
+    const glm::vec3 direction = glm::vec3(w * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+    if (!finite(out.light.position) || !(glm::length(direction) > 0.0f)) continue;
+    out.light.direction = glm::normalize(direction);
+    model.lights.push_back(out);
+  }
+}
+
 // Reads and checks the model in this process.
 Model read_model(const std::string& path) {
   const ImportWarnings warnings;
@@ -278,15 +543,17 @@ Model read_model(const std::string& path) {
   if (scene == nullptr) fail_import(path, importer);
   warnings.check(path);
   check_raw(path, *scene);
+
+  Model model;
+  model.path = path;
+  read_cameras_and_lights(*scene, model);
   scene = importer.ApplyPostProcessing(kPostProcess);
   if (scene == nullptr) fail_import(path, importer);
   warnings.check(path);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mNumMeshes == 0) {
     fail(path, "the file holds no triangles");
   }
-
-  Model model;
-  model.path = path;
+  TextureReader textures(*scene, path, model.warnings);
   TriangleMesh& mesh = model.mesh;
   std::size_t vertex_total = 0, face_total = 0;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
@@ -312,7 +579,7 @@ Model read_model(const std::string& path) {
     int& material = material_of[in.mMaterialIndex];
     if (material < 0) {
       material = static_cast<int>(model.materials.size());
-      model.materials.push_back(to_material(*scene->mMaterials[in.mMaterialIndex]));
+      model.materials.push_back(to_material(*scene->mMaterials[in.mMaterialIndex], textures));
     }
 
     const std::uint32_t base = static_cast<std::uint32_t>(mesh.vertices.size());
@@ -332,7 +599,18 @@ Model read_model(const std::string& path) {
       } else if (in.mNormals != nullptr) {
         broken_normals.push_back(base + v);
       }
-      mesh.vertices.push_back({{p.x, p.y, p.z}, normal, static_cast<std::uint32_t>(material)});
+      glm::vec2 uv(0.0f);
+      if (in.mTextureCoords[0] != nullptr) {
+        uv = {in.mTextureCoords[0][v].x, in.mTextureCoords[0][v].y};
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
+      }
+      std::uint32_t color = 0xffffffffu;
+      if (in.mColors[0] != nullptr) {
+        const aiColor4D& c = in.mColors[0][v];
+        color = pack_color({c.r, c.g, c.b, c.a});
+      }
+      mesh.vertices.push_back(
+          {{p.x, p.y, p.z}, normal, static_cast<std::uint32_t>(material), uv, color});
       model.bounds.extend({p.x, p.y, p.z});
     }
     for (unsigned f = 0; f < in.mNumFaces; ++f) {
@@ -371,21 +649,63 @@ void put_array(std::string& out, const std::vector<T>& values) {
   out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
 }
 
+void put_string(std::string& out, const std::string& text) {
+  put(out, static_cast<std::uint64_t>(text.size()));
+  out += text;
+}
+
 std::string serialize(const Model& model) {
   std::string out;
   out.reserve(32 + model.mesh.vertices.size() * sizeof(Vertex) +
               model.mesh.indices.size() * sizeof(std::uint32_t));
   put_array(out, model.mesh.vertices);
   put_array(out, model.mesh.indices);
+  // Each texture once, then the materials' indices into them (-1: none).
+  std::vector<const TextureImage*> textures;
+  for (const Material& m : model.materials) {
+    if (m.texture != nullptr &&
+        std::find(textures.begin(), textures.end(), m.texture.get()) == textures.end()) {
+      textures.push_back(m.texture.get());
+    }
+  }
+  put(out, static_cast<std::uint64_t>(textures.size()));
+  for (const TextureImage* t : textures) {
+    put_string(out, t->name);
+    put(out, t->width);
+    put(out, t->height);
+    put_array(out, t->rgba);
+  }
   put(out, static_cast<std::uint64_t>(model.materials.size()));
   for (const Material& m : model.materials) {
-    put(out, static_cast<std::uint64_t>(m.name.size()));
-    out += m.name;
+    put_string(out, m.name);
     put(out, m.albedo);
     put(out, m.specular);
     put(out, m.shininess);
+    put(out, m.alpha);
+    put(out, m.alpha_mode);
+    put(out, m.alpha_cutoff);
+    put(out, m.double_sided);
+    const auto it = std::find(textures.begin(), textures.end(), m.texture.get());
+    put(out, m.texture == nullptr ? std::int64_t{-1} : std::int64_t(it - textures.begin()));
+    put(out, m.wrap_s);
+    put(out, m.wrap_t);
+    put(out, m.nearest_magnification);
+    put(out, m.uv_transform);
   }
   put(out, model.bounds);
+  put(out, static_cast<std::uint64_t>(model.cameras.size()));
+  for (const ModelCamera& c : model.cameras) {
+    put_string(out, c.name);
+    put(out, c.camera);
+    put(out, c.orthographic);
+  }
+  put(out, static_cast<std::uint64_t>(model.lights.size()));
+  for (const ModelLight& l : model.lights) {
+    put_string(out, l.name);
+    put(out, l.light);
+  }
+  put(out, static_cast<std::uint64_t>(model.warnings.size()));
+  for (const std::string& w : model.warnings) put_string(out, w);
   return out;
 }
 
@@ -421,19 +741,54 @@ Model deserialize(const std::string& path, const std::string& bytes) {
   Model model;
   model.path = path;
   Reader in(bytes);
+  const auto text = [&] {
+    const auto length = in.get<std::uint64_t>();
+    return std::string(in.take(length), length);
+  };
   in.get_array(model.mesh.vertices);
   in.get_array(model.mesh.indices);
+  std::vector<std::shared_ptr<const TextureImage>> textures(in.get<std::uint64_t>());
+  for (auto& texture : textures) {
+    TextureImage t;
+    t.name = text();
+    t.width = in.get<int>();
+    t.height = in.get<int>();
+    in.get_array(t.rgba);
+    texture = std::make_shared<const TextureImage>(std::move(t));
+  }
   const auto materials = in.get<std::uint64_t>();
   for (std::uint64_t i = 0; i < materials; ++i) {
     Material m;
-    const auto length = in.get<std::uint64_t>();
-    m.name.assign(in.take(length), length);
+    m.name = text();
     m.albedo = in.get<glm::vec3>();
     m.specular = in.get<glm::vec3>();
     m.shininess = in.get<float>();
+    m.alpha = in.get<float>();
+    m.alpha_mode = in.get<AlphaMode>();
+    m.alpha_cutoff = in.get<float>();
+    m.double_sided = in.get<bool>();
+    const auto texture = in.get<std::int64_t>();
+    if (texture >= 0) m.texture = textures.at(static_cast<std::size_t>(texture));
+    m.wrap_s = in.get<TextureWrap>();
+    m.wrap_t = in.get<TextureWrap>();
+    m.nearest_magnification = in.get<bool>();
+    m.uv_transform = in.get<glm::mat3x2>();
     model.materials.push_back(std::move(m));
   }
   model.bounds = in.get<Bounds>();
+  model.cameras.resize(in.get<std::uint64_t>());
+  for (ModelCamera& c : model.cameras) {
+    c.name = text();
+    c.camera = in.get<Camera>();
+    c.orthographic = in.get<bool>();
+  }
+  model.lights.resize(in.get<std::uint64_t>());
+  for (ModelLight& l : model.lights) {
+    l.name = text();
+    l.light = in.get<Light>();
+  }
+  model.warnings.resize(in.get<std::uint64_t>());
+  for (std::string& w : model.warnings) w = text();
   return model;
 }
 
@@ -467,10 +822,14 @@ Model load_model(const std::string& path) {
   std::error_code ec;
   const std::uintmax_t size = fs::file_size(path, ec);
   try {
-    return deserialize(path,
-                       run_in_child_process([&] { return serialize(read_model(path)); },
-                                            {.time = read_time_limit(ec ? 0 : size),
-                                             .memory_bytes = read_memory_limit(ec ? 0 : size)}));
+    Model model =
+        deserialize(path, run_in_child_process([&] { return serialize(read_model(path)); },
+                                               {.time = read_time_limit(ec ? 0 : size),
+                                                .memory_bytes = read_memory_limit(ec ? 0 : size)}));
+    for (const std::string& w : model.warnings) {
+      std::fprintf(stderr, "penumbra: warning: %s\n", w.c_str());
+    }
+    return model;
   } catch (const ChildProcessError& e) {
     if (e.kind() == ChildProcessError::Kind::Threw) throw RuntimeError(e.what());
     // A file that needs more than the limit is hostile or broken: no

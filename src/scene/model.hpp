@@ -17,16 +17,35 @@ namespace penumbra {
 inline constexpr std::size_t kReaderMemoryFloor = std::size_t{2} << 30;
 inline constexpr std::size_t kReaderMemoryPerFileByte = 48;
 
+// A camera or a light of the file, placed by its node.
+struct ModelCamera {
+  std::string name;
+  Camera camera;              // fov_y_degrees, near_plane and far_plane from the file
+  bool orthographic = false;  // penumbra draws perspective only
+};
+struct ModelLight {
+  std::string name;
+  Light light;
+};
+
 struct Model {
   std::string path;  // as given to load_model
   // Object space, as the file places it (its node transforms applied).
   // Vertex::material indexes `materials`.
   TriangleMesh mesh;
-  std::vector<Material> materials;  // at least one
+  std::vector<Material> materials;  // at least one; textures decoded
   Bounds bounds;
+  // glTF cameras and KHR_lights_punctual lights, in the file's order, in
+  // the model's space (see gltf_scene.hpp for their units).
+  std::vector<ModelCamera> cameras;
+  std::vector<ModelLight> lights;
+  // What could not be read but has a fallback (a missing texture file):
+  // one line each, for the caller to print as warnings.
+  std::vector<std::string> warnings;
 };
 
-// Reads a model and checks it: every index in range, every position
+// Reads a model and checks it (textures that cannot be read are a warning
+// each and the flat colour): every index in range, every position
 // finite, at least one triangle. Normals missing from the file are
 // computed (smooth_normals.hpp, creases above 80 degrees kept); a file's
 // normal that is non-finite or zero becomes the area-weighted mean of its

@@ -3,6 +3,7 @@
 // lights. Shapes are described by their parameters; mesh.hpp turns them
 // into world-space triangles.
 #include <array>
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
@@ -14,12 +15,60 @@
 
 namespace penumbra {
 
+// A decoded texture: 8-bit RGBA, rows from the top of the image down, the
+// colour sRGB-encoded and the alpha linear (as PNG and JPEG store them).
+struct TextureImage {
+  std::string name;  // the file, or "<model>: embedded texture N", for messages
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;
+};
+
+// glTF's sampler wrap modes (OBJ textures repeat).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+
+// glTF's alphaMode. A deferred renderer draws no translucency: Blend
+// surfaces are drawn as Mask at a cutoff of 0.5, in the G-buffer and in
+// every shadow pass (documented in the README, "Scenes").
+enum class AlphaMode { Opaque, Mask, Blend };
+
 struct Material {
   std::string name;
   glm::vec3 albedo{0.8f};     // linear diffuse reflectance
   glm::vec3 specular{0.04f};  // Blinn-Phong specular colour
   float shininess = 32.0f;    // Blinn-Phong exponent
+  // Coverage: the base colour's alpha factor, times the texture's alpha
+  // and the vertex colour's; below alpha_cutoff a Mask surface is a hole.
+  float alpha = 1.0f;
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  float alpha_cutoff = 0.5f;
+  // Single-sided surfaces (glTF's default) are culled where their back
+  // faces the camera or the light; the built-in shapes are double-sided.
+  bool double_sided = true;
+  // The base colour texture, multiplied into albedo and alpha, or null.
+  std::shared_ptr<const TextureImage> texture{};
+  TextureWrap wrap_s = TextureWrap::Repeat;
+  TextureWrap wrap_t = TextureWrap::Repeat;
+  bool nearest_magnification = false;  // glTF magFilter NEAREST
+  // The texture coordinate of a vertex's uv: uv_transform * (u, v, 1), in
+  // the image's own coordinates ((0, 0) its top-left corner). Vertices
+  // carry uv with v up (OpenGL's and OBJ's convention, which the model
+  // reader converts glTF's to), so the default flips v.
+  glm::mat3x2 uv_transform{1.0f, 0.0f, 0.0f, -1.0f, 0.0f, 1.0f};
 };
+
+// The cutoff below which a material's coverage is a hole, or a negative
+// number when it has none (opaque).
+inline float coverage_cutoff(const Material& m) {
+  switch (m.alpha_mode) {
+    case AlphaMode::Mask:
+      return m.alpha_cutoff;
+    case AlphaMode::Blend:
+      return 0.5f;
+    default:
+      return -1.0f;
+  }
+}
 
 enum class ShapeKind { Plane, Box, Sphere, Cylinder, Torus, Model };
 
@@ -52,6 +101,10 @@ struct Camera {
   glm::vec3 target{0.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
   float fov_y_degrees = 45.0f;
+  // The clip planes a scene file gives (glTF's znear / zfar), or 0: the
+  // renderer fits its planes to the geometry in view, within these.
+  float near_plane = 0.0f;
+  float far_plane = 0.0f;
   bool operator==(const Camera&) const = default;
 };
 

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "io/bounded_read.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "scene/gltf_scene.hpp"
 #include "scene/model.hpp"
 #include "scene/scene_checks.hpp"
 
@@ -288,7 +289,7 @@ Scene load_scene_file(const std::string& path) {
   return parse_scene_json(read_bounded_file(path, kMaxSceneFileBytes, "scene file"), path);
 }
 
-Scene resolve_scene(const std::string& name_or_path) {
+Scene resolve_scene(const std::string& name_or_path, int camera_index) {
   if (auto scene = builtin_scene(name_or_path)) return *scene;
   const bool looks_like_file =
       name_or_path.find('/') != std::string::npos || name_or_path.find('.') != std::string::npos;
@@ -296,8 +297,9 @@ Scene resolve_scene(const std::string& name_or_path) {
     std::string names;
     for (const std::string& n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
     throw UsageError("unknown scene '" + name_or_path + "' (built-in scenes: " + names +
-                     "; or a path to a .json scene file)");
+                     "; or a path to a .json, .gltf or .glb scene file)");
   }
+  if (is_gltf_path(name_or_path)) return gltf_scene(name_or_path, camera_index);
   return load_scene_file(name_or_path);
 }
 

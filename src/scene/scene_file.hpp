@@ -41,8 +41,10 @@ inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{16} << 20;
 // Throws RuntimeError.
 Scene load_scene_file(const std::string& path);
 
-// A built-in scene name or a path to a .json file. Throws UsageError for an
-// unknown name, RuntimeError for a file that cannot be read or parsed.
-Scene resolve_scene(const std::string& name_or_path);
+// A built-in scene name, a path to a .json file, or a glTF file (.gltf,
+// .glb: gltf_scene.hpp, its camera `camera_index`, -1 for its first).
+// Throws UsageError for an unknown name, RuntimeError for a file that
+// cannot be read or parsed.
+Scene resolve_scene(const std::string& name_or_path, int camera_index = -1);
 
 }  // namespace penumbra

@@ -97,11 +97,15 @@ TriangleMesh with_smooth_normals(const TriangleMesh& mesh, float crease_degrees)
       // Corners that came out alike share a vertex (a handful per position).
       std::size_t v = first_vertex;
       while (v < out.vertices.size() &&
-             (out.vertices[v].normal != normal || out.vertices[v].material != source.material)) {
+             (out.vertices[v].normal != normal || out.vertices[v].material != source.material ||
+              out.vertices[v].uv != source.uv || out.vertices[v].color != source.color)) {
         ++v;
       }
-      if (v == out.vertices.size())
-        out.vertices.push_back({source.position, normal, source.material});
+      if (v == out.vertices.size()) {
+        Vertex vertex = source;
+        vertex.normal = normal;
+        out.vertices.push_back(vertex);
+      }
       out.indices[corner] = static_cast<std::uint32_t>(v);
     }
   }

@@ -10,7 +10,8 @@ namespace penumbra {
 // of its own triangle's: a scan comes out smooth, a box keeps its edges.
 // Vertices are found by position (so seams of other attributes do not
 // break the smoothing), and corners at one position with equal normals
-// share one vertex of the result. A corner whose triangles have no area
+// (and equal material, texture coordinates and colour) share one vertex
+// of the result. A corner whose triangles have no area
 // takes the mean of every triangle there, or +y. Vertex::material is the
 // corner's own. O(n log n) in the vertices, no allocation per vertex.
 TriangleMesh with_smooth_normals(const TriangleMesh& mesh, float crease_degrees);

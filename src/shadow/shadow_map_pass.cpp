@@ -5,7 +5,10 @@
 namespace penumbra {
 
 ShadowMapPass::ShadowMapPass()
-    : program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag")) {}
+    : program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
+                                     {{"CUT_OUTS", "0"}})),
+      cut_out_program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
+                                             {{"CUT_OUTS", "1"}})) {}
 
 void ShadowMapPass::execute(const GpuScene& scene, int view_count, int map_size) {
   if (gl::ensure_texture_array(maps_, kDepthFormat, map_size, map_size, view_count,
@@ -21,7 +24,6 @@ void ShadowMapPass::execute(const GpuScene& scene, int view_count, int map_size)
   }
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "shadow maps");
-  program_.use();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -33,7 +35,11 @@ void ShadowMapPass::execute(const GpuScene& scene, int view_count, int map_size)
     glBindFramebuffer(GL_FRAMEBUFFER, fb);
     glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
     glProgramUniform1i(program_.id(), 0, i);
-    scene.draw();
+    glProgramUniform1i(cut_out_program_.id(), 0, i);
+    program_.use();
+    scene.draw(SurfaceSet::Opaque);
+    cut_out_program_.use();
+    scene.draw(SurfaceSet::CutOut);
   }
   glPopDebugGroup();
 }

@@ -27,7 +27,8 @@ class ShadowMapPass {
   [[nodiscard]] const gl::Texture& depth_maps() const { return maps_; }
 
  private:
-  gl::Program program_;
+  gl::Program program_;          // opaque surfaces
+  gl::Program cut_out_program_;  // alpha-tested and single-sided ones
   gl::Texture maps_;
   std::vector<gl::Framebuffer> framebuffers_;  // one per layer
 };

@@ -1,0 +1,115 @@
+#include "scene/gltf_scene.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/gltf_extensions.hpp"
+#include "scene/mesh.hpp"
+#include "scene/model.hpp"
+#include "shared/bindings.h"
+
+namespace penumbra {
+
+static_assert(kMaxSceneLights == MAX_LIGHTS);
+
+namespace {
+
+// The extensions of a file the model reader can read at all: one it
+// cannot is left for load_model's own message.
+GltfExtensions read_gltf_extensions_checked(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return {};
+  try {
+    return read_gltf_extensions(path);
+  } catch (const RuntimeError&) {
+    return {};
+  }
+}
+
+}  // namespace
+
+bool is_gltf_path(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".gltf" || ext == ".glb";
+}
+
+Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& notes) {
+  // The checks load_model makes first (a missing file, a folder, a FIFO)
+  // come before the extensions are read.
+  const GltfExtensions extensions = read_gltf_extensions_checked(path);
+  std::string unread;
+  for (const std::string& e : extensions.required) {
+    if (!is_supported_gltf_extension(e)) {
+      throw RuntimeError(path + ": requires the glTF extension " + e +
+                         ", which penumbra does not read");
+    }
+  }
+  for (const std::string& e : extensions.used) {
+    if (!is_supported_gltf_extension(e)) unread += (unread.empty() ? "" : ", ") + e;
+  }
+  if (!unread.empty()) {
+    notes.warnings.push_back(path +
+                             ": ignoring the glTF extensions it uses that penumbra does not "
+                             "read: " +
+                             unread);
+  }
+  Scene scene;
+  scene.name = path;
+  Shape shape;
+  attach_model(scene, shape, path, /*own_materials=*/true);
+  const Model& model = *shape.model;
+  scene.shapes.push_back(shape);
+
+  if (camera_index >= static_cast<int>(model.cameras.size())) {
+    throw UsageError("--camera-index " + std::to_string(camera_index) + ": " + path + " has " +
+                     std::to_string(model.cameras.size()) + " camera" +
+                     (model.cameras.size() == 1 ? "" : "s"));
+  }
+  if (camera_index < 0 && !model.cameras.empty()) camera_index = 0;
+  if (camera_index >= 0) {
+    const ModelCamera& camera = model.cameras[static_cast<std::size_t>(camera_index)];
+    if (camera.orthographic) {
+      throw UsageError(path + ": camera " + std::to_string(camera_index) + " ('" + camera.name +
+                       "') is orthographic; penumbra draws perspective cameras only");
+    }
+    scene.camera = camera.camera;
+  } else {
+    if (model.bounds.empty()) throw RuntimeError(path + ": the file holds no triangles");
+    scene.camera = framing_camera(model.bounds);
+  }
+
+  if (model.lights.empty()) {
+    scene.lights = framing_lights(model.bounds);
+  } else {
+    std::string dropped;
+    for (std::size_t i = 0; i < model.lights.size(); ++i) {
+      if (static_cast<int>(i) < kMaxSceneLights) {
+        scene.lights.push_back(model.lights[i].light);
+      } else {
+        dropped += (dropped.empty() ? "'" : ", '") + model.lights[i].name + "'";
+      }
+    }
+    if (!dropped.empty()) {
+      notes.warnings.push_back(path + ": penumbra draws at most " +
+                               std::to_string(kMaxSceneLights) + " lights; dropped " + dropped);
+    }
+  }
+  return scene;
+}
+
+Scene gltf_scene(const std::string& path, int camera_index) {
+  GltfSceneNotes notes;
+  Scene scene = gltf_scene(path, camera_index, notes);
+  for (const std::string& w : notes.warnings) {
+    std::fprintf(stderr, "penumbra: warning: %s\n", w.c_str());
+  }
+  return scene;
+}
+
+}  // namespace penumbra
