@@ -311,16 +311,20 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
   }
   float z = s.depth - bias;
 #if SHADOW_TECHNIQUE == TECHNIQUE_HARD
-  if (shadow_params.accumulate_cell > 0.0 && view.perspective != 0 && view.radial_depth == 0) {
-    // An --accumulate sub-frame of a spot light: dithered within its stratum.
-    vec3 random = accumulate_hash(ivec2(gl_FragCoord.xy), shadow_params.accumulate_frame);
-    return shadow_hard_dithered(shadow_depth, v, view, s, z,
-                                receiver_depth_gradient(view, s, normal, shadow_params.max_slope),
-                                accumulate_light_offset(view, random.xy,
-                                                        vec2(shadow_params.accumulate_u,
-                                                             shadow_params.accumulate_v),
-                                                        shadow_params.accumulate_cell),
-                                random.z);
+  if (shadow_params.accumulate_count > 0 && view.perspective != 0 && view.radial_depth == 0) {
+    // An --accumulate sub-frame of a spot light: rays to the pixel's own
+    // points of the sub-frame's cell.
+    vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float lit = 0.0;
+    for (int q = 0; q < ACCUMULATE_RAYS; ++q) {
+      vec3 random = accumulate_hash(pixel, shadow_params.accumulate_frame * ACCUMULATE_RAYS + q);
+      vec2 offset = accumulate_light_offset(
+          view, pixel, shadow_params.accumulate_count,
+          vec2(shadow_params.accumulate_u, shadow_params.accumulate_v), q, random.xy);
+      lit += shadow_hard_dithered(shadow_depth, v, view, s, z, gradient, offset, random.z);
+    }
+    return lit / float(ACCUMULATE_RAYS);
   }
   return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
@@ -400,6 +404,29 @@ vec3 incident_light(int i, vec3 world, out vec3 to_light) {
   return radiance * cone / distance2;
 }
 
+// What this sub-frame's point of light i's source sends a receiver at
+// `world` with normal n, up to a constant (--accumulate, shadow view): the
+// weight of its shadow in the ratio of irradiances the traced reference
+// computes (src/reference/traced_reference.hpp). cos theta_source
+// cos theta_receiver / d^2 for a spot light's square or a point light's
+// sphere, cos theta_receiver for a direction of the sun's disc; 0 behind
+// either surface.
+float accumulate_source_weight(GpuLight light, vec3 world, vec3 n) {
+  if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
+    return max(dot(n, -light.direction_cos_outer.xyz), 0.0);
+  }
+  vec3 d = light.position_type.xyz - world;
+  float distance2 = dot(d, d);
+  if (!(distance2 > 0.0)) return 0.0;
+  vec3 w = d * inversesqrt(distance2);
+  vec3 source_normal = vec3(shadow_params.accumulate_normal_x, shadow_params.accumulate_normal_y,
+                            shadow_params.accumulate_normal_z);
+  float cos_receiver = dot(n, w);
+  float cos_source = -dot(source_normal, w);
+  if (cos_receiver <= 0.0 || cos_source <= 0.0) return 0.0;
+  return cos_source * cos_receiver / distance2;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 normal_shininess = texelFetch(gbuffer_normal, pixel, 0);
@@ -455,7 +482,9 @@ void main() {
     bool faces_light = dot(n, direction_to_light(lights[i], world)) > 0.0;
     float lit =
         faces_light ? shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE, rotation) : 0.0;
-    out_color = vec4(vec3(lit), 1.0);
+    out_color = shadow_params.accumulate_weighted != 0
+                    ? vec4(lit, vec2(lit, 1.0) * accumulate_source_weight(lights[i], world, n), 1.0)
+                    : vec4(vec3(lit), 1.0);
     return;
   }
 

@@ -12,6 +12,8 @@
 #include "core/error.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "io/image.hpp"
+#include "render/accumulation.hpp"
+#include "render/accumulator.hpp"
 #include "render/present_pass.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
@@ -123,6 +125,7 @@ void add_view_command_options(CLI::App& command, ViewArgs& args) {
                      "on closing, write the whole window, panel included (.png)");
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
+  add_accumulate_option(command, args.shadow);
   add_ssao_options(command, args.ssao, args.named);
   add_scene_options(command, args.scene_options);
 }
@@ -180,6 +183,9 @@ int run_view_command(ViewArgs& args) {
   status.renderer = gpu_name;
   status.max_texture_size = max_texture;
   std::optional<FrameInput> shown;  // the last frame rendered
+  ViewSource shown_source;          // its image: the renderer's view, or the accumulated one
+  Accumulator accumulator;
+  std::optional<FrameInput> accumulated_for;  // the inputs of the sub-frames summed
   bool panel_visible = true;
   auto last_time = std::chrono::steady_clock::now();
 
@@ -218,21 +224,51 @@ int run_view_command(ViewArgs& args) {
       state.lights = start.lights;
     }
 
+    // With --accumulate N the viewer adds one sub-frame per frame while the
+    // frame's inputs hold still, shows the mean so far, and stops rendering
+    // once it has all N; any change starts the sum again.
     bool rendered = false;
     if (view.x > 0 && view.y > 0) {
       FrameInput frame = frame_input(state, view.x, view.y, max_texture);
-      profiler.begin_frame();
-      try {
-        render_frame(renderer, frame, &profiler);
-        // An OpenGL error (out of memory for a huge view) ends the viewer
-        // with one message, rather than a loop of failing frames.
-        check_gl_errors(window.debug_output());
-        rendered = true;
-      } catch (const UsageError& e) {
-        if (scripted) throw;  // nobody is there to change the settings
-        status.message = e.what();
+      const bool accumulating = frame.shadow.accumulate > 1 && !is_map_view(frame.render.view);
+      if (!accumulating || !accumulated_for || !same_frame(*accumulated_for, frame)) {
+        accumulator.reset();
+        accumulated_for.reset();
       }
-      profiler.end_frame();
+      const bool refine = accumulating && accumulator.count() < frame.shadow.accumulate;
+      if (!accumulating || refine) {
+        profiler.begin_frame();
+        try {
+          if (refine) {
+            renderer.set_camera(frame.camera);
+            render_subframe(renderer, frame.lights, frame.render, frame.shadow, frame.ssao,
+                            accumulator.count(), &profiler);
+            accumulator.add(renderer.view_source());
+            accumulated_for = frame;
+          } else {
+            render_frame(renderer, frame, &profiler);
+          }
+          // An OpenGL error (out of memory for a huge view) ends the viewer
+          // with one message, rather than a loop of failing frames.
+          check_gl_errors(window.debug_output());
+          rendered = true;
+        } catch (const UsageError& e) {
+          if (scripted) throw;  // nobody is there to change the settings
+          status.message = e.what();
+          accumulator.reset();
+          accumulated_for.reset();
+        }
+        profiler.end_frame();
+      } else {
+        rendered = true;  // the finished sum is shown again
+      }
+      status.accumulated = accumulating ? accumulator.count() : 0;
+      status.accumulate = accumulating ? frame.shadow.accumulate : 0;
+      if (accumulating && accumulator.count() > 0) {
+        shown_source = accumulator.result(weighs_subframes(frame.render, frame.shadow));
+      } else if (rendered) {
+        shown_source = renderer.view_source();
+      }
       shown = std::move(frame);
     }
     while (std::optional<gl::GpuFrameTimes> times = profiler.read(false)) status.gpu = times;
@@ -246,14 +282,14 @@ int run_view_command(ViewArgs& args) {
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (rendered) present.execute(renderer.view_source(), 0, {0, 0, view.x, view.y});
+    if (rendered) present.execute(shown_source, 0, {0, 0, view.x, view.y});
     if (shown) draw_notes(*shown);
     imgui.end_frame();
 
     if (rendered && actions.screenshot) {
       const std::string path = unused_path(screenshot_name(state, *shown));
       try {
-        write_image(renderer.read_view(), path, png_encoding(shown->render.view));
+        write_image(read_view_source(shown_source), path, png_encoding(shown->render.view));
         status.message = "saved " + path;
       } catch (const RuntimeError& e) {
         status.message = e.what();
@@ -278,7 +314,7 @@ int run_view_command(ViewArgs& args) {
 
   if (!args.screenshot.empty()) {
     if (!shown) throw RuntimeError("no frame was rendered for --screenshot");
-    write_image(renderer.read_view(), args.screenshot, png_encoding(shown->render.view));
+    write_image(read_view_source(shown_source), args.screenshot, png_encoding(shown->render.view));
   }
   check_gl_errors(window.debug_output());
   return 0;

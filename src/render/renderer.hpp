@@ -52,6 +52,10 @@ struct ViewSource {
   float esm_c = 1.0f;  // for EsmLog
 };
 
+// A view's texture read back as an image, its values decoded as
+// Renderer::read_view() documents.
+[[nodiscard]] Image read_view_source(const ViewSource& source);
+
 class Renderer {
  public:
   // Uploads the scene. Needs a current OpenGL 4.5 context.

@@ -136,6 +136,10 @@ void camera_section(ViewerState& state) {
 void timing_section(const PanelStatus& status) {
   ImGui::Text("frame %.1f ms (%.1f fps)", status.frame_ms,
               status.frame_ms > 0.0 ? 1000.0 / status.frame_ms : 0.0);
+  if (status.accumulate > 0) {
+    ImGui::Text("accumulated %d / %d sub-frames%s", status.accumulated, status.accumulate,
+                status.accumulated < status.accumulate ? " (hold still)" : "");
+  }
   if (!status.gpu) {
     ImGui::TextDisabled("GPU times: waiting for the first results");
     return;
@@ -213,6 +217,7 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
                    p.help);
     }
     int_sliders(state, state.shadow, kShadowIntParams, status.max_texture_size, false);
+    int_sliders(state, state.shadow, kAccumulateParams, std::numeric_limits<int>::max(), false);
     float_sliders(state, state.shadow, kShadowFloatParams);
   }
   if (ImGui::CollapsingHeader("Ambient occlusion")) {

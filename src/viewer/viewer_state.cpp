@@ -84,6 +84,8 @@ bool set_number(ViewerState& state, std::string_view name, double value) {
          set_in_table(state.ssao, kSsaoIntParams, name, value, std::numeric_limits<int>::max()) ||
          set_in_table(state.shadow, kShadowIntParams, name, value,
                       std::numeric_limits<int>::max()) ||
+         set_in_table(state.shadow, kAccumulateParams, name, value,
+                      std::numeric_limits<int>::max()) ||
          set_in_table(state.render, kRenderIntParams, name, value, std::numeric_limits<int>::max());
 }
 
@@ -175,6 +177,11 @@ FrameInput frame_input(const ViewerState& state, int width, int height, int max_
     r.view = View::Final;
   }
   return f;
+}
+
+bool same_frame(const FrameInput& a, const FrameInput& b) {
+  return a.render == b.render && a.shadow == b.shadow && a.ssao == b.ssao &&
+         a.camera == b.camera && a.lights == b.lights;
 }
 
 void render_frame(Renderer& renderer, const FrameInput& frame, gl::GpuProfiler* profiler) {

@@ -69,6 +69,10 @@ struct FrameInput {
 
 FrameInput frame_input(const ViewerState& state, int width, int height, int max_texture_size);
 
+// Whether two frames render the same image (the notes aside): the viewer
+// keeps accumulating sub-frames while they do.
+bool same_frame(const FrameInput& a, const FrameInput& b);
+
 // Renders the frame (throws as Renderer::render does).
 void render_frame(Renderer& renderer, const FrameInput& frame, gl::GpuProfiler* profiler);
 
