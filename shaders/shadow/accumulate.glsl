@@ -1,13 +1,26 @@
 // Dithered hard shadows for --accumulate N (src/render/accumulation.hpp).
-// Sub-frame k renders a spot light's map from point k of its square, one
-// point per stratum of width 1/sqrt(N) of the square; averaged, the N hard
+// Sub-frame k renders a spot light's map from point k of a correlated
+// multi-jittered pattern over its square (Kensler 2013): one point in
+// each cell of an m x rows grid (m = floor(sqrt(N))). Averaged, the N hard
 // shadows would show N stepped copies of each wide penumbra's edge. So
-// each pixel tests the ray to its own random point instead, the
-// sub-frame's point moved by up to half a stratum (reflected back into
-// the square at its edges), a different one every sub-frame: jittered
-// rather than fixed strata, whose average is fine noise, not steps. (One
-// offset per pixel for all sub-frames, a Cranley-Patterson rotation,
-// measured noisier on the default scene.)
+// each pixel tests rays to points of its own inside the sub-frame's cell
+// (ACCUMULATE_RAYS of them, one in each of k x k sub-cells), jittered anew
+// every sub-frame: the average is fine noise, not steps, and every pixel
+// samples each sub-cell of the square exactly once over the N sub-frames,
+// so the estimate stays unbiased.
+//
+// The pixel's points are multi-jittered as well (Chiu, Shirley and Wang,
+// "Multi-Jittered Sampling", Graphics Gems IV, 1994): in cell (c, r) the
+// x coordinate falls in one of the cell's k^2 rows-wide fine strata chosen
+// through a permutation seeded by the pixel and fixed across sub-frames,
+// and likewise for y. Over the N sub-frames each pixel's x coordinates
+// then fill all of the square's fine strata once, so an occluder edge
+// parallel to the square's sides (a box's edge under a spot light facing
+// it) is integrated with error O(1/N) rather than the O(N^-3/4) of
+// jittered cells alone. Measured on the default scene (spot light, source
+// 1.5 wide, N = 64, against a 2048-ray reference): RMSE 0.0074 with one
+// jittered point per cell, 0.0062 with these; 9 rays per cell instead of
+// 4 measured the same, so the rest is the N maps' own (N = 256: 0.0030).
 //
 // The map was rendered from the sub-frame's point; the ray from the
 // receiver to the point moved by delta (in the map's x and y) crosses
@@ -20,10 +33,13 @@
 // shadow itself).
 #pragma once
 
+
+#define ACCUMULATE_RAYS_PER_SIDE 2
+#define ACCUMULATE_RAYS (ACCUMULATE_RAYS_PER_SIDE * ACCUMULATE_RAYS_PER_SIDE)
+
 // A hash (pcg3d; Jarzynski & Olano, "Hash Functions for GPU Rendering",
 // JCGT 2020) of the pixel and a seed as three values in [0, 1).
-vec3 accumulate_hash(ivec2 pixel, int frame) {
-  uvec3 v = uvec3(uvec2(pixel), uint(frame));
+uvec3 accumulate_pcg3d(uvec3 v) {
   v = v * 1664525u + 1013904223u;
   v.x += v.y * v.z;
   v.y += v.z * v.x;
@@ -32,15 +48,70 @@ vec3 accumulate_hash(ivec2 pixel, int frame) {
   v.x += v.y * v.z;
   v.y += v.z * v.x;
   v.z += v.x * v.y;
-  return vec3(v >> 8u) * (1.0 / 16777216.0);
+  return v;
 }
 
-// The pixel's light offset in world units along the map's x and y: its
-// point of the stratum (`cell` wide, a fraction of the square) minus the
-// sub-frame's `point`.
-vec2 accumulate_light_offset(GpuShadowView view, vec2 random, vec2 point, float cell) {
-  vec2 moved = point + (random - 0.5) * cell;
-  moved = 1.0 - abs(1.0 - abs(moved));  // reflected into [0, 1]: stays uniform
+vec3 accumulate_hash(ivec2 pixel, int frame) {
+  return vec3(accumulate_pcg3d(uvec3(uvec2(pixel), uint(frame))) >> 8u) * (1.0 / 16777216.0);
+}
+
+// A permutation of [0, l) chosen by p (Kensler 2013, "Correlated
+// Multi-Jittered Sampling", Listing 3), the one the CPU's cmj_sample uses.
+uint accumulate_permute(uint i, uint l, uint p) {
+  uint w = l - 1u;
+  w |= w >> 1u;
+  w |= w >> 2u;
+  w |= w >> 4u;
+  w |= w >> 8u;
+  w |= w >> 16u;
+  do {
+    i ^= p;
+    i *= 0xe170893du;
+    i ^= p >> 16u;
+    i ^= (i & w) >> 4u;
+    i ^= p >> 8u;
+    i *= 0x0929eb3fu;
+    i ^= p >> 23u;
+    i ^= (i & w) >> 1u;
+    i *= 1u | p >> 27u;
+    i *= 0x6935fa69u;
+    i ^= (i & w) >> 11u;
+    i *= 0x74dcb303u;
+    i ^= (i & w) >> 2u;
+    i *= 0x9e501cc3u;
+    i ^= (i & w) >> 2u;
+    i *= 0xc860a3dfu;
+    i &= w;
+    i ^= i >> 5u;
+  } while (i >= l);
+  return (i + p) % l;
+}
+
+// The pixel's ray q (0 <= q < ACCUMULATE_RAYS) of this sub-frame: its
+// light offset in world units along the map's x and y, from the
+// sub-frame's `point` (in [0, 1]^2 of the square, as cmj_sample placed it)
+// to the pixel's point in the same cell. `count` is N; `jitter` in [0, 1)^2
+// places the point within its fine strata.
+vec2 accumulate_light_offset(GpuShadowView view, ivec2 pixel, int count, vec2 point, int q,
+                             vec2 jitter) {
+  // The grid of cmj_sample (Kensler 2013, Listing 6): m columns, rows rows.
+  uint n = uint(count);
+  uint m = uint(sqrt(float(n)));
+  while (m * m > n) --m;
+  while ((m + 1u) * (m + 1u) <= n) ++m;
+  uint rows = (n + m - 1u) / m;
+  uint c = min(uint(point.x * float(m)), m - 1u);
+  uint r = min(uint(point.y * float(rows)), rows - 1u);
+  // Ray q takes sub-cell (qx, qy) of the cell's k x k, and within it the
+  // fine strata of the canonical multi-jittered arrangement (Chiu et al.,
+  // Figure 3): k qx + qy of the cell's k^2 in x, k qy + qx in y.
+  const uint k = uint(ACCUMULATE_RAYS_PER_SIDE), rays = k * k;
+  uint qx = uint(q) % k, qy = uint(q) / k;
+  uvec3 seed = accumulate_pcg3d(uvec3(uvec2(pixel), 0x9e3779b9u));
+  uint fine_x = rays * accumulate_permute(r, rows, seed.x) + k * qx + qy;
+  uint fine_y = rays * accumulate_permute(c, m, seed.y) + k * qy + qx;
+  vec2 moved = vec2((float(c) + (float(fine_x) + jitter.x) / float(rays * rows)) / float(m),
+                    (float(r) + (float(fine_y) + jitter.y) / float(rays * m)) / float(rows));
   return (moved - point) * view.source_width;
 }
 

@@ -84,17 +84,23 @@ struct GpuShadow {
   int pcss_filter_samples;
   int two_moment_blockers;  // 1: msm --soft estimates blockers as vsm does
   // --accumulate (src/render/accumulation.hpp): the sub-frame's point of a
-  // spot light's square, in [0, 1]^2; the width of its stratum as a
-  // fraction of the square (1/sqrt(N); 0: not accumulating); the sub-frame
-  // index, which seeds each pixel's dither.
+  // spot light's square, in [0, 1]^2; the number of sub-frames N (0: not
+  // accumulating); the sub-frame index, which seeds each pixel's dither.
   float accumulate_u;
   float accumulate_v;
-  float accumulate_cell;
+  int accumulate_count;
   int accumulate_frame;
   float evsm_positive;  // EVSM exponents c+ and c- (shaders/shadow/evsm.glsl)
   float evsm_negative;
-  float evsm_unused0;  // pads the block to a multiple of 16 bytes
+  float evsm_unused0;  // pads the EVSM row to 16 bytes
   float evsm_unused1;
+  // The source's outward normal at the sub-frame's point (spot: the light's
+  // direction; point: the sphere's normal); 1 when the shadow view writes
+  // (lit, lit * weight, weight) for the Accumulator to weigh.
+  float accumulate_normal_x;
+  float accumulate_normal_y;
+  float accumulate_normal_z;
+  int accumulate_weighted;
 };
 
 // Screen-space ambient occlusion (see SsaoSettings in src/core/settings.hpp).

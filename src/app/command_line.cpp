@@ -76,6 +76,7 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   add_changed_name(args, "view", command.render.view, render_defaults.view, kViewNames);
   add_changed(args, command.render, kRenderIntParams);
   add_changed(args, command.shadow, kShadowIntParams);
+  add_changed(args, command.shadow, kAccumulateParams);
   add_changed(args, command.shadow, kShadowFloatParams);
   add_changed_switches(args, command.ssao, kSsaoSwitchParams);
   add_changed(args, command.ssao, kSsaoIntParams);

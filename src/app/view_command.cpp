@@ -14,6 +14,8 @@
 #include "core/error.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "io/image.hpp"
+#include "render/accumulation.hpp"
+#include "render/accumulator.hpp"
 #include "render/present_pass.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_file.hpp"
@@ -131,6 +133,7 @@ void add_view_command_options(CLI::App& command, ViewArgs& args) {
            OptionGroup::Output);
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
+  add_accumulate_option(command, args.shadow);
   add_ssao_options(command, args.ssao);
   add_scene_options(command, args.scene_options);
   command.footer(examples_footer({
@@ -202,6 +205,9 @@ int run_view_command(ViewArgs& args) {
   // Frames to draw before waiting for events again: Dear ImGui settles a
   // change (a hover, an opened list) over a few frames.
   int busy_frames = 3;
+  ViewSource shown_source;  // its image: the renderer's view, or the accumulated one
+  // With --accumulate N: the sub-frames summed for `shown` so far.
+  Accumulator accumulator;
   bool panel_visible = true;
   glm::dvec2 last_cursor(0.0);
 
@@ -256,15 +262,32 @@ int run_view_command(ViewArgs& args) {
       state.lights = start.lights;
     }
 
+    // With --accumulate N the viewer adds one sub-frame per frame while the
+    // frame's arguments hold still, shows the mean so far, and stops
+    // rendering once it has all N; any change starts the sum again.
     if (view.x > 0 && view.y > 0) {
       FrameInput frame = frame_input(state, view.x, view.y, max_texture);
       std::vector<std::string> args = render_command_for(state, frame, "");
-      if (!have_image || args != shown_args) {
+      const bool changed = !have_image || args != shown_args;
+      const bool accumulating = frame.shadow.accumulate > 1 && !is_map_view(frame.render.view);
+      if (changed) accumulator.reset();
+      const bool refine = accumulating && accumulator.count() < frame.shadow.accumulate;
+      status.accumulate = accumulating ? frame.shadow.accumulate : 0;
+      if (changed || refine) {
         busy_frames = 3;
-        have_image = false;
+        if (changed) have_image = false;
         profiler.begin_frame();
         try {
-          render_frame(renderer, frame, &profiler);
+          if (accumulating) {
+            renderer.set_camera(frame.camera);
+            render_subframe(renderer, frame.lights, frame.render, frame.shadow, frame.ssao,
+                            accumulator.count(), &profiler);
+            accumulator.add(renderer.view_source());
+            shown_source = accumulator.result(weighs_subframes(frame.render, frame.shadow));
+          } else {
+            render_frame(renderer, frame, &profiler);
+            shown_source = renderer.view_source();
+          }
           // An OpenGL error (out of memory for a huge view) ends the
           // viewer with one message, rather than a loop of failing frames.
           check_gl_errors(window.debug_output());
@@ -273,11 +296,13 @@ int run_view_command(ViewArgs& args) {
         } catch (const UsageError& e) {
           if (scripted) throw;  // nobody is there to change the settings
           status.message = e.what();
+          accumulator.reset();
         }
         profiler.end_frame();
         shown = std::move(frame);
         shown_args = std::move(args);
       }
+      status.accumulated = accumulator.count();
     }
     while (std::optional<gl::GpuFrameTimes> times = profiler.read(false)) {
       status.gpu = times;
@@ -293,14 +318,14 @@ int run_view_command(ViewArgs& args) {
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (have_image) present.execute(renderer.view_source(), 0, {0, 0, view.x, view.y});
+    if (have_image) present.execute(shown_source, 0, {0, 0, view.x, view.y});
     if (shown) draw_notes(*shown);
     imgui.end_frame();
 
     if (have_image && actions.screenshot) {
       const std::string path = unused_path(screenshot_name(state, *shown));
       try {
-        write_image(renderer.read_view(), path, png_encoding(shown->render.view));
+        write_image(read_view_source(shown_source), path, png_encoding(shown->render.view));
         status.message = "saved " + path;
       } catch (const RuntimeError& e) {
         status.message = e.what();
@@ -330,7 +355,7 @@ int run_view_command(ViewArgs& args) {
   }
   if (!args.screenshot.empty()) {
     if (!shown) throw RuntimeError("no frame was rendered for --screenshot");
-    write_image(renderer.read_view(), args.screenshot, png_encoding(shown->render.view));
+    write_image(read_view_source(shown_source), args.screenshot, png_encoding(shown->render.view));
   }
   check_gl_errors(window.debug_output());
   return 0;

@@ -172,17 +172,19 @@ struct ShadowSettings {
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
 
-  // Accumulated soft shadows (render, compare): this many sub-frames, each
+  // Accumulated soft shadows (render, compare, view): this many sub-frames, each
   // with the shadow maps rendered from another point of the light's source
   // (light_size, sun_angle), averaged. 1: one frame from the light's centre.
   int accumulate = 1;
-  // Set for each sub-frame by render_accumulated, not by the user: the
-  // sub-frame's index and its point of a spot light's square, in
-  // [0, 1]^2; the hard test dithers each pixel's point within its
-  // stratum (shaders/shadow/accumulate.glsl).
+  // Set for each sub-frame by render_subframe, not by the user: the
+  // sub-frame's index; its point of a spot light's square, in [0, 1]^2,
+  // within whose cell the hard test dithers each pixel's points
+  // (shaders/shadow/accumulate.glsl); and the source's outward normal at
+  // the point (spot, point lights), which weights the shadow view.
   int subframe = 0;
   float subframe_u = 0.5f;
   float subframe_v = 0.5f;
+  std::array<float, 3> subframe_normal{0.0f, 0.0f, 0.0f};
 
   // Directional lights: shadow cascades along the camera's view (1-4).
   int cascades = 3;
@@ -397,7 +399,8 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntPara
 
 inline constexpr int kMaxAccumulate = 4096;
 
-// Only render and compare take it, so it is a table of its own.
+// render, compare and view take it (view refines while nothing changes), not
+// bench or report, so it is a table of its own.
 inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kAccumulateParams{{
     {"accumulate",
      "average this many sub-frames, each with the shadow maps rendered from another point of "

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "reference/light_sampling.hpp"
+#include "render/accumulator.hpp"
 #include "shadow/light_view.hpp"
 
 namespace penumbra {
@@ -46,79 +47,47 @@ SourceSample source_sample(const Light& light, const ShadowSettings& shadow, int
   return s;
 }
 
-float source_weight(const Light& original, const SourceSample& sample, const glm::vec3& p,
-                    const glm::vec3& n) {
-  if (original.type == LightType::Directional) {
-    return std::max(0.0f, glm::dot(n, -glm::normalize(sample.light.direction)));
+void render_subframe(Renderer& renderer, const std::vector<Light>& lights,
+                     const RenderSettings& render, const ShadowSettings& shadow,
+                     const SsaoSettings& ssao, int k, gl::GpuProfiler* profiler) {
+  const int n = shadow.accumulate;
+  std::vector<Light> moved = lights;
+  ShadowSettings subframe = shadow;
+  for (std::size_t l = 0; l < lights.size(); ++l) {
+    const SourceSample sample = source_sample(lights[l], shadow, k, n, 0);
+    moved[l] = sample.light;
+    if (static_cast<int>(l) == render.light_index) {
+      subframe.subframe_normal = {sample.normal.x, sample.normal.y, sample.normal.z};
+    }
   }
-  const glm::vec3 to_light = sample.light.position - p;
-  const float d2 = glm::dot(to_light, to_light);
-  if (!(d2 > 0.0f)) return 0.0f;
-  const glm::vec3 w = to_light / std::sqrt(d2);
-  const float cos_receiver = glm::dot(n, w);
-  const float cos_source = -glm::dot(sample.normal, w);
-  if (cos_receiver <= 0.0f || cos_source <= 0.0f) return 0.0f;
-  return cos_source * cos_receiver / d2;
+  renderer.set_lights(moved);
+  subframe.subframe = k;
+  // Every light takes the same pattern, so the shaders' one point is
+  // each spot light's.
+  const glm::vec2 u = cmj_sample(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n), 0u);
+  subframe.subframe_u = u.x;
+  subframe.subframe_v = u.y;
+  renderer.render(render, subframe, ssao, profiler);
+}
+
+bool weighs_subframes(const RenderSettings& render, const ShadowSettings& shadow) {
+  return shadow.accumulate > 1 && render.view == View::Shadow;
 }
 
 Image render_accumulated(Renderer& renderer, const RenderSettings& render,
                          const ShadowSettings& shadow, const SsaoSettings& ssao) {
-  const int n = shadow.accumulate;
-  if (n <= 1 || is_map_view(render.view)) {
+  if (shadow.accumulate <= 1 || is_map_view(render.view)) {
     renderer.render(render, shadow, ssao);
     return renderer.read_view();
   }
   const std::vector<Light> original = renderer.scene().lights;
-  const auto shown = static_cast<std::size_t>(render.light_index);
-  const bool weighted = render.view == View::Shadow && shown < original.size();
-  Image sum(render.width, render.height);
-  std::vector<double> numerator, denominator;
-  SurfacePoints surfaces;
-  for (int k = 0; k < n; ++k) {
-    std::vector<Light> lights = original;
-    std::vector<SourceSample> samples;
-    for (std::size_t l = 0; l < lights.size(); ++l) {
-      samples.push_back(source_sample(original[l], shadow, k, n, 0));
-      lights[l] = samples.back().light;
-    }
-    renderer.set_lights(lights);
-    ShadowSettings subframe = shadow;
-    subframe.subframe = k;
-    // Every light takes the same pattern, so the shaders' one point is
-    // each spot light's.
-    const glm::vec2 u =
-        cmj_sample(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n), 0u);
-    subframe.subframe_u = u.x;
-    subframe.subframe_v = u.y;
-    renderer.render(render, subframe, ssao);
-    const Image image = renderer.read_view();
-    if (!weighted) {
-      for (std::size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += image.rgba[i] / n;
-      continue;
-    }
-    if (k == 0) {
-      surfaces = renderer.read_surfaces();  // the camera holds still
-      numerator.assign(surfaces.size(), 0.0);
-      denominator.assign(surfaces.size(), 0.0);
-      sum = image;  // alpha: which pixels the shadow view judges
-    }
-    for (std::size_t i = 0; i < surfaces.size(); ++i) {
-      if (!surfaces.covered[i]) continue;
-      const float w =
-          source_weight(original[shown], samples[shown], surfaces.position[i], surfaces.normal[i]);
-      numerator[i] += double(w) * image.rgba[4 * i];
-      denominator[i] += w;
-    }
+  Accumulator accumulator;
+  for (int k = 0; k < shadow.accumulate; ++k) {
+    render_subframe(renderer, original, render, shadow, ssao, k);
+    accumulator.add(renderer.view_source());
   }
   renderer.set_lights(original);
-  if (weighted) {
-    for (std::size_t i = 0; i < surfaces.size(); ++i) {
-      if (!surfaces.covered[i]) continue;
-      const float v = denominator[i] > 0.0 ? float(numerator[i] / denominator[i]) : 0.0f;
-      sum.rgba[4 * i] = sum.rgba[4 * i + 1] = sum.rgba[4 * i + 2] = v;
-    }
-  }
-  return sum;
+  return read_view_source(accumulator.result(weighs_subframes(render, shadow)));
 }
 
 }  // namespace penumbra

@@ -2,19 +2,23 @@
 // Accumulated soft shadows: the frame rendered N times, each sub-frame
 // with every light moved to another point of its source and its shadow
 // maps rendered from there, shaded with the chosen technique (hard or
-// pcf), and averaged. As N grows the average converges to the area
-// light's shadow, as the traced reference computes it: the shadow view
-// weights sub-frame k's shadow at each pixel by what that point of the
-// source sends the pixel (cos theta_source cos theta_receiver / d^2 for a
-// spot light's square or a point light's sphere, cos theta_receiver for
-// the sun's disc of directions), so it estimates the same ratio of
-// irradiances; the other camera views are plain means.
+// pcf), and averaged on the GPU (render/accumulator.hpp). As N grows the
+// average converges to the area light's shadow, as the traced reference
+// computes it: the shadow view weights sub-frame k's shadow at each pixel
+// by what that point of the source sends the pixel (cos theta_source
+// cos theta_receiver / d^2 for a spot light's square or a point light's
+// sphere, cos theta_receiver for the sun's disc of directions; the
+// lighting shader's accumulate_source_weight), so it estimates the same
+// ratio of irradiances; the other camera views are plain means.
 //
 // The points are stratified (correlated multi-jittered, Kensler 2013, one
 // fixed pattern), so every run gives the same image.
 #include <glm/glm.hpp>
 
+#include <vector>
+
 #include "core/settings.hpp"
+#include "gl/gpu_profiler.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -31,11 +35,16 @@ struct SourceSample {
 SourceSample source_sample(const Light& light, const ShadowSettings& shadow, int k, int n,
                            int pattern);
 
-// What source point `sample` of `light` sends a receiver at p with normal
-// n, up to a constant: cos theta_source cos theta_receiver / d^2 (or
-// cos theta_receiver for a directional light); 0 behind either surface.
-float source_weight(const Light& original, const SourceSample& sample, const glm::vec3& p,
-                    const glm::vec3& n);
+// Renders sub-frame k of shadow.accumulate: every light of `lights` (the
+// scene's own, unmoved) moved to point k of its source. Leaves the
+// renderer's lights moved; the caller restores them.
+void render_subframe(Renderer& renderer, const std::vector<Light>& lights,
+                     const RenderSettings& render, const ShadowSettings& shadow,
+                     const SsaoSettings& ssao, int k, gl::GpuProfiler* profiler = nullptr);
+
+// Whether `render` shows the shadow view that sub-frames write with their
+// source weights (the Accumulator's weighted result).
+bool weighs_subframes(const RenderSettings& render, const ShadowSettings& shadow);
 
 // The view render.view after shadow.accumulate sub-frames (one plain
 // render and read_view() when it is 1, or for a map view). Leaves the

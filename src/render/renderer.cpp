@@ -22,7 +22,7 @@ namespace penumbra {
 static_assert(sizeof(gpu::GpuLight) == 6 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuShadowView) == 3 * 64 + 2 * 16, "GpuShadowView must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
-static_assert(sizeof(gpu::GpuShadow) == 96, "GpuShadow must match std140");
+static_assert(sizeof(gpu::GpuShadow) == 112, "GpuShadow must match std140");
 
 namespace {
 
@@ -301,8 +301,11 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.two_moment_blockers = shadow.soft_two_moment_blockers ? 1 : 0;
   shadow_block.accumulate_u = shadow.subframe_u;
   shadow_block.accumulate_v = shadow.subframe_v;
-  shadow_block.accumulate_cell =
-      shadow.accumulate > 1 ? 1.0f / std::sqrt(static_cast<float>(shadow.accumulate)) : 0.0f;
+  shadow_block.accumulate_count = shadow.accumulate > 1 ? shadow.accumulate : 0;
+  shadow_block.accumulate_normal_x = shadow.subframe_normal[0];
+  shadow_block.accumulate_normal_y = shadow.subframe_normal[1];
+  shadow_block.accumulate_normal_z = shadow.subframe_normal[2];
+  shadow_block.accumulate_weighted = shadow.accumulate > 1 && render.view == View::Shadow ? 1 : 0;
   shadow_block.accumulate_frame = shadow.subframe;
   shadow_block.evsm_positive = shadow.evsm_positive;
   shadow_block.evsm_negative = shadow.evsm_negative;
@@ -414,8 +417,9 @@ ViewSource Renderer::view_source() {
           view == View::Final ? ViewEncoding::LinearColor : ViewEncoding::Data};
 }
 
-Image Renderer::read_view() {
-  const ViewSource source = view_source();
+Image Renderer::read_view() { return read_view_source(view_source()); }
+
+Image read_view_source(const ViewSource& source) {
   const gl::Texture& map = *source.texture;
   Image image = read_texture(map.id(), map.width(), map.height(), GL_RGBA);
   if (source.encoding == ViewEncoding::Depth) {

@@ -56,6 +56,10 @@ struct ViewSource {
   float log_offset = 1.0f;
 };
 
+// A view's texture read back as an image, its values decoded as
+// Renderer::read_view() documents.
+[[nodiscard]] Image read_view_source(const ViewSource& source);
+
 class Renderer {
  public:
   // Uploads the scene. Needs a current OpenGL 4.5 context.

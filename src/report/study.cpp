@@ -16,6 +16,7 @@
 #include "reference/reference_cache.hpp"
 #include "reference/shadow_metrics.hpp"
 #include "reference/traced_reference.hpp"
+#include "render/accumulation.hpp"
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
 #include "report/html_page.hpp"
@@ -415,40 +416,40 @@ class Study {
         "leaking counts pixels the reference has in shadow (< 0.1) that the technique lights "
         "(> 0.3); over-darkening the reverse (reference > 0.9, technique < 0.7). The error "
         "images show technique minus traced reference: red where the technique is too light, "
-        "blue where too dark.");
+        "blue where too dark. The last row is not a single frame: hard shadows from N points "
+        "spread over the source, weighted as the reference weighs them and averaged "
+        "(`--accumulate N`), the converged result the single-frame techniques approximate.");
     std::vector<std::vector<std::string>> rows = {{"technique", "MAE traced", "RMSE traced",
                                                    "leaking traced", "over-dark traced",
                                                    "MAE filtered", "leaking filtered"}};
     std::vector<HtmlFigure> figures;
-    for (Technique t :
-         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
-          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
-      ++items_;
-      progress_.update(items_, total_items());
-      const ShadowSettings settings = with(t);
-      std::optional<Image> image = shadow_image(settings);
+    // One row and one error image: `label` names the setting, `stem` its files.
+    const auto add_row = [&](const std::string& label, const std::string& stem,
+                             const ShadowSettings& settings, const std::optional<Image>& image) {
       if (!image || !traced) {
-        rows.push_back({name_of(t), "failed"});
-        continue;
+        rows.push_back({label, "failed"});
+        return;
       }
       const ShadowMetrics m = compare_shadow(*image, traced->image);
-      std::vector<std::string> row = {name_of(t), fixed(m.mean_absolute_error, 4), fixed(m.rmse, 4),
+      std::vector<std::string> row = {label, fixed(m.mean_absolute_error, 4), fixed(m.rmse, 4),
                                       fixed(100.0 * m.leak_fraction, 3) + " %",
                                       fixed(100.0 * m.over_dark_fraction, 3) + " %"};
-      if (is_filterable(t)) {
-        if (std::optional<Image> reference = shadow_image(settings, View::ShadowReference)) {
-          const ShadowMetrics f = compare_shadow(*image, *reference);
-          row.push_back(fixed(f.mean_absolute_error, 4));
-          row.push_back(fixed(100.0 * f.leak_fraction, 3) + " %");
-        }
+      std::optional<Image> reference;
+      if (is_filterable(settings.technique)) {
+        reference = shadow_image(settings, View::ShadowReference);
+      }
+      if (reference) {
+        const ShadowMetrics f = compare_shadow(*image, *reference);
+        row.push_back(fixed(f.mean_absolute_error, 4));
+        row.push_back(fixed(100.0 * f.leak_fraction, 3) + " %");
       } else {
         row.push_back("");
         row.push_back("");
       }
       rows.push_back(row);
       HtmlFigure f;
-      f.caption = name_of(t) + " minus traced";
-      f.image = "error-" + name_of(t) + ".png";
+      f.caption = label + " minus traced";
+      f.image = "error-" + stem + ".png";
       try {
         const Image error = error_image(*image, traced->image);
         write_png(error, (std::filesystem::path(options_.output_dir) / f.image).string(),
@@ -460,6 +461,31 @@ class Study {
         ++failed_;
       }
       figures.push_back(f);
+    };
+    for (Technique t :
+         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
+          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+      ++items_;
+      progress_.update(items_, total_items());
+      const ShadowSettings settings = with(t);
+      add_row(name_of(t), name_of(t), settings, shadow_image(settings));
+    }
+    // The converged counterpart: hard shadows from N points of the source,
+    // weighted as the reference weighs them (render/accumulation.hpp).
+    ++items_;
+    progress_.update(items_, total_items());
+    ShadowSettings accumulated = with(Technique::Hard);
+    accumulated.accumulate = options_.quick ? 8 : 64;
+    const std::string label = "hard --accumulate " + std::to_string(accumulated.accumulate);
+    try {
+      RenderSettings r = base_render_;
+      r.view = View::Shadow;
+      const Image image = render_accumulated(renderer_, r, accumulated);
+      check_gl();
+      add_row(label, "hard-accumulate", accumulated, image);
+    } catch (const std::exception&) {
+      ++failed_;
+      add_row(label, "hard-accumulate", accumulated, std::nullopt);
     }
     page.table(rows);
     page.figures(figures);
@@ -524,7 +550,7 @@ class Study {
   RenderSettings base_render_;
   ShadowSettings base_shadow_;
   // Images, metrics and timings the study makes, for the progress bar.
-  int total_items() const { return options_.quick ? 90 : 123; }
+  int total_items() const { return options_.quick ? 91 : 124; }
   ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;

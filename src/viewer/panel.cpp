@@ -155,6 +155,10 @@ void timing_section(const PanelStatus& status) {
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", kSoftwareTimingNote);
     ImGui::PopTextWrapPos();
   }
+  if (status.accumulate > 0) {
+    ImGui::Text("accumulated %d / %d sub-frames%s", status.accumulated, status.accumulate,
+                status.accumulated < status.accumulate ? " (hold still)" : "");
+  }
   if (!status.gpu) {
     ImGui::TextDisabled("GPU times: waiting for the first results");
     return;
@@ -276,6 +280,8 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
                    p.help);
     }
     int_sliders(state, state.shadow, kShadowIntParams, status.max_texture_size, false, offer);
+    int_sliders(state, state.shadow, kAccumulateParams, std::numeric_limits<int>::max(), false,
+                offer);
     float_sliders(state, state.shadow, kShadowFloatParams, offer);
   }
   if (ImGui::CollapsingHeader("Ambient occlusion")) {

@@ -22,6 +22,9 @@ struct PanelStatus {
   std::string command;                   // "penumbra render ..." of the frame
   std::string message;                   // the last screenshot, copy or error
   int max_texture_size = 16384;
+  // --accumulate: sub-frames summed so far, of `accumulate` (0: not accumulating)
+  int accumulated = 0;
+  int accumulate = 0;
 };
 
 struct PanelActions {

@@ -84,6 +84,8 @@ bool set_number(ViewerState& state, std::string_view name, double value) {
          set_in_table(state.ssao, kSsaoIntParams, name, value, std::numeric_limits<int>::max()) ||
          set_in_table(state.shadow, kShadowIntParams, name, value,
                       std::numeric_limits<int>::max()) ||
+         set_in_table(state.shadow, kAccumulateParams, name, value,
+                      std::numeric_limits<int>::max()) ||
          set_in_table(state.render, kRenderIntParams, name, value, std::numeric_limits<int>::max());
 }
 

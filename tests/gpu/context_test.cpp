@@ -91,6 +91,7 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       {"render/ssao_blur.comp", {{{"AXIS", "0"}}, {{"AXIS", "1"}}}},
       {"render/ssao_upsample.comp", {{}}},
       {"render/tile_views.comp", {{}}},
+      {"render/accumulate.comp", {{{"ACCUMULATE_STEP", "0"}}, {{"ACCUMULATE_STEP", "1"}}}},
   };
   for (const gl::EmbeddedFile& file : gl::embedded_shader_files()) {
     const std::string path(file.path);

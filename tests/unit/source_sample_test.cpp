@@ -55,22 +55,5 @@ TEST(SourceSample, SunDirectionsFillTheDisc) {
   EXPECT_GT(widest, glm::radians(4.0f));
 }
 
-// The weights are the reference's: cos theta_source cos theta_receiver /
-// d^2 for the square, nothing behind the receiver's tangent plane or the
-// source's emitting side.
-TEST(SourceSample, WeightsFollowTheFormFactorKernel) {
-  Light spot;
-  spot.type = LightType::Spot;
-  spot.position = {0.0f, 2.0f, 0.0f};
-  spot.direction = {0.0f, -1.0f, 0.0f};
-  SourceSample s{spot, spot.direction};
-  const glm::vec3 up(0.0f, 1.0f, 0.0f);
-  EXPECT_NEAR(source_weight(spot, s, glm::vec3(0.0f), up), 0.25f, 1e-6f);  // 1 * 1 / 4
-  // 45 degrees off: cos^2 = 1/2 over d^2 = 8.
-  EXPECT_NEAR(source_weight(spot, s, glm::vec3(2.0f, 0.0f, 0.0f), up), 0.5f / 8.0f, 1e-6f);
-  EXPECT_EQ(source_weight(spot, s, glm::vec3(0.0f), -up), 0.0f);              // faces away
-  EXPECT_EQ(source_weight(spot, s, glm::vec3(0.0f, 3.0f, 0.0f), -up), 0.0f);  // behind the light
-}
-
 }  // namespace
 }  // namespace penumbra

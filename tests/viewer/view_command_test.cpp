@@ -147,10 +147,11 @@ class ViewWindow : public ::testing::Test {
 
   // `view` of `settings` for a few scripted frames, against `render`.
   Image expect_view_matches_render(const std::string& settings, const std::string& name,
-                                   const std::string& extra = "") {
+                                   const std::string& extra = "", int frames = 3) {
     const std::string shot = out(name + "-view.png");
     const std::string reference = out(name + "-render.png");
-    Result v = run(display(), "view --frames 3 " + settings + " --screenshot " + shot + extra);
+    Result v = run(display(), "view --frames " + std::to_string(frames) + " " + settings +
+                                  " --screenshot " + shot + extra);
     EXPECT_EQ(v.status, 0) << v.err;
     Result r = run("", "render " + settings + " -o " + reference);
     EXPECT_EQ(r.status, 0) << r.err;
@@ -218,6 +219,27 @@ TEST_F(ViewWindow, CameraLightAndSoftShadowsMatchRender) {
           " --camera-position=-6,5,6 --camera-target=0,0.5,0 --light-position=-3,8,2"
           " --light-direction=0.3,-1,-0.2",
       "msm-soft");
+}
+
+// With --accumulate the viewer adds a sub-frame per still frame; once it
+// has them all it shows the sum `render --accumulate` makes, and that sum
+// is soft: far more pixels between lit and shadowed than one hard frame.
+TEST_F(ViewWindow, AccumulatedShadowsRefineToWhatRenderMakes) {
+  const std::string settings =
+      std::string(kSettings) + " --technique hard --light-size 1.5 --view shadow";
+  const Image viewed =
+      expect_view_matches_render(settings + " --accumulate 6", "accumulate", "", 9);
+  const std::string hard = out("accumulate-hard-render.png");
+  ASSERT_EQ(run("", "render " + settings + " -o " + hard).status, 0);
+  const auto partial = [](const Image& image) {
+    int count = 0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+      if (image.rgba[i] > 0.1f && image.rgba[i] < 0.9f) ++count;
+    }
+    return count;
+  };
+  ASSERT_GT(viewed.width, 0);
+  EXPECT_GT(partial(viewed), 3 * partial(penumbra::read_png(hard)));
 }
 
 TEST_F(ViewWindow, MapViewMatchesRender) {
