@@ -188,8 +188,8 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
            "techniques to measure (all: every technique but none)", technique_names(),
            OptionGroup::Technique, "techniques");
   add_list(command, "filter", args.filters,
-           "filters of the vsm, esm, msm, msm16, evsm2 and evsm4 maps, each measured", filter_names(),
-           OptionGroup::Filter);
+           "filters of the vsm, esm, msm, msm16, evsm2 and evsm4 maps, each measured",
+           filter_names(), OptionGroup::Filter);
   in_group(command
                .add_option("-o,--output", args.output_dir,
                            "folder for the images (created if missing): each technique's shadow, "

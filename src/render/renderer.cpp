@@ -417,7 +417,9 @@ ViewSource Renderer::view_source() {
           view == View::Final ? ViewEncoding::LinearColor : ViewEncoding::Data};
 }
 
-Image Renderer::read_view() { return read_view_source(view_source()); }
+Image Renderer::read_view() {
+  return read_view_source(view_source());
+}
 
 Image read_view_source(const ViewSource& source) {
   const gl::Texture& map = *source.texture;

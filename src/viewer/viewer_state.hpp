@@ -69,7 +69,6 @@ struct FrameInput {
 
 FrameInput frame_input(const ViewerState& state, int width, int height, int max_texture_size);
 
-
 // Renders the frame (throws as Renderer::render does).
 void render_frame(Renderer& renderer, const FrameInput& frame, gl::GpuProfiler* profiler);
 

@@ -95,8 +95,8 @@ TEST_F(GpuTest, SubFramesCarryTheirSourceWeights) {
       if (!surfaces.covered[i]) continue;
       const glm::vec3 d = sample.light.position - surfaces.position[i];
       const glm::vec3 w = glm::normalize(d);
-      const float expected = glm::dot(surfaces.normal[i], w) * -glm::dot(sample.normal, w) /
-                             glm::dot(d, d);
+      const float expected =
+          glm::dot(surfaces.normal[i], w) * -glm::dot(sample.normal, w) / glm::dot(d, d);
       ASSERT_EQ(raw.rgba[4 * i], 1.0f) << "pixel " << i << " should be lit";
       EXPECT_NEAR(raw.rgba[4 * i + 2], expected, 1e-3f * expected) << "pixel " << i;
       EXPECT_EQ(raw.rgba[4 * i + 1], raw.rgba[4 * i + 2]);
