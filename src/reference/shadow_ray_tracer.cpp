@@ -44,6 +44,24 @@ constexpr float gamma(int n) {
   return static_cast<float>(n) * epsilon / (1.0f - static_cast<float>(n) * epsilon);
 }
 
+// Lane `lane` of a packet: a ray from `origin` along `direction` (not
+// necessarily unit) up to tfar.
+void set_ray(RTCRay16& rays, int lane, const glm::vec3& origin, const glm::vec3& direction,
+             float tfar) {
+  rays.org_x[lane] = origin.x;
+  rays.org_y[lane] = origin.y;
+  rays.org_z[lane] = origin.z;
+  rays.tnear[lane] = 0.0f;
+  rays.dir_x[lane] = direction.x;
+  rays.dir_y[lane] = direction.y;
+  rays.dir_z[lane] = direction.z;
+  rays.time[lane] = 0.0f;
+  rays.tfar[lane] = tfar;
+  rays.mask[lane] = 0xffffffffu;
+  rays.id[lane] = static_cast<unsigned>(lane);
+  rays.flags[lane] = 0;
+}
+
 // Shadow rays traced 16 at a time with Embree's rtcOccluded16 (one call
 // per packet instead of per ray; Embree traverses the packet's rays
 // together, and a pixel's rays to one light share their origin and nearly
@@ -61,18 +79,7 @@ class OcclusionPackets {
   void add(const glm::vec3& origin, const glm::vec3& direction, float tfar, int pixel,
            float weight) {
     const int lane = size_;
-    rays_.org_x[lane] = origin.x;
-    rays_.org_y[lane] = origin.y;
-    rays_.org_z[lane] = origin.z;
-    rays_.tnear[lane] = 0.0f;
-    rays_.dir_x[lane] = direction.x;
-    rays_.dir_y[lane] = direction.y;
-    rays_.dir_z[lane] = direction.z;
-    rays_.time[lane] = 0.0f;
-    rays_.tfar[lane] = tfar;
-    rays_.mask[lane] = 0xffffffffu;
-    rays_.id[lane] = static_cast<unsigned>(lane);
-    rays_.flags[lane] = 0;
+    set_ray(rays_, lane, origin, direction, tfar);
     pixel_[lane] = pixel;
     weight_[lane] = weight;
     if (++size_ == kWidth) flush();
@@ -120,19 +127,7 @@ class FacetPackets {
 
   void add(const glm::vec3& p, const glm::vec3& n, float reach, int index) {
     const int lane = size_;
-    const glm::vec3 origin = p + reach * n;
-    hits_.ray.org_x[lane] = origin.x;
-    hits_.ray.org_y[lane] = origin.y;
-    hits_.ray.org_z[lane] = origin.z;
-    hits_.ray.tnear[lane] = 0.0f;
-    hits_.ray.dir_x[lane] = -n.x;
-    hits_.ray.dir_y[lane] = -n.y;
-    hits_.ray.dir_z[lane] = -n.z;
-    hits_.ray.time[lane] = 0.0f;
-    hits_.ray.tfar[lane] = 2.0f * reach;
-    hits_.ray.mask[lane] = 0xffffffffu;
-    hits_.ray.id[lane] = static_cast<unsigned>(lane);
-    hits_.ray.flags[lane] = 0;
+    set_ray(hits_.ray, lane, p + reach * n, -n, 2.0f * reach);
     hits_.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
     normal_[lane] = n;
     index_[lane] = index;
