@@ -225,6 +225,12 @@ float soft_moment_shadow(int v, ShadowLookup s, float z, OccluderCone cone, vec2
   // the default scene (msm, 480x270): the foot's darkening 0.205 -> 0 at a
   // 1.5-wide source, RMSE 0.0362 -> 0.0366 (0.5 wide: 0.0186 -> 0.0191),
   // the cost of the early outs the sparse search gets wrong.
+  // Only where the penumbra widens the kernel past the fixed --blur: the
+  // fixed filter is the anti-aliasing every receiver gets (with no source
+  // size, --soft is exactly it).
+  if (radius <= fixed_radius) {
+    return filtered_lit_fraction(sat_square_average(v, center, radius), z, s.texel_depth);
+  }
   const float square_corners = 1.41421356;
   OccluderCone wide = cone;
   wide.tan_half_angle *= square_corners * 0.88622693;  // equal-area disc -> circumscribed
