@@ -200,8 +200,8 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
            OptionGroup::Technique, "techniques");
   args.named.filter = std::string(enum_name<Filter>(kFilterNames, args.shadow.filter));
   add_choice(command, "filter", args.named.filter,
-             "filter of the vsm, esm, msm and msm16 maps: a separable Gaussian, or a summed-area "
-             "table",
+             "filter of the vsm, esm, msm, msm16, evsm2 and evsm4 maps: a separable Gaussian, or a "
+             "summed-area table",
              filter_names(), OptionGroup::Filter);
   add_shadow_parameters(command, args.shadow);
   command.footer(examples_footer({
