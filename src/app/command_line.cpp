@@ -69,6 +69,9 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   } else if (command.scene_argument != "default") {
     args.push_back("--scene=" + command.scene_argument);
   }
+  if (command.camera_index >= 0) {
+    args.push_back("--camera-index=" + std::to_string(command.camera_index));
+  }
   if (!command.light.empty()) args.push_back("--light=" + command.light);
   add_changed_name(args, "technique", command.shadow.technique, shadow_defaults.technique,
                    kTechniqueNames);

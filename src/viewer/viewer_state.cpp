@@ -201,6 +201,7 @@ std::vector<std::string> render_command_for(const ViewerState& state, const Fram
   return render_command_args({.scene_argument = state.scene_argument,
                               .model_argument = state.model_argument,
                               .light = state.light_choice,
+                              .camera_index = state.camera_index,
                               .render = frame.render,
                               .shadow = frame.shadow,
                               .ssao = frame.ssao,

@@ -63,6 +63,23 @@ TEST(CommandLine, AModelReplacesTheScene) {
             (std::vector<std::string>{"render", "--model=models/bunny.obj", "--output=a.png"}));
 }
 
+// A glTF scene's camera chosen with --camera-index is part of the command
+// (the viewer's "Copy as command" re-renders from the same camera).
+TEST(CommandLine, KeepsAGltfScenesCameraIndex) {
+  const std::vector<std::string> args = render_command_args({.scene_argument = "scene.gltf",
+                                                             .model_argument = {},
+                                                             .light = {},
+                                                             .camera_index = 1,
+                                                             .render = {},
+                                                             .shadow = {},
+                                                             .ssao = {},
+                                                             .original = nullptr,
+                                                             .edited = nullptr,
+                                                             .output = "a.png"});
+  EXPECT_EQ(args, (std::vector<std::string>{"render", "--scene=scene.gltf", "--camera-index=1",
+                                            "--output=a.png"}));
+}
+
 TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
   const Scene original = *builtin_scene("default");
   ASSERT_GE(original.lights.size(), 2u);
