@@ -200,7 +200,7 @@ vec2 filtered_blocker_search(vec4 m, float z, float texel_depth) {
 // 0.0266 and vsm 0.058 instead of 0.054 on the default scene, msm 0.036
 // instead of 0.033 on the bunny): it lifts the shadow off the ground at
 // contacts, where the kernel is widest.
-float soft_moment_shadow(int v, ShadowLookup s, float z, OccluderCone cone, vec2 gradient,
+float soft_moment_shadow(int v, ShadowLookup s, float z, GpuLight light, vec3 normal,
                          vec2 rotation) {
   GpuShadowView view = shadow_views[v];
   vec2 center = s.uv * vec2(textureSize(shadow_sat, 0).xy);
@@ -231,6 +231,8 @@ float soft_moment_shadow(int v, ShadowLookup s, float z, OccluderCone cone, vec2
   if (radius <= fixed_radius) {
     return filtered_lit_fraction(sat_square_average(v, center, radius), z, s.texel_depth);
   }
+  OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
+  vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
   const float square_corners = 1.41421356;
   OccluderCone wide = cone;
   wide.tan_half_angle *= square_corners * 0.88622693;  // equal-area disc -> circumscribed
@@ -387,12 +389,13 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
     // points of the sub-frame's cell.
     vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    AccumulateCell cell =
+        accumulate_cell(pixel, shadow_params.accumulate_count,
+                        vec2(shadow_params.accumulate_u, shadow_params.accumulate_v));
     float lit = 0.0;
     for (int q = 0; q < ACCUMULATE_RAYS; ++q) {
       vec3 random = accumulate_hash(pixel, shadow_params.accumulate_frame * ACCUMULATE_RAYS + q);
-      vec2 offset = accumulate_light_offset(
-          view, pixel, shadow_params.accumulate_count,
-          vec2(shadow_params.accumulate_u, shadow_params.accumulate_v), q, random.xy);
+      vec2 offset = accumulate_light_offset(view, cell, q, random.xy);
       lit += shadow_hard_dithered(shadow_depth, v, view, s, z, gradient, offset, random.z);
     }
     return lit / float(ACCUMULATE_RAYS);
@@ -411,9 +414,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #endif
 #elif SHADOW_TECHNIQUE >= TECHNIQUE_VSM
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
-  OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
-  vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
-  float lit = soft_moment_shadow(v, s, z, cone, gradient, rotation);
+  float lit = soft_moment_shadow(v, s, z, light, normal, rotation);
 #else
   float lit = filtered_lit_fraction(filtered_map(v, s.uv), z, s.texel_depth);
 #endif

@@ -87,32 +87,50 @@ uint accumulate_permute(uint i, uint l, uint p) {
   return (i + p) % l;
 }
 
+// The sub-frame's cell of the square as one pixel samples it: the cell
+// (c, r) of cmj_sample's grid (Kensler 2013, Listing 6: m columns, rows
+// rows) holding the sub-frame's `point`, and the pixel's first fine
+// stratum in x and y there, through the permutations its seed picks.
+// The same for all of the pixel's rays in the sub-frame.
+struct AccumulateCell {
+  vec2 point;  // the sub-frame's point, in [0, 1]^2 of the square
+  uint m, rows, c, r;
+  uint first_x, first_y;
+};
+
+AccumulateCell accumulate_cell(ivec2 pixel, int count, vec2 point) {
+  AccumulateCell cell;
+  cell.point = point;
+  uint n = uint(count);
+  cell.m = uint(sqrt(float(n)));
+  while (cell.m * cell.m > n) --cell.m;
+  while ((cell.m + 1u) * (cell.m + 1u) <= n) ++cell.m;
+  cell.rows = (n + cell.m - 1u) / cell.m;
+  cell.c = min(uint(point.x * float(cell.m)), cell.m - 1u);
+  cell.r = min(uint(point.y * float(cell.rows)), cell.rows - 1u);
+  const uint rays = uint(ACCUMULATE_RAYS);
+  uvec3 seed = accumulate_pcg3d(uvec3(uvec2(pixel), 0x9e3779b9u));
+  cell.first_x = rays * accumulate_permute(cell.r, cell.rows, seed.x);
+  cell.first_y = rays * accumulate_permute(cell.c, cell.m, seed.y);
+  return cell;
+}
+
 // The pixel's ray q (0 <= q < ACCUMULATE_RAYS) of this sub-frame: its
 // light offset in world units along the map's x and y, from the
-// sub-frame's `point` (in [0, 1]^2 of the square, as cmj_sample placed it)
-// to the pixel's point in the same cell. `count` is N; `jitter` in [0, 1)^2
-// places the point within its fine strata.
-vec2 accumulate_light_offset(GpuShadowView view, ivec2 pixel, int count, vec2 point, int q,
-                             vec2 jitter) {
-  // The grid of cmj_sample (Kensler 2013, Listing 6): m columns, rows rows.
-  uint n = uint(count);
-  uint m = uint(sqrt(float(n)));
-  while (m * m > n) --m;
-  while ((m + 1u) * (m + 1u) <= n) ++m;
-  uint rows = (n + m - 1u) / m;
-  uint c = min(uint(point.x * float(m)), m - 1u);
-  uint r = min(uint(point.y * float(rows)), rows - 1u);
+// sub-frame's point to the pixel's point in the same cell. `jitter` in
+// [0, 1)^2 places the point within its fine strata.
+vec2 accumulate_light_offset(GpuShadowView view, AccumulateCell cell, int q, vec2 jitter) {
   // Ray q takes sub-cell (qx, qy) of the cell's k x k, and within it the
   // fine strata of the canonical multi-jittered arrangement (Chiu et al.,
   // Figure 3): k qx + qy of the cell's k^2 in x, k qy + qx in y.
   const uint k = uint(ACCUMULATE_RAYS_PER_SIDE), rays = k * k;
   uint qx = uint(q) % k, qy = uint(q) / k;
-  uvec3 seed = accumulate_pcg3d(uvec3(uvec2(pixel), 0x9e3779b9u));
-  uint fine_x = rays * accumulate_permute(r, rows, seed.x) + k * qx + qy;
-  uint fine_y = rays * accumulate_permute(c, m, seed.y) + k * qy + qx;
-  vec2 moved = vec2((float(c) + (float(fine_x) + jitter.x) / float(rays * rows)) / float(m),
-                    (float(r) + (float(fine_y) + jitter.y) / float(rays * m)) / float(rows));
-  return (moved - point) * view.source_width;
+  uint fine_x = cell.first_x + k * qx + qy;
+  uint fine_y = cell.first_y + k * qy + qx;
+  vec2 moved = vec2(
+      (float(cell.c) + (float(fine_x) + jitter.x) / float(rays * cell.rows)) / float(cell.m),
+      (float(cell.r) + (float(fine_y) + jitter.y) / float(rays * cell.m)) / float(cell.rows));
+  return (moved - cell.point) * view.source_width;
 }
 
 // Fraction of light (0 or 1) along the ray to the light moved by

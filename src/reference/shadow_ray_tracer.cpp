@@ -62,6 +62,17 @@ void set_ray(RTCRay16& rays, int lane, const glm::vec3& origin, const glm::vec3&
   rays.flags[lane] = 0;
 }
 
+// The valid mask of a packet of 16 whose first `size` lanes are filled,
+// and the context for its rays, which share an origin or nearly a
+// direction.
+RTCIntersectContext coherent_packet(int* valid, int size) {
+  for (int lane = 0; lane < 16; ++lane) valid[lane] = lane < size ? -1 : 0;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  return context;
+}
+
 // Shadow rays traced 16 at a time with Embree's rtcOccluded16 (one call
 // per packet instead of per ray; Embree traverses the packet's rays
 // together, and a pixel's rays to one light share their origin and nearly
@@ -88,10 +99,7 @@ class OcclusionPackets {
   // Traces the rays added since the last flush.
   void flush() {
     if (size_ == 0) return;
-    for (int lane = 0; lane < kWidth; ++lane) valid_[lane] = lane < size_ ? -1 : 0;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    RTCIntersectContext context = coherent_packet(valid_, size_);
     rtcOccluded16(valid_, scene_, &context, &rays_);
     // rtcOccluded16 sets tfar to -inf where it finds a hit.
     for (int lane = 0; lane < size_; ++lane) {
@@ -136,10 +144,7 @@ class FacetPackets {
 
   void flush() {
     if (size_ == 0) return;
-    for (int lane = 0; lane < kWidth; ++lane) valid_[lane] = lane < size_ ? -1 : 0;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    RTCIntersectContext context = coherent_packet(valid_, size_);
     rtcIntersect16(valid_, scene_, &context, &hits_);
     for (int lane = 0; lane < size_; ++lane) {
       const glm::vec3 n = normal_[lane];
