@@ -1,13 +1,27 @@
 // Reads one model file as `penumbra render --model` does (load_model:
 // the direct readers or assimp, normals, checks) and nothing else, so that
 // benchmarks/load-models can time the reading apart from the rendering.
+// Prints the counts and a hash of the vertex and index arrays, so that
+// the two paths can be seen to give the very same mesh.
 //
 // Usage: load_model FILE [assimp]   ("assimp": the assimp path, for comparison)
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 
 #include "scene/model.hpp"
+
+namespace {
+
+// FNV-1a, 64 bits.
+std::uint64_t hash_bytes(const void* data, std::size_t size, std::uint64_t h) {
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+  return h;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2 || argc > 3) {
@@ -18,8 +32,13 @@ int main(int argc, char** argv) {
   try {
     const penumbra::Model model = penumbra::load_model(
         argv[1], assimp ? penumbra::ModelReader::Assimp : penumbra::ModelReader::Any);
-    std::printf("%zu triangles, %zu vertices\n", model.mesh.indices.size() / 3,
-                model.mesh.vertices.size());
+    const penumbra::TriangleMesh& mesh = model.mesh;
+    std::uint64_t h =
+        hash_bytes(mesh.vertices.data(), mesh.vertices.size() * sizeof(penumbra::Vertex),
+                   14695981039346656037ull);
+    h = hash_bytes(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), h);
+    std::printf("%zu triangles, %zu vertices, mesh hash %016llx\n", mesh.indices.size() / 3,
+                mesh.vertices.size(), static_cast<unsigned long long>(h));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "load_model: error: %s\n", e.what());
     return 1;
