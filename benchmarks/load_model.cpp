@@ -1,10 +1,10 @@
 // Reads one model file as `penumbra render --model` does (load_model:
 // the direct readers or assimp, normals, checks) and nothing else, so that
 // benchmarks/load-models can time the reading apart from the rendering.
-// Prints the counts and a hash of the vertex and index arrays, so that
-// the two paths can be seen to give the very same mesh.
+// Prints the counts and, with --hash, a hash of the vertex and index
+// arrays, so that the two paths can be seen to give the very same mesh.
 //
-// Usage: load_model FILE [assimp]   ("assimp": the assimp path, for comparison)
+// Usage: load_model [--assimp] [--hash] FILE   (--assimp: the assimp path)
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -24,21 +24,37 @@ std::uint64_t hash_bytes(const void* data, std::size_t size, std::uint64_t h) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argc > 3) {
-    std::fprintf(stderr, "usage: load_model FILE [assimp]\n");
+  bool assimp = false, hash = false;
+  const char* path = nullptr;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--assimp") == 0) {
+      assimp = true;
+    } else if (std::strcmp(argv[i], "--hash") == 0) {
+      hash = true;
+    } else if (path == nullptr) {
+      path = argv[i];
+    } else {
+      path = nullptr;
+      break;
+    }
+  }
+  if (path == nullptr) {
+    std::fprintf(stderr, "usage: load_model [--assimp] [--hash] FILE\n");
     return 2;
   }
-  const bool assimp = argc == 3 && std::strcmp(argv[2], "assimp") == 0;
   try {
     const penumbra::Model model = penumbra::load_model(
-        argv[1], assimp ? penumbra::ModelReader::Assimp : penumbra::ModelReader::Any);
+        path, assimp ? penumbra::ModelReader::Assimp : penumbra::ModelReader::Any);
     const penumbra::TriangleMesh& mesh = model.mesh;
-    std::uint64_t h =
-        hash_bytes(mesh.vertices.data(), mesh.vertices.size() * sizeof(penumbra::Vertex),
-                   14695981039346656037ull);
-    h = hash_bytes(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), h);
-    std::printf("%zu triangles, %zu vertices, mesh hash %016llx\n", mesh.indices.size() / 3,
-                mesh.vertices.size(), static_cast<unsigned long long>(h));
+    std::printf("%zu triangles, %zu vertices", mesh.indices.size() / 3, mesh.vertices.size());
+    if (hash) {
+      std::uint64_t h =
+          hash_bytes(mesh.vertices.data(), mesh.vertices.size() * sizeof(penumbra::Vertex),
+                     14695981039346656037ull);
+      h = hash_bytes(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), h);
+      std::printf(", mesh hash %016llx", static_cast<unsigned long long>(h));
+    }
+    std::printf("\n");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "load_model: error: %s\n", e.what());
     return 1;
