@@ -11,13 +11,14 @@
 
 namespace penumbra {
 
-enum class Technique { None, Hard, Pcf, Pcss, Vsm, Esm, Msm, Msm16, Evsm2, Evsm4 };
+enum class Technique { None, Hard, Pcf, Pcss, Backprojection, Vsm, Esm, Msm, Msm16, Evsm2, Evsm4 };
 
-inline constexpr std::array<std::pair<Technique, std::string_view>, 10> kTechniqueNames{{
+inline constexpr std::array<std::pair<Technique, std::string_view>, 11> kTechniqueNames{{
     {Technique::None, "none"},
     {Technique::Hard, "hard"},
     {Technique::Pcf, "pcf"},
     {Technique::Pcss, "pcss"},
+    {Technique::Backprojection, "backprojection"},
     {Technique::Vsm, "vsm"},
     {Technique::Esm, "esm"},
     {Technique::Msm, "msm"},
