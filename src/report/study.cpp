@@ -134,9 +134,9 @@ class Study {
         "texels; the soft variants size their filter from a blocker search (PCSS, and the "
         "summed-area-table moment shadows).");
     std::vector<HtmlFigure> figures;
-    for (Technique t :
-         {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
-          Technique::Esm, Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss,
+                        Technique::Backprojection, Technique::Vsm, Technique::Esm, Technique::Msm,
+                        Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
       figures.push_back(
           figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t)));
     }
@@ -180,9 +180,10 @@ class Study {
         " rays per pixel; the point light a sphere of the light size, the sun a disk of its "
         "angle), over the pixels the light reaches.");
     const std::vector<Technique> techniques =
-        options_.quick ? std::vector<Technique>{Technique::Hard, Technique::Pcss, Technique::Msm}
-                       : std::vector<Technique>{Technique::Hard, Technique::Pcf, Technique::Pcss,
-                                                Technique::Vsm, Technique::Msm};
+        options_.quick
+            ? std::vector<Technique>{Technique::Hard, Technique::Pcss, Technique::Msm}
+            : std::vector<Technique>{Technique::Hard,           Technique::Pcf, Technique::Pcss,
+                                     Technique::Backprojection, Technique::Vsm, Technique::Msm};
     std::vector<std::vector<std::string>> rows = {{"technique"}};
     for (Technique t : techniques) rows.push_back({name_of(t)});
     std::vector<HtmlFigure> figures;
@@ -462,9 +463,9 @@ class Study {
       }
       figures.push_back(f);
     };
-    for (Technique t :
-         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
-          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Backprojection,
+                        Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16,
+                        Technique::Evsm2, Technique::Evsm4}) {
       ++items_;
       progress_.update(items_, total_items());
       const ShadowSettings settings = with(t);
@@ -510,9 +511,9 @@ class Study {
     header.emplace_back("total");
     header.emplace_back("filters / copy");
     rows.push_back(header);
-    for (Technique t :
-         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
-          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Backprojection,
+                        Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16,
+                        Technique::Evsm2, Technique::Evsm4}) {
       ++items_;
       progress_.update(items_, total_items());
       try {
@@ -550,7 +551,7 @@ class Study {
   RenderSettings base_render_;
   ShadowSettings base_shadow_;
   // Images, metrics and timings the study makes, for the progress bar.
-  int total_items() const { return options_.quick ? 91 : 124; }
+  int total_items() const { return options_.quick ? 94 : 133; }
   ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;
