@@ -559,9 +559,10 @@ void main() {
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {
-    // Surfaces facing away from the light receive none of it (an attached
-    // shadow, as a traced shadow ray would find); elsewhere the shadow map
-    // decides.
+    // The technique decides everywhere, also on surfaces turned away from
+    // the light's centre: an area light's source can still reach them over
+    // their horizon, and the traced reference judges them by the part of
+    // the source above it.
     int i = frame.options.z;
     float lit = shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE, rotation);
     out_color = shadow_params.accumulate_weighted != 0
