@@ -25,7 +25,11 @@
 #include "penumbra.glsl"
 
 #define BACKPROJECTION_SIDE 16  // source points per side (a uint holds two rows)
-#define BACKPROJECTION_MAX_STEPS 32  // micro-occluders per side of the search region
+// Micro-occluders per side of the search region at most; wider regions are
+// read with a stride. Default scene, source 1.5, 1280x720, 2048^2 map:
+// RMSE 0.0213 at 32, 0.0191 at 48, 0.0179 at 64 (llvmpipe: the lighting
+// pass 4x PCSS's time).
+#define BACKPROJECTION_MAX_STEPS 64
 #define BACKPROJECTION_SCAN 8        // gathers per side of the coarse nearest-depth scan
 
 // Each micro-occluder is widened from half its stride to this many strides

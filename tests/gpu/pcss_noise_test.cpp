@@ -120,8 +120,8 @@ TEST_F(GpuTest, PcssIsQuietAgainstTheTracedReference) {
 
 // Backprojection (shaders/shadow/backprojection.glsl) models each blocker
 // where the map puts it instead of one mean blocker depth per pixel: on the
-// default scene its error is about half of PCSS's at both source sizes
-// (320x180: 0.0072 vs 0.0155 at 0.5, 0.0203 vs 0.0380 at 1.5).
+// default scene its error is at most about half of PCSS's at both source
+// sizes (320x180: 0.0074 vs 0.0156 at 0.5, 0.0145 vs 0.0381 at 1.5).
 TEST_F(GpuTest, BackprojectionErrsAboutHalfAsMuchAsPcss) {
   Renderer renderer(*builtin_scene("default"));
   for (float size : {0.5f, 1.5f}) {
@@ -130,7 +130,7 @@ TEST_F(GpuTest, BackprojectionErrsAboutHalfAsMuchAsPcss) {
     std::printf("source %.1f: RMSE pcss %.4f, backprojection %.4f (after a 3x3 box %.4f)\n", size,
                 e[0].rmse, e[1].rmse, e[1].smooth);
     EXPECT_GT(e[1].rmse, 0.0) << "nothing compared";
-    EXPECT_LT(e[1].rmse, 0.6 * e[0].rmse) << size;
+    EXPECT_LT(e[1].rmse, 0.55 * e[0].rmse) << size;
   }
 }
 
