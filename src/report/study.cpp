@@ -146,9 +146,9 @@ class Study {
         "texels; the soft variants size their filter from a blocker search (PCSS, and the "
         "summed-area-table moment shadows).");
     std::vector<HtmlFigure> figures;
-    for (Technique t :
-         {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
-          Technique::Esm, Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss,
+                        Technique::Backprojection, Technique::Vsm, Technique::Esm, Technique::Msm,
+                        Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
       figures.push_back(
           figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t)));
     }
@@ -192,9 +192,10 @@ class Study {
         " rays per pixel; the point light a sphere of the light size, the sun a disk of its "
         "angle), over the pixels the light reaches.");
     const std::vector<Technique> techniques =
-        options_.quick ? std::vector<Technique>{Technique::Hard, Technique::Pcss, Technique::Msm}
-                       : std::vector<Technique>{Technique::Hard, Technique::Pcf, Technique::Pcss,
-                                                Technique::Vsm, Technique::Msm};
+        options_.quick
+            ? std::vector<Technique>{Technique::Hard, Technique::Pcss, Technique::Msm}
+            : std::vector<Technique>{Technique::Hard,           Technique::Pcf, Technique::Pcss,
+                                     Technique::Backprojection, Technique::Vsm, Technique::Msm};
     std::vector<std::vector<std::string>> rows = {{"technique"}};
     for (Technique t : techniques) rows.push_back({name_of(t)});
     std::vector<HtmlFigure> figures;
@@ -478,9 +479,9 @@ class Study {
       }
       figures.push_back(f);
     };
-    for (Technique t :
-         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
-          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Backprojection,
+                        Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16,
+                        Technique::Evsm2, Technique::Evsm4}) {
       ++items_;
       progress_.update(items_, total_items());
       const ShadowSettings settings = with(t);
@@ -516,9 +517,10 @@ class Study {
         options_.quick
             ? std::vector<Technique>{Technique::Hard, Technique::Pcf, Technique::Pcss,
                                      Technique::Vsm, Technique::Msm}
-            : std::vector<Technique>{Technique::Hard,  Technique::Pcf,   Technique::Pcss,
-                                     Technique::Vsm,   Technique::Esm,   Technique::Msm,
-                                     Technique::Msm16, Technique::Evsm2, Technique::Evsm4};
+            : std::vector<Technique>{
+                  Technique::Hard,  Technique::Pcf,  Technique::Pcss, Technique::Backprojection,
+                  Technique::Vsm,   Technique::Esm,  Technique::Msm,  Technique::Msm16,
+                  Technique::Evsm2, Technique::Evsm4};
     // The scene's files go into the report's folder, so the commands under
     // the images run there as they are.
     const std::string scene_argument = "foliage/foliage.gltf";
@@ -681,9 +683,9 @@ class Study {
     header.emplace_back("total");
     header.emplace_back("filters / copy");
     rows.push_back(header);
-    for (Technique t :
-         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
-          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Backprojection,
+                        Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16,
+                        Technique::Evsm2, Technique::Evsm4}) {
       ++items_;
       progress_.update(items_, total_items());
       try {
@@ -722,8 +724,8 @@ class Study {
   ShadowSettings base_shadow_;
   // Images, metrics and timings the study makes, for the progress bar.
   // The foliage section: its scene image, and per light (2) a trace and
-  // each technique (5 or 9).
-  int total_items() const { return options_.quick ? 91 + 13 : 124 + 21; }
+  // each technique (5 or 10).
+  int total_items() const { return options_.quick ? 94 + 13 : 133 + 23; }
   ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;
