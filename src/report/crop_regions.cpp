@@ -41,8 +41,8 @@ bool overlaps(const CropRegion& a, int x, int y, int w, int h) {
 }  // namespace
 
 std::vector<CropRegion> choose_crop_regions(const Image& reference,
-                                            const std::vector<const Image*>& techniques,
-                                            int width, int height) {
+                                            const std::vector<const Image*>& techniques, int width,
+                                            int height) {
   const int w = reference.width, h = reference.height;
   if (width < 1 || height < 1 || width > w || height > h) {
     throw RuntimeError("crop window does not fit the image");

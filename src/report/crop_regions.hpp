@@ -10,9 +10,9 @@
 namespace penumbra {
 
 struct CropRegion {
-  std::string id;    // "largest-error", "contact-shadow", "wide-penumbra"
-  std::string name;  // as the page titles it
-  std::string rule;  // how it was chosen, as the page states it
+  std::string id;                           // "largest-error", "contact-shadow", "wide-penumbra"
+  std::string name;                         // as the page titles it
+  std::string rule;                         // how it was chosen, as the page states it
   int x = 0, y = 0, width = 0, height = 0;  // pixels of the camera image
   double score = 0.0;                       // what the rule maximized
 };
@@ -37,8 +37,8 @@ inline constexpr float kPenumbraLow = 0.1f, kPenumbraHigh = 0.9f;
 // Ties go to the window first in reading order. Throws RuntimeError when an
 // image's size differs from the reference's or the window does not fit.
 std::vector<CropRegion> choose_crop_regions(const Image& reference,
-                                            const std::vector<const Image*>& techniques,
-                                            int width, int height);
+                                            const std::vector<const Image*>& techniques, int width,
+                                            int height);
 
 // The region enlarged `scale` times, each pixel repeated scale x scale.
 Image crop_nearest(const Image& image, const CropRegion& region, int scale);

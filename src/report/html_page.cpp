@@ -27,8 +27,7 @@ std::string figure_html(const HtmlFigure& f) {
     for (const HtmlOverlay& o : f.overlays) {
       html += "<span class=\"region\" style=\"left:" + percent(o.x, f.width) +
               ";top:" + percent(o.y, f.height) + ";width:" + percent(o.width, f.width) +
-              ";height:" + percent(o.height, f.height) + "\">" + html_escape(o.label) +
-              "</span>";
+              ";height:" + percent(o.height, f.height) + "\">" + html_escape(o.label) + "</span>";
     }
     html += "</a>";
   } else {
@@ -157,7 +156,7 @@ std::string HtmlPage::finish() const {
          ".group { display: flex; gap: 6px; padding: 4px; background: #f3f3f3; "
          "break-inside: avoid; }\n"
          "figure { margin: 0; width: min(100%, 440px); break-inside: avoid; }\n"
-         ".group figure { width: min(100%, 400px); }\n"
+         ".group figure { width: min(44vw, 330px); }\n"
          "figure img { width: 100%; height: auto; border: 1px solid #ccc; }\n"
          "figure.crop { width: auto; }\n"
          "figure.crop img { width: auto; image-rendering: pixelated; }\n"

@@ -23,6 +23,7 @@
 #include "report/html_page.hpp"
 #include "report/ranking.hpp"
 #include "report/svg_plot.hpp"
+#include "report/verdict.hpp"
 #include "shadow/representation.hpp"
 #include "shadow/shadow_map_pass.hpp"
 
@@ -45,8 +46,7 @@ std::string name_of(Technique t) {
 // Bytes per texel of the map a technique's lookup reads: the depth map for
 // the techniques that test depths, the representation for the others.
 int map_bytes_per_texel(Technique t) {
-  return bytes_per_texel(is_filterable(t) ? representation_format(t)
-                                          : ShadowMapPass::kDepthFormat);
+  return bytes_per_texel(is_filterable(t) ? representation_format(t) : ShadowMapPass::kDepthFormat);
 }
 
 // One technique's (or setting's) errors against the traced reference.
@@ -137,8 +137,8 @@ class Study {
   }
 
   // An image the study computed (not rendered by one command) as a figure.
-  HtmlFigure written_figure(const Image& image, const std::string& file,
-                            const std::string& caption, PngEncoding encoding) {
+  HtmlFigure written_figure(const Image& image, const std::string& file, const std::string& caption,
+                            PngEncoding encoding) {
     HtmlFigure f;
     f.caption = caption;
     try {
@@ -283,7 +283,8 @@ class Study {
       const std::vector<double> rmse = measure_light_type(renderer, techniques, samples, rows);
       if (type == LightType::Directional) {
         for (std::size_t i = 0; i < techniques.size(); ++i) {
-          if (rmse[i] >= 0.0) directional_rmse_.push_back({name_of(techniques[i]), rmse[i]});
+          if (rmse[i] >= 0.0)
+            findings_.directional_rmse.push_back({name_of(techniques[i]), rmse[i]});
         }
       }
     }
@@ -451,12 +452,12 @@ class Study {
         row.push_back(fixed(rmse, 4));
         plot.series[i].points.push_back({size, rmse, "", false});
         if (size == sizes.back() && i + 1 < techniques.size()) {
-          widest_light_.push_back({techniques[i].name, rmse});
+          findings_.widest_light_rmse.push_back({techniques[i].name, rmse});
         }
       }
       rows.push_back(row);
     }
-    widest_light_size_ = sizes.back();
+    findings_.widest_light_size = sizes.back();
     page.paragraph(
         "Each soft technique against the traced reference of the same light size (" +
         std::to_string(traced_samples()) +
@@ -552,8 +553,8 @@ class Study {
            "begin (light leaking near contact) and fades them; a large c makes the test sharp "
            "but also sharpens the filtered edge away from the reference. Here the mean error "
            "goes from "
-        << fixed(first.mean_absolute_error, 4) << " at c = " << fixed(points.front().c, 0)
-        << " to " << fixed(last.mean_absolute_error, 4) << " at c = " << fixed(points.back().c, 0)
+        << fixed(first.mean_absolute_error, 4) << " at c = " << fixed(points.front().c, 0) << " to "
+        << fixed(last.mean_absolute_error, 4) << " at c = " << fixed(points.back().c, 0)
         << ", and light leaking from " << fixed(100.0 * first.leak_fraction, 3) << " % to "
         << fixed(100.0 * last.leak_fraction, 3) << " % of the pixels. On this scene ";
     if (names.size() == 1) {
@@ -716,8 +717,7 @@ class Study {
       const CropRegion& r = regions_[i];
       page.paragraph(std::to_string(i + 1) + ". " + r.name + ": " + r.rule + ".");
       rule_rows.push_back({std::to_string(i + 1) + ". " + r.name, std::to_string(r.x),
-                           std::to_string(r.y), std::to_string(r.width),
-                           std::to_string(r.height)});
+                           std::to_string(r.y), std::to_string(r.width), std::to_string(r.height)});
     }
     page.table(rule_rows);
 
@@ -732,18 +732,18 @@ class Study {
     for (std::size_t i = 0; i < regions_.size(); ++i) {
       const CropRegion& r = regions_[i];
       error_rows.front().push_back("MAE " + r.name);
-      page.heading(std::to_string(i + 1) + ". " + r.name + " (x " + std::to_string(r.x) +
-                       ", y " + std::to_string(r.y) + ")",
+      page.heading(std::to_string(i + 1) + ". " + r.name + " (x " + std::to_string(r.x) + ", y " +
+                       std::to_string(r.y) + ")",
                    3);
       std::vector<HtmlFigure> figures;
-      figures.push_back(crop_figure(traced->image, r, "traced reference", "traced",
-                                    reference_file));
+      figures.push_back(
+          crop_figure(traced->image, r, "traced reference", "traced", reference_file));
       for (std::size_t t = 0; t < errors_.size(); ++t) {
         const MeasuredError& e = errors_[t];
         const double mae = region_error(e.image, traced->image, r);
         error_rows[t + 1].push_back(fixed(mae, 4));
         if (r.id == "contact-shadow" && e.single_frame) {
-          contact_mae_.push_back({e.label, mae});
+          findings_.contact_mae.push_back({e.label, mae});
         }
         figures.push_back(crop_figure(e.image, r, e.label + ": MAE " + fixed(mae, 4), e.stem,
                                       "shadow-" + e.stem + ".png"));
@@ -769,8 +769,10 @@ class Study {
     }
     f.link = source;
     f.css_class = "crop";
-    f.data = {{"region", region.id},       {"source", source},
-              {"x", std::to_string(region.x)}, {"y", std::to_string(region.y)},
+    f.data = {{"region", region.id},
+              {"source", source},
+              {"x", std::to_string(region.x)},
+              {"y", std::to_string(region.y)},
               {"width", std::to_string(region.width)},
               {"height", std::to_string(region.height)},
               {"scale", std::to_string(kCropScale)}};
@@ -778,8 +780,7 @@ class Study {
   }
 
   // Mean |technique - reference| over the region's compared pixels.
-  static double region_error(const Image& technique, const Image& reference,
-                             const CropRegion& r) {
+  static double region_error(const Image& technique, const Image& reference, const CropRegion& r) {
     double sum = 0.0;
     long count = 0;
     for (int y = r.y; y < r.y + r.height; ++y) {
@@ -832,8 +833,7 @@ class Study {
           row.push_back(times.ran[p] ? fixed(spread_of(timer ? s.timer_ms : s.wall_ms).median, 2)
                                      : "");
         }
-        const double total =
-            spread_of(timer ? times.total.timer_ms : times.total.wall_ms).median;
+        const double total = spread_of(timer ? times.total.timer_ms : times.total.wall_ms).median;
         row.push_back(fixed(total, 2));
         total_ms_.push_back({name_of(t), total});
         std::string ratios;
@@ -872,13 +872,12 @@ class Study {
                   .highlight_name = "Pareto front"};
     std::vector<std::vector<std::string>> data = {
         {"technique", "time (ms)", "RMSE traced", "on the Pareto front"}};
-    pareto_.clear();
     for (std::size_t i = 0; i < points.size(); ++i) {
       const bool on_front = std::find(front.begin(), front.end(), i) != front.end();
       plot.series[0].points.push_back({points[i].cost, points[i].error, names[i], on_front});
-      data.push_back({names[i], fixed(points[i].cost, 2), fixed(points[i].error, 4),
-                      on_front ? "yes" : "no"});
-      if (on_front) pareto_.push_back({names[i], points[i]});
+      data.push_back(
+          {names[i], fixed(points[i].cost, 2), fixed(points[i].error, 4), on_front ? "yes" : "no"});
+      if (on_front) findings_.pareto.push_back({names[i], {points[i].cost, points[i].error}});
     }
     page.heading("Quality against cost", 3);
     page.paragraph(
@@ -928,9 +927,8 @@ class Study {
     for (std::size_t i = 0; i < settings.size(); ++i) {
       bars.categories.push_back(settings[i].name);
       bars.values.emplace_back();
-      std::vector<std::string> row = {settings[i].name,
-                                      std::to_string(map_bytes_per_texel(
-                                          settings[i].shadow.technique))};
+      std::vector<std::string> row = {
+          settings[i].name, std::to_string(map_bytes_per_texel(settings[i].shadow.technique))};
       double total = 0.0;
       for (std::size_t p = 0; p < kPassCount; ++p) {
         if (!used[p]) continue;
@@ -946,7 +944,8 @@ class Study {
     }
     page.heading("Bytes per texel per pass", 3);
     page.paragraph(
-        "The bytes each pass over the " + std::to_string(size) + "^2 shadow-map array reads and "
+        "The bytes each pass over the " + std::to_string(size) +
+        "^2 shadow-map array reads and "
         "writes per texel, counted from its formats, tiles and aprons, every texel a workgroup "
         "loads taken as a read from memory (src/shadow/texel_traffic.hpp). On a GPU the filters "
         "are memory-bound, so these bytes set their cost. The depth-testing techniques (hard, "
@@ -957,91 +956,21 @@ class Study {
   // The page's first section: which technique when, each from a number this
   // run measured, linked to the section that shows it.
   void verdict(HtmlPage& page) {
-    std::vector<VerdictLine> lines;
-    const auto least = [](const std::vector<std::pair<std::string, double>>& values, int digits) {
-      std::vector<double> v;
-      for (const auto& [name, value] : values) v.push_back(value);
-      std::vector<std::string> names;
-      const std::vector<std::size_t> best = least_at_precision(v, digits);
-      for (std::size_t i : best) names.push_back(values[i].first);
-      return std::pair{join_names(names) + (names.size() > 1 ? " (tied)" : ""),
-                       best.empty() ? 0.0 : v[best.front()]};
-    };
-    std::vector<std::pair<std::string, double>> single;
+    findings_.light_size = base_shadow_.light_size;
+    findings_.cascades = base_shadow_.cascades;
     for (const MeasuredError& e : errors_) {
-      if (e.single_frame) single.push_back({e.label, e.traced.rmse});
+      if (!e.single_frame) continue;
+      findings_.rmse.push_back({e.label, e.traced.rmse});
+      findings_.map_bytes.push_back(map_bytes_per_texel(e.technique));
     }
-    if (!single.empty()) {
-      const auto [name, rmse] = least(single, 4);
-      lines.push_back({"Closest to the ray-traced truth overall", name, "RMSE ", fixed(rmse, 4),
-                       " against the traced reference (W = 4, light size " +
-                           fixed(base_shadow_.light_size, 2) + ").",
-                       "errors", "section 6"});
-    }
-    if (!contact_mae_.empty()) {
-      const auto [name, mae] = least(contact_mae_, 4);
-      lines.push_back({"Hard contact shadows", name, "mean error ", fixed(mae, 4),
-                       " in the contact-shadow close-up, the least of the single-frame "
-                       "techniques.",
-                       "closeups", "section 7"});
-    }
-    if (!widest_light_.empty()) {
-      const auto [name, rmse] = least(widest_light_, 4);
-      lines.push_back({"Wide soft light", name, "RMSE ", fixed(rmse, 4),
-                       " at light size " + fixed(widest_light_size_, 2) +
-                           ", the widest measured, the least of the soft techniques.",
-                       "sweeps", "section 4"});
-    }
-    if (!single.empty()) {
-      int fewest = 1 << 30;
-      for (const MeasuredError& e : errors_) {
-        if (e.single_frame) fewest = std::min(fewest, map_bytes_per_texel(e.technique));
-      }
-      std::vector<std::pair<std::string, double>> smallest;
-      for (const MeasuredError& e : errors_) {
-        if (e.single_frame && map_bytes_per_texel(e.technique) == fewest) {
-          smallest.push_back({e.label, e.traced.rmse});
-        }
-      }
-      const auto [name, rmse] = least(smallest, 4);
-      lines.push_back({"Tight memory budget", name, "RMSE ", fixed(rmse, 4),
-                       ", the least of the techniques whose map holds " + std::to_string(fewest) +
-                           " bytes per texel, the fewest.",
-                       "errors", "section 6"});
-    }
-    if (!directional_rmse_.empty()) {
-      const auto [name, rmse] = least(directional_rmse_, 4);
-      lines.push_back({"Large scenes (a sun over cascades)", name, "RMSE ", fixed(rmse, 4),
-                       " under the directional light's " + std::to_string(base_shadow_.cascades) +
-                           " cascades.",
-                       "lights", "section 2"});
-    }
-    if (!pareto_.empty()) {
-      // The cheapest point of the front that is within twice the best RMSE
-      // on it: most of the quality for the least time.
-      double best = pareto_.front().second.error;
-      for (const auto& [name, p] : pareto_) best = std::min(best, p.error);
-      const auto* cheapest = &pareto_.front();
-      for (const auto& entry : pareto_) {
-        if (entry.second.error <= 2.0 * best &&
-            (cheapest->second.error > 2.0 * best || entry.second.cost < cheapest->second.cost)) {
-          cheapest = &entry;
-        }
-      }
-      lines.push_back({"Most quality per millisecond", cheapest->first, "",
-                       fixed(cheapest->second.cost, 2),
-                       " ms a frame for RMSE " + fixed(cheapest->second.error, 4) +
-                           ": the cheapest point on the Pareto front within twice its least "
-                           "error.",
-                       "timings", "section 8"});
-    }
-    if (foliage_) lines.push_back(*foliage_);
     std::string intro =
         "Which technique to use when, from this run's measurements on scene '" + scene_.name +
         "'. Each line gives the number it rests on and links to the section that shows it; "
         "values equal at the printed precision are ties.";
-    if (!foliage_) intro += " This report has no foliage section, so foliage gets no verdict.";
-    page.verdict("Summary: which technique when", intro, lines);
+    if (!findings_.foliage) {
+      intro += " This report has no foliage section, so foliage gets no verdict.";
+    }
+    page.verdict("Summary: which technique when", intro, verdict_lines(findings_));
   }
 
   static constexpr int kTimedFrames = 3;
@@ -1056,17 +985,11 @@ class Study {
   std::optional<TracedReference> traced_;
   bool traced_tried_ = false;
   std::string traced_error_;
-  // What the verdict is drawn from.
   std::vector<MeasuredError> errors_;
   std::vector<CropRegion> regions_;
-  std::vector<std::pair<std::string, double>> contact_mae_;
-  std::vector<std::pair<std::string, double>> widest_light_;
-  float widest_light_size_ = 0.0f;
-  std::vector<std::pair<std::string, double>> directional_rmse_;
   std::vector<std::pair<std::string, double>> total_ms_;
-  std::vector<std::pair<std::string, CostQuality>> pareto_;
-  // A foliage section's line of the verdict, when the report has one.
-  std::optional<VerdictLine> foliage_;
+  // What the verdict is drawn from (a foliage section sets its line).
+  StudyFindings findings_;
   // Images, metrics and timings the study makes, for the progress bar.
   int total_items() const { return options_.quick ? 116 : 155; }
   ProgressBar progress_{"report"};

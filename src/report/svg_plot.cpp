@@ -43,8 +43,8 @@ std::string marker_path(int shape, double x, double y, double r) {
   const auto p = [](double px, double py) { return num(px) + "," + num(py); };
   switch (shape % kMarkerShapes) {
     case 0:
-      return "M" + p(x - r, y) + "a" + num(r) + "," + num(r) + " 0 1,0 " + num(2 * r) +
-             ",0a" + num(r) + "," + num(r) + " 0 1,0 " + num(-2 * r) + ",0Z";
+      return "M" + p(x - r, y) + "a" + num(r) + "," + num(r) + " 0 1,0 " + num(2 * r) + ",0a" +
+             num(r) + "," + num(r) + " 0 1,0 " + num(-2 * r) + ",0Z";
     case 1: {
       const double s = r * 0.85;
       return "M" + p(x - s, y - s) + "L" + p(x + s, y - s) + "L" + p(x + s, y + s) + "L" +
@@ -80,8 +80,8 @@ std::string line(double x0, double y0, double x1, double y1, const std::string& 
 }
 
 std::string svg_open(double height, const std::string& title) {
-  return "<svg class=\"plot\" viewBox=\"0 0 " + num(kWidth) +
-         " " + num(height) + "\" role=\"img\" aria-label=\"" + html_escape(title) +
+  return "<svg class=\"plot\" viewBox=\"0 0 " + num(kWidth) + " " + num(height) +
+         "\" role=\"img\" aria-label=\"" + html_escape(title) +
          "\" font-family=\"sans-serif\" font-size=\"11\">\n<title>" + html_escape(title) +
          "</title>\n" + text(kLeft, 20, title, "font-size=\"14\" font-weight=\"600\"");
 }
@@ -183,8 +183,9 @@ std::string svg_line_plot(const LinePlot& plot) {
   }
   svg += "<rect x=\"" + num(kLeft) + "\" y=\"" + num(kTop) + "\" width=\"" + num(kRight - kLeft) +
          "\" height=\"" + num(kBottom - kTop) + "\" fill=\"none\" stroke=\"#444\"/>\n";
-  svg += text((kLeft + kRight) / 2, kBottom + 34, plot.x.label + (plot.x.log2 ? " (log scale)" : ""),
-              "text-anchor=\"middle\" font-size=\"12\"");
+  svg +=
+      text((kLeft + kRight) / 2, kBottom + 34, plot.x.label + (plot.x.log2 ? " (log scale)" : ""),
+           "text-anchor=\"middle\" font-size=\"12\"");
   svg += text(0, 0, plot.y.label,
               "text-anchor=\"middle\" font-size=\"12\" transform=\"translate(16 " +
                   num((kTop + kBottom) / 2) + ") rotate(-90)\"");
@@ -231,8 +232,8 @@ std::string svg_line_plot(const LinePlot& plot) {
              marker_path(static_cast<int>(i), px(p.x), py(p.y), 4.0) + "\" fill=\"" +
              (filled ? color : std::string("#fff")) + "\" stroke=\"" + color +
              "\" stroke-width=\"1.4\"><title>" +
-             html_escape(s.name + (p.label.empty() ? "" : " " + p.label) + ": " +
-                         plot_number(p.x) + ", " + plot_number(p.y)) +
+             html_escape(s.name + (p.label.empty() ? "" : " " + p.label) + ": " + plot_number(p.x) +
+                         ", " + plot_number(p.y)) +
              "</title></path>\n";
       if (!p.label.empty()) {
         svg += text(px(p.x) + 6, py(p.y) - 6, p.label, "font-size=\"10\" fill=\"#333\"");

@@ -42,9 +42,9 @@ std::string svg_line_plot(const LinePlot& plot);
 
 struct StackedBars {
   std::string title;
-  std::string value_label;               // the bars' axis, with its unit
-  std::vector<std::string> categories;   // one horizontal bar each
-  std::vector<std::string> stack_names;  // the segments of every bar
+  std::string value_label;                  // the bars' axis, with its unit
+  std::vector<std::string> categories;      // one horizontal bar each
+  std::vector<std::string> stack_names;     // the segments of every bar
   std::vector<std::vector<double>> values;  // [category][segment], >= 0
 };
 

@@ -4,8 +4,8 @@
 // the close-ups are cut from the regions the error images mark, the
 // verdict's numbers are the ones its sections show, and headless Chromium
 // renders the page without console errors. All tests share one report.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -117,8 +117,8 @@ std::vector<Plot> plots_of(const std::string& html) {
     std::smatch title;
     if (std::regex_search(body, title, title_re)) plot.title = title[1].str();
     for (std::sregex_iterator it(body.begin(), body.end(), point_re); it != end; ++it) {
-      plot.points.push_back({(*it)[1].str(), std::stod((*it)[2].str()),
-                             std::stod((*it)[3].str()), (*it)[4].str() == (*it)[5].str()});
+      plot.points.push_back({(*it)[1].str(), std::stod((*it)[2].str()), std::stod((*it)[3].str()),
+                             (*it)[4].str() == (*it)[5].str()});
     }
     for (std::sregex_iterator it(body.begin(), body.end(), bar_re); it != end; ++it) {
       plot.bars.push_back({(*it)[1].str(), (*it)[2].str(), std::stod((*it)[3].str())});
@@ -138,7 +138,9 @@ const Plot* plot_titled(const std::vector<Plot>& plots, const std::string& title
 }
 
 // A number as a table prints it ("0.632 %" reads 0.632).
-double number(const std::string& cell) { return std::stod(cell); }
+double number(const std::string& cell) {
+  return std::stod(cell);
+}
 
 class Report : public ::testing::Test {
  protected:
@@ -251,7 +253,8 @@ TEST_F(Report, TheCommandUnderAnImageRemakesIt) {
 
 TEST_F(Report, EveryImageLinksToItsFullSizeFile) {
   ASSERT_EQ(status_, 0);
-  const std::regex link_re(R"re(<a class="frame" href="([^"]+)"><img src="([^"]+)" width="(\d+)")re");
+  const std::regex link_re(
+      R"re(<a class="frame" href="([^"]+)"><img src="([^"]+)" width="(\d+)")re");
   int links = 0, crops = 0;
   for (std::sregex_iterator it(html_.begin(), html_.end(), link_re), end; it != end; ++it) {
     ++links;
@@ -300,10 +303,9 @@ TEST_F(Report, NoTableHasAnEmptyColumn) {
 TEST_F(Report, PlotsDrawTheNumbersTheTablesPrint) {
   ASSERT_EQ(status_, 0);
   const std::vector<Plot> plots = plots_of(html_);
-  for (const char* title :
-       {"Error against filter width", "Error against light size",
-        "ESM: leaking and over-darkening against c", "Quality against cost",
-        "Memory traffic per shadow-map texel"}) {
+  for (const char* title : {"Error against filter width", "Error against light size",
+                            "ESM: leaking and over-darkening against c", "Quality against cost",
+                            "Memory traffic per shadow-map texel"}) {
     const Plot* plot = plot_titled(plots, title);
     ASSERT_NE(plot, nullptr) << title;
     EXPECT_FALSE(plot->points.empty() && plot->bars.empty()) << title;
@@ -445,7 +447,8 @@ TEST_F(Report, CloseUpsAreCutFromTheRegionsTheErrorImagesMark) {
   // The largest-error region holds (up to 8-bit rounding) the most summed
   // |technique - reference| of any window its size.
   ASSERT_EQ(sources.size(), 11u);
-  const int w = static_cast<int>(number(regions[1][3])), h = static_cast<int>(number(regions[1][4]));
+  const int w = static_cast<int>(number(regions[1][3])),
+            h = static_cast<int>(number(regions[1][4]));
   std::vector<double> error(static_cast<std::size_t>(traced.width) * traced.height, 0.0);
   for (const std::string& source : sources) {
     if (source == "shadow-traced.png") continue;
@@ -461,7 +464,8 @@ TEST_F(Report, CloseUpsAreCutFromTheRegionsTheErrorImagesMark) {
   const auto window = [&](int x0, int y0) {
     double sum = 0.0;
     for (int py = y0; py < y0 + h; ++py) {
-      for (int px = x0; px < x0 + w; ++px) sum += error[static_cast<std::size_t>(py) * traced.width + px];
+      for (int px = x0; px < x0 + w; ++px)
+        sum += error[static_cast<std::size_t>(py) * traced.width + px];
     }
     return sum;
   };
@@ -469,8 +473,9 @@ TEST_F(Report, CloseUpsAreCutFromTheRegionsTheErrorImagesMark) {
   for (int y0 = 0; y0 + h <= traced.height; y0 += 2) {
     for (int x0 = 0; x0 + w <= traced.width; x0 += 2) most = std::max(most, window(x0, y0));
   }
-  EXPECT_GE(window(static_cast<int>(number(regions[1][1])), static_cast<int>(number(regions[1][2]))),
-            0.98 * most);
+  EXPECT_GE(
+      window(static_cast<int>(number(regions[1][1])), static_cast<int>(number(regions[1][2]))),
+      0.98 * most);
 }
 
 TEST_F(Report, TheVerdictsNumbersAppearInTheSectionsItLinks) {
@@ -490,8 +495,8 @@ TEST_F(Report, TheVerdictsNumbersAppearInTheSectionsItLinks) {
     ++lines;
   }
   EXPECT_GE(lines, 5);
-  for (const char* when : {"Hard contact shadows", "Wide soft light", "Tight memory budget",
-                           "Large scenes"}) {
+  for (const char* when :
+       {"Hard contact shadows", "Wide soft light", "Tight memory budget", "Large scenes"}) {
     EXPECT_NE(summary.find(when), std::string::npos) << when;
   }
 }

@@ -60,8 +60,8 @@ TEST(SvgPlot, PointsCarryTheirDataAndSitOnTheirAxes) {
       R"re(class="point" data-series="msm" data-x="([^"]+)" data-y="([^"]+)" d="M([0-9.]+),([0-9.]+))re");
   std::vector<std::array<double, 4>> points;
   for (std::sregex_iterator it(svg.begin(), svg.end(), point_re), end; it != end; ++it) {
-    points.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) + 4.0,
-                      std::stod((*it)[4])});
+    points.push_back(
+        {std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]) + 4.0, std::stod((*it)[4])});
   }
   ASSERT_EQ(points.size(), 3u);
   EXPECT_EQ(points[0][0], 1.0);
