@@ -88,6 +88,7 @@ class Study {
     errors_section(page);
     closeups_section(page);
     timings_section(page);
+    progress_.step("the verdict and the page", items_, total_items());
     verdict(page);
 
     StudyResult result;
@@ -157,6 +158,12 @@ class Study {
     return (std::filesystem::path(options_.output_dir) / file).string();
   }
 
+  // Starts a section of the page, and the step of the progress it is.
+  void section(HtmlPage& page, const std::string& id, const std::string& title) {
+    page.section(id, title);
+    progress_.step(title, items_, total_items());
+  }
+
   void step() {
     ++items_;
     progress_.update(items_, total_items());
@@ -205,7 +212,7 @@ class Study {
   int traced_samples() const { return options_.quick ? 64 : 256; }
 
   void techniques_section(HtmlPage& page) {
-    page.section("techniques", "1. The techniques side by side");
+    section(page, "techniques", "1. The techniques side by side");
     page.paragraph(
         "The same scene, camera and lights for every technique: a spot light (front right) and a "
         "directional light (from the left). Filtered techniques use a Gaussian of radius W = 4 "
@@ -235,7 +242,7 @@ class Study {
   // the light types compare on equal terms: a spot light's one view, a
   // point light's six cube faces, the sun's cascades.
   void light_types_section(HtmlPage& page) {
-    page.section("lights", "2. Spot, point and directional lights");
+    section(page, "lights", "2. Spot, point and directional lights");
     if (!options_.light_choice.empty()) {
       page.paragraph("This report was made with --light " + options_.light_choice +
                      ": without --light, this section compares the three light types.");
@@ -318,7 +325,7 @@ class Study {
   }
 
   void maps_section(HtmlPage& page) {
-    page.section("maps", "3. Shadow maps before and after the blur");
+    section(page, "maps", "3. Shadow maps before and after the blur");
     page.paragraph(
         "The spot light's map as each technique stores it, as colour (moments z, z^2, z^3 in "
         "red, green, blue; msm16 shows its quantized channels), before and after a Gaussian of "
@@ -343,7 +350,7 @@ class Study {
   }
 
   void sweeps_section(HtmlPage& page) {
-    page.section("sweeps", "4. From anti-aliased to soft: filter widths and light sizes");
+    section(page, "sweeps", "4. From anti-aliased to soft: filter widths and light sizes");
     page.paragraph(
         "W = 1 or 2 only anti-aliases the edge; W = 16 and 32 simulate a wide light. A fixed "
         "filter widens every penumbra alike, contact shadows included; PCSS widens them with "
@@ -487,7 +494,7 @@ class Study {
   }
 
   void esm_section(HtmlPage& page) {
-    page.section("esm", "5. The ESM exponent c");
+    section(page, "esm", "5. The ESM exponent c");
     const std::vector<float> cs = {10.0f, 20.0f, 40.0f, 60.0f, 80.0f, kEsmMaxC};
     std::vector<HtmlFigure> figures;
     std::vector<std::vector<std::string>> rows = {
@@ -587,7 +594,7 @@ class Study {
   }
 
   void errors_section(HtmlPage& page) {
-    page.section("errors", "6. Errors against the references");
+    section(page, "errors", "6. Errors against the references");
     const int samples = traced_samples();
     const TracedReference* traced = base_traced();
     if (!traced) page.paragraph("The traced reference failed: " + traced_error_);
@@ -697,7 +704,7 @@ class Study {
   // Three regions of the spot light's shadow at 4x, nearest neighbour:
   // every technique beside the traced reference.
   void closeups_section(HtmlPage& page) {
-    page.section("closeups", "7. Close-ups at 4x");
+    section(page, "closeups", "7. Close-ups at 4x");
     const TracedReference* traced = base_traced();
     if (!traced || regions_.empty()) {
       page.paragraph("No close-ups: the traced reference or the techniques' images failed.");
@@ -796,7 +803,7 @@ class Study {
   }
 
   void timings_section(HtmlPage& page) {
-    page.section("timings", "8. GPU time and memory traffic per pass");
+    section(page, "timings", "8. GPU time and memory traffic per pass");
     const bool timer = !timers_miss_compute(context_.renderer());
     page.paragraph(
         "Device: " + context_.renderer() + " (" + context_.vendor() + ", " + context_.version() +
@@ -991,7 +998,7 @@ class Study {
   // What the verdict is drawn from (a foliage section sets its line).
   StudyFindings findings_;
   // Images, metrics and timings the study makes, for the progress bar.
-  int total_items() const { return options_.quick ? 116 : 155; }
+  int total_items() const { return options_.quick ? 118 : 172; }
   ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;
