@@ -40,9 +40,8 @@ void ProgressBar::step(const std::string& name, std::int64_t done, std::int64_t 
     if (drawn_) draw(done, total, now);
     return;
   }
-  std::fprintf(stderr, "%s: %s (%lld of %lld items done, %.1f s)\n", label_.c_str(),
-               name.c_str(), static_cast<long long>(done), static_cast<long long>(total),
-               elapsed);
+  std::fprintf(stderr, "%s: %s (%lld of %lld items done, %.1f s)\n", label_.c_str(), name.c_str(),
+               static_cast<long long>(done), static_cast<long long>(total), elapsed);
   std::fflush(stderr);
 }
 
@@ -65,8 +64,8 @@ void ProgressBar::draw(std::int64_t done, std::int64_t total, Clock::time_point 
     // What is left at the pace so far.
     const double left = elapsed * static_cast<double>(total - done) / static_cast<double>(done);
     std::snprintf(numbers, sizeof numbers, " [%s] %lld/%lld  %.0f s, about %.0f s left",
-                  bar.c_str(), static_cast<long long>(done), static_cast<long long>(total),
-                  elapsed, std::max(0.0, left));
+                  bar.c_str(), static_cast<long long>(done), static_cast<long long>(total), elapsed,
+                  std::max(0.0, left));
   } else {
     std::snprintf(numbers, sizeof numbers, " [%s] %lld/%lld  %.0f s", bar.c_str(),
                   static_cast<long long>(done), static_cast<long long>(total), elapsed);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <list>
 #include <sstream>
 
 #include "app/command_line.hpp"
@@ -102,13 +103,17 @@ class Study {
 
  private:
   // Renders one image into the report folder, or records why it failed.
+  // With `shadow_factor`, also the spot light's shadow factor of the same
+  // frame (Renderer::shade: its maps are not rendered again), for the
+  // measurements of the same setting; nullopt if it failed.
   HtmlFigure figure(const std::string& file, const std::string& caption, RenderSettings render,
-                    ShadowSettings shadow) {
-    return figure(renderer_, options_.light_choice, file, caption, render, shadow);
+                    ShadowSettings shadow, std::optional<Image>* shadow_factor = nullptr) {
+    return figure(renderer_, options_.light_choice, file, caption, render, shadow, shadow_factor);
   }
   // The same with another renderer, made for the scene with `light_choice`.
   HtmlFigure figure(Renderer& renderer, const std::string& light_choice, const std::string& file,
-                    const std::string& caption, RenderSettings render, ShadowSettings shadow) {
+                    const std::string& caption, RenderSettings render, ShadowSettings shadow,
+                    std::optional<Image>* shadow_factor = nullptr) {
     HtmlFigure f;
     f.caption = caption;
     f.command = shell_command(render_command_args({.scene_argument = options_.scene_argument,
@@ -134,7 +139,24 @@ class Study {
       f.command.clear();
       ++failed_;
     }
+    if (shadow_factor != nullptr) {
+      *shadow_factor = std::nullopt;
+      if (f.error.empty()) *shadow_factor = shaded(renderer, View::Shadow);
+    }
     return f;
+  }
+
+  // Another view of the frame the renderer made last (Renderer::shade).
+  std::optional<Image> shaded(Renderer& renderer, View view) {
+    try {
+      renderer.shade(view);
+      Image image = renderer.read_view();
+      check_gl();
+      return image;
+    } catch (const std::exception&) {
+      ++failed_;
+      return std::nullopt;
+    }
   }
 
   // An image the study computed (not rendered by one command) as a figure.
@@ -223,8 +245,10 @@ class Study {
     for (Technique t :
          {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
           Technique::Esm, Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
-      figures.push_back(
-          figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t)));
+      std::optional<Image> shadow_factor;
+      figures.push_back(figure("technique-" + name_of(t) + ".png", name_of(t), base_render_,
+                               with(t), &shadow_factor));
+      if (shadow_factor) technique_shadows_.emplace_back(t, std::move(*shadow_factor));
     }
     for (Technique t : {Technique::Vsm, Technique::Msm}) {
       figures.push_back(figure("technique-" + name_of(t) + "-soft.png",
@@ -274,9 +298,11 @@ class Study {
       Scene scene = scene_;
       apply_light_choice(choice, scene);
       Renderer renderer(scene);
-      for (Technique t : techniques) {
+      std::vector<std::optional<Image>> shadows(techniques.size());
+      for (std::size_t i = 0; i < techniques.size(); ++i) {
+        const Technique t = techniques[i];
         figures.push_back(figure(renderer, choice, "light-" + choice + "-" + name_of(t) + ".png",
-                                 choice + ", " + name_of(t), base_render_, with(t)));
+                                 choice + ", " + name_of(t), base_render_, with(t), &shadows[i]));
       }
       std::vector<View> map_views = {View::ShadowMap};
       if (type == LightType::Directional) map_views.insert(map_views.begin(), View::Cascades);
@@ -287,7 +313,7 @@ class Study {
         figures.push_back(figure(renderer, choice, "light-" + choice + "-" + name + ".png",
                                  choice + ": --view " + name, r, base_shadow_));
       }
-      const std::vector<double> rmse = measure_light_type(renderer, techniques, samples, rows);
+      const std::vector<double> rmse = measure_light_type(renderer, shadows, samples, rows);
       if (type == LightType::Directional) {
         for (std::size_t i = 0; i < techniques.size(); ++i) {
           if (rmse[i] >= 0.0)
@@ -300,11 +326,11 @@ class Study {
   }
 
   // Appends each technique's RMSE against the light's traced reference to
-  // its row (one row per technique, after the header); returns them (-1
-  // where one failed).
+  // its row (one row per technique's shadow factor, after the header);
+  // returns them (-1 where one failed).
   std::vector<double> measure_light_type(Renderer& renderer,
-                                         const std::vector<Technique>& techniques, int samples,
-                                         std::vector<std::vector<std::string>>& rows) {
+                                         const std::vector<std::optional<Image>>& shadows,
+                                         int samples, std::vector<std::vector<std::string>>& rows) {
     step();
     std::optional<TracedReference> traced;
     try {
@@ -314,12 +340,11 @@ class Study {
       ++failed_;
     }
     std::vector<double> rmse;
-    for (std::size_t i = 0; i < techniques.size(); ++i) {
+    for (std::size_t i = 0; i < shadows.size(); ++i) {
       step();
-      std::optional<Image> image =
-          traced ? shadow_image(renderer, with(techniques[i])) : std::nullopt;
-      rmse.push_back(image ? compare_shadow(*image, traced->image).rmse : -1.0);
-      rows[i + 1].push_back(image ? fixed(rmse.back(), 4) : "failed");
+      const bool measured = traced && shadows[i];
+      rmse.push_back(measured ? compare_shadow(*shadows[i], traced->image).rmse : -1.0);
+      rows[i + 1].push_back(measured ? fixed(rmse.back(), 4) : "failed");
     }
     return rmse;
   }
@@ -375,11 +400,12 @@ class Study {
       for (int w : widths) {
         ShadowSettings s = with(t);
         s.blur = w;
+        std::optional<Image> image;
         figures.push_back(figure("sweep-" + name_of(t) + "-w" + std::to_string(w) + ".png",
-                                 name_of(t) + ", W = " + std::to_string(w), base_render_, s));
+                                 name_of(t) + ", W = " + std::to_string(w), base_render_, s,
+                                 &image));
         step();
-        if (!traced) continue;
-        if (std::optional<Image> image = shadow_image(s)) {
+        if (traced && image) {
           const double rmse = compare_shadow(*image, traced->image).rmse;
           series.points.push_back({.x = double(w), .y = rmse, .label = {}, .highlighted = false});
           width_rows.push_back({name_of(t), std::to_string(w), fixed(rmse, 4)});
@@ -426,8 +452,10 @@ class Study {
     for (float size : sizes) {
       ShadowSettings pcss = with(Technique::Pcss);
       pcss.light_size = size;
+      std::optional<Image> pcss_shadow;
       figures.push_back(figure("sweep-pcss-light" + fixed(size, 2) + ".png",
-                               "pcss, light size " + fixed(size, 2), base_render_, pcss));
+                               "pcss, light size " + fixed(size, 2), base_render_, pcss,
+                               &pcss_shadow));
       step();
       ShadowSettings light = base_shadow_;
       light.light_size = size;
@@ -450,7 +478,9 @@ class Study {
         step();
         ShadowSettings s = techniques[i].settings;
         s.light_size = size;
-        std::optional<Image> image = traced ? shadow_image(s) : std::nullopt;
+        std::optional<Image> image = !traced  ? std::nullopt
+                                     : i == 0 ? std::move(pcss_shadow)
+                                              : shadow_image(s);
         if (!image) {
           row.push_back("failed");
           continue;
@@ -476,21 +506,34 @@ class Study {
   }
 
   // The spot light's shadow factor against the filtered reference.
-  std::optional<ShadowMetrics> measure_against_filtered(const ShadowSettings& shadow) {
-    try {
-      RenderSettings r = base_render_;
-      r.view = View::Shadow;
-      renderer_.render(r, shadow);
-      const Image technique = renderer_.read_view();
-      r.view = View::ShadowReference;
-      renderer_.render(r, shadow);
-      const Image reference = renderer_.read_view();
-      check_gl();
-      return compare_shadow(technique, reference);
-    } catch (const std::exception&) {
-      ++failed_;
-      return std::nullopt;
+  std::optional<ShadowMetrics> measure_against_filtered(const ShadowSettings& shadow,
+                                                        const std::optional<Image>& technique) {
+    const Image* reference = filtered_reference(shadow);
+    if (!technique || !reference) return std::nullopt;
+    return compare_shadow(*technique, *reference);
+  }
+
+  // The filtered hard reference of a filterable technique's settings: the
+  // depth map's tests averaged with the filter's kernel
+  // (filtered_hard_reference in shaders/render/lighting.frag), which reads
+  // neither the technique nor its constants (ESM's c), so the study renders
+  // it once per kernel, map and bias.
+  const Image* filtered_reference(const ShadowSettings& shadow) {
+    ShadowSettings key = shadow;
+    key.technique = Technique::Vsm;
+    key.esm_c = ShadowSettings{}.esm_c;
+    for (const auto& [settings, image] : filtered_references_) {
+      if (settings.blur == key.blur && settings.filter == key.filter &&
+          settings.map_size == key.map_size && settings.constant_bias == key.constant_bias &&
+          settings.slope_bias == key.slope_bias && settings.normal_offset == key.normal_offset &&
+          settings.max_slope == key.max_slope) {
+        return &image;
+      }
     }
+    std::optional<Image> image = shadow_image(key, View::ShadowReference);
+    if (!image) return nullptr;
+    filtered_references_.emplace_back(key, std::move(*image));
+    return &filtered_references_.back().second;
   }
 
   void esm_section(HtmlPage& page) {
@@ -503,10 +546,11 @@ class Study {
     for (float c : cs) {
       ShadowSettings s = with(Technique::Esm);
       s.esm_c = c;
-      figures.push_back(
-          figure("esm-c" + fixed(c, 0) + ".png", "esm, c = " + fixed(c, 0), base_render_, s));
+      std::optional<Image> image;
+      figures.push_back(figure("esm-c" + fixed(c, 0) + ".png", "esm, c = " + fixed(c, 0),
+                               base_render_, s, &image));
       step();
-      if (auto m = measure_against_filtered(s)) {
+      if (auto m = measure_against_filtered(s, image)) {
         points.push_back({c, *m});
         rows.push_back({fixed(c, 0), fixed(m->mean_absolute_error, 4),
                         fixed(100.0 * m->leak_fraction, 3) + " %",
@@ -574,6 +618,15 @@ class Study {
     return out.str();
   }
 
+  // A technique's shadow factor at with(t), as section 1 read it, or
+  // rendered now.
+  std::optional<Image> technique_shadow(Technique t) {
+    for (auto& [technique, image] : technique_shadows_) {
+      if (technique == t) return image;
+    }
+    return shadow_image(with(t));
+  }
+
   // The spot light's shadow factor of a technique, or nullopt on failure.
   std::optional<Image> shadow_image(const ShadowSettings& shadow, View view = View::Shadow) {
     return shadow_image(renderer_, shadow, view);
@@ -629,10 +682,8 @@ class Study {
       std::vector<std::string> row = {label, fixed(m.mean_absolute_error, 4), fixed(m.rmse, 4),
                                       fixed(100.0 * m.leak_fraction, 3) + " %",
                                       fixed(100.0 * m.over_dark_fraction, 3) + " %"};
-      std::optional<Image> reference;
-      if (is_filterable(settings.technique)) {
-        reference = shadow_image(settings, View::ShadowReference);
-      }
+      const Image* reference =
+          is_filterable(settings.technique) ? filtered_reference(settings) : nullptr;
       if (reference) {
         const ShadowMetrics f = compare_shadow(*image, *reference);
         row.push_back(fixed(f.mean_absolute_error, 4));
@@ -650,7 +701,7 @@ class Study {
           Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
       step();
       const ShadowSettings settings = with(t);
-      add_row(name_of(t), name_of(t), settings, true, shadow_image(settings));
+      add_row(name_of(t), name_of(t), settings, true, technique_shadow(t));
     }
     // The converged counterpart: hard shadows from N points of the source,
     // weighted as the reference weighs them (render/accumulation.hpp).
@@ -995,6 +1046,8 @@ class Study {
   std::vector<MeasuredError> errors_;
   std::vector<CropRegion> regions_;
   std::vector<std::pair<std::string, double>> total_ms_;
+  std::list<std::pair<ShadowSettings, Image>> filtered_references_;
+  std::vector<std::pair<Technique, Image>> technique_shadows_;  // section 1's, at with(t)
   // What the verdict is drawn from (a foliage section sets its line).
   StudyFindings findings_;
   // Images, metrics and timings the study makes, for the progress bar.
