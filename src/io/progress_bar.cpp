@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 
 namespace penumbra {
 
@@ -40,8 +41,11 @@ void ProgressBar::step(const std::string& name, std::int64_t done, std::int64_t 
     if (drawn_) draw(done, total, now);
     return;
   }
-  std::fprintf(stderr, "%s: %s (%lld of %lld items done, %.1f s)\n", label_.c_str(), name.c_str(),
-               static_cast<long long>(done), static_cast<long long>(total), elapsed);
+  // The process's CPU time (all threads) as well: where the work went.
+  const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+  std::fprintf(stderr, "%s: %s (%lld of %lld items done, %.1f s, %.1f s CPU)\n", label_.c_str(),
+               name.c_str(), static_cast<long long>(done), static_cast<long long>(total), elapsed,
+               cpu);
   std::fflush(stderr);
 }
 

@@ -378,7 +378,7 @@ TEST_F(Report, PlotsDrawTheNumbersTheTablesPrint) {
   penumbra::ShadowSettings vsm;
   vsm.technique = penumbra::Technique::Vsm;
   vsm.blur = 4;
-  vsm.map_size = 1024;  // --quick
+  vsm.map_size = 512;  // --quick
   const auto traffic = penumbra::shadow_map_traffic(vsm, vsm.map_size, vsm.map_size);
   double total = 0.0;
   for (std::size_t p = 0; p < traffic.size(); ++p) {
