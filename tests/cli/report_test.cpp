@@ -157,6 +157,7 @@ class Report : public ::testing::Test {
     const fs::path stamp = shared / "made-by";
     const std::string maker = binary_identity();
     const bool fresh = read_file(stamp) == maker && fs::exists(dir_ / "index.html") &&
+                       fs::exists(shared / "stderr.txt") &&
                        fs::last_write_time(stamp) > fs::file_time_type::clock::now() - kReuseFor;
     if (fresh) {
       status_ = 0;
@@ -164,12 +165,14 @@ class Report : public ::testing::Test {
       fs::remove(stamp);
       fs::remove_all(dir_);
       fs::create_directories(dir_);
-      status_ = run_shell(std::string(PENUMBRA_BINARY) + " report --quick -o " + dir_.string() +
-                          " > " + (shared / "stdout.txt").string());
+      status_ =
+          run_shell(std::string(PENUMBRA_BINARY) + " report --quick -o " + dir_.string() + " > " +
+                    (shared / "stdout.txt").string() + " 2> " + (shared / "stderr.txt").string());
       if (status_ == 0) std::ofstream(stamp) << maker;
     }
     flock(lock, LOCK_UN);
     close(lock);
+    stderr_ = read_file(shared / "stderr.txt");
     html_ = read_file(dir_ / "index.html");
     // <img src="F" width="W" height="H" ...> followed in its figure by <code>COMMAND</code>
     const std::regex figure_re(
@@ -197,6 +200,7 @@ class Report : public ::testing::Test {
   static inline fs::path dir_;
   static inline int status_ = -1;
   static inline std::string html_;
+  static inline std::string stderr_;           // the report's progress, not on a terminal
   static inline std::vector<Figure> figures_;  // images with the command that re-makes them
   static inline std::vector<Figure> images_;   // every image on the page
 };
@@ -520,6 +524,28 @@ TEST_F(Report, TiesAreCalledTies) {
               std::string::npos);
   }
   EXPECT_EQ(esm.find(" wins"), std::string::npos);
+}
+
+TEST_F(Report, NotOnATerminalProgressIsOneLinePerStepThenTheCost) {
+  ASSERT_EQ(status_, 0);
+  // One line as each section begins, in the page's order, with the count
+  // of items done and the time so far; then wall, CPU and peak memory.
+  const std::regex step_re(
+      R"re(report: (\d)\. [^(\n]+ \((\d+) of (\d+) items done, [0-9.]+ s, [0-9.]+ s CPU\)\n)re");
+  int expected = 1;
+  int last_done = -1;
+  for (std::sregex_iterator it(stderr_.begin(), stderr_.end(), step_re), end; it != end; ++it) {
+    EXPECT_EQ(std::stoi((*it)[1].str()), expected) << stderr_;
+    ++expected;
+    EXPECT_GE(std::stoi((*it)[2].str()), last_done);
+    last_done = std::stoi((*it)[2].str());
+    EXPECT_LE(last_done, std::stoi((*it)[3].str())) << "the count runs past its total";
+  }
+  EXPECT_EQ(expected, 9) << "eight sections, eight lines:\n" << stderr_;
+  EXPECT_TRUE(std::regex_search(
+      stderr_, std::regex(R"re(\nreport: [0-9.]+ s wall, [0-9.]+ s CPU, \d+ MB peak memory\n$)re")))
+      << stderr_;
+  EXPECT_EQ(stderr_.find('\r'), std::string::npos) << "no bar drawn outside a terminal";
 }
 
 TEST_F(Report, ChromiumShowsThePageWithoutConsoleErrors) {
