@@ -542,6 +542,12 @@ TEST_F(Report, NotOnATerminalProgressIsOneLinePerStepThenTheCost) {
     EXPECT_LE(last_done, std::stoi((*it)[3].str())) << "the count runs past its total";
   }
   EXPECT_EQ(expected, 9) << "eight sections, eight lines:\n" << stderr_;
+  // The last step, the page, begins when every item is done: the total the
+  // bar and its estimate use is the real one.
+  std::smatch last;
+  ASSERT_TRUE(std::regex_search(
+      stderr_, last, std::regex(R"re(report: the verdict and the page \((\d+) of (\d+) items)re")));
+  EXPECT_EQ(last[1].str(), last[2].str());
   EXPECT_TRUE(std::regex_search(
       stderr_, std::regex(R"re(\nreport: [0-9.]+ s wall, [0-9.]+ s CPU, \d+ MB peak memory\n$)re")))
       << stderr_;
