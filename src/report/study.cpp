@@ -1021,6 +1021,7 @@ class Study {
   void verdict(HtmlPage& page) {
     findings_.light_size = base_shadow_.light_size;
     findings_.cascades = base_shadow_.cascades;
+    findings_.software_times = is_software_renderer(context_.renderer());
     for (const MeasuredError& e : errors_) {
       if (!e.single_frame) continue;
       findings_.rmse.push_back({e.label, e.traced.rmse});

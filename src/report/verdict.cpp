@@ -84,7 +84,8 @@ std::vector<VerdictLine> verdict_lines(const StudyFindings& f) {
     lines.push_back({"Most quality per millisecond", cheapest->first, "",
                      fixed(cheapest->second.first, 2),
                      " ms a frame for RMSE " + fixed(cheapest->second.second, 4) +
-                         ": the cheapest point on the Pareto front within twice its least error.",
+                         ": the cheapest point on the Pareto front within twice its least error" +
+                         (f.software_times ? " (times of a GPU emulated on the CPU)." : "."),
                      "timings", "section 8"});
   }
   if (f.foliage) lines.push_back(*f.foliage);

@@ -30,6 +30,8 @@ struct StudyFindings {
   std::vector<NamedValue> directional_rmse;
   // The Pareto front of GPU time (ms) against RMSE: (name, (ms, rmse)).
   std::vector<std::pair<std::string, std::pair<double, double>>> pareto;
+  // The times come from a renderer that emulates the GPU on the CPU.
+  bool software_times = false;
   // A foliage section's line, when the report has one.
   std::optional<VerdictLine> foliage;
 };

@@ -54,6 +54,10 @@ TEST(Verdict, QualityPerMillisecondIsTheCheapestGoodPointOfTheFront) {
   EXPECT_EQ(cost->choice, "pcf");
   EXPECT_EQ(cost->number, "2.00");
   EXPECT_EQ(cost->section, "timings");
+  EXPECT_EQ(cost->after.find("emulated"), std::string::npos);
+  f.software_times = true;
+  EXPECT_NE(line(penumbra::verdict_lines(f), "Most quality")->after.find("emulated on the CPU"),
+            std::string::npos);
 }
 
 TEST(Verdict, AFoliageLineIsKeptWhenGiven) {
