@@ -156,7 +156,7 @@ std::string HtmlPage::finish() const {
          ".group { display: flex; gap: 6px; padding: 4px; background: #f3f3f3; "
          "break-inside: avoid; }\n"
          "figure { margin: 0; width: min(100%, 440px); break-inside: avoid; }\n"
-         ".group figure { width: min(44vw, 330px); }\n"
+         ".group figure { width: min(44vw, 320px); }\n"
          "figure img { width: 100%; height: auto; border: 1px solid #ccc; }\n"
          "figure.crop { width: auto; }\n"
          "figure.crop img { width: auto; image-rendering: pixelated; }\n"
