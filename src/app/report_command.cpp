@@ -1,5 +1,8 @@
 #include "app/report_command.hpp"
 
+#include <sys/resource.h>
+
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -35,6 +38,22 @@ void add_report_command_options(CLI::App& command, ReportArgs& args) {
   }));
 }
 
+namespace {
+
+// What the command took, on stderr: wall clock, CPU time of all its
+// threads, and peak resident memory.
+void print_resources_used(const char* what, std::chrono::steady_clock::time_point start) {
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) { return t.tv_sec + t.tv_usec / 1e6; };
+  std::fprintf(stderr, "%s: %.1f s wall, %.1f s CPU, %.0f MB peak memory\n", what, wall,
+               seconds(usage.ru_utime) + seconds(usage.ru_stime), usage.ru_maxrss / 1024.0);
+}
+
+}  // namespace
+
 int run_report_command(const ReportArgs& args) {
   std::error_code ec;
   if (fs::exists(args.output, ec) && !fs::is_directory(args.output, ec)) {
@@ -44,6 +63,7 @@ int run_report_command(const ReportArgs& args) {
   check_output_path(fs::is_directory(args.output, ec)
                         ? (fs::path(args.output) / "index.html").string()
                         : args.output);
+  const auto start = std::chrono::steady_clock::now();
   Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index);
   apply_light_choice(args.light, scene);
   auto context = gl::Context::create_headless();
@@ -60,6 +80,7 @@ int run_report_command(const ReportArgs& args) {
   folder.publish();
   const std::string index_path = folder.final_path("index.html");
   std::printf("%s\n", index_path.c_str());
+  print_resources_used("report", start);
   if (result.failed > 0) {
     std::fprintf(stderr,
                  "penumbra: error: %d of %d report items failed; the report says which: %s\n",

@@ -366,18 +366,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     tiling_pass_.execute(*maps, first_views_[light],
                          static_cast<int>(light_views_[light].views.size()));
   }
-  if (render.view == View::ShadowReference) {
-    // The kernel the filter applies, as 1D weights for the reference's
-    // brute-force average of depth tests.
-    const int radius = shadow_block.blur_radius;
-    std::vector<float> weights =
-        shadow.filter == Filter::Sat
-            ? std::vector<float>(2 * static_cast<std::size_t>(radius) + 1, 1.0f)
-            : gaussian_weights(radius);
-    reference_weights_.update(weights.data(), weights.size() * sizeof(float));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO,
-                     reference_weights_.id());
-  }
+  if (render.view == View::ShadowReference) bind_reference_weights(shadow);
   gbuffer_current_ = !is_map_view(render.view);
   if (gbuffer_current_) {
     last_view_projection_ = frame.projection * frame.view;
@@ -394,7 +383,47 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     gl::GpuPassScope timed(profiler, gl::GpuPass::Lighting);
     lighting_pass_.execute(gbuffer_pass_, shadows ? &shadow_pass_.depth_maps() : nullptr, filtered,
                            shadow, ao, render.width, render.height);
+    last_frame_ = frame;
+    last_filtered_ = filtered;
+    last_ao_ = ao;
+    last_shadows_ = shadows;
   }
+}
+
+void Renderer::bind_reference_weights(const ShadowSettings& shadow) {
+  // The kernel the filter applies, as 1D weights for the reference's
+  // brute-force average of depth tests.
+  const int radius = is_filterable(shadow.technique) ? shadow.blur : 0;
+  std::vector<float> weights =
+      shadow.filter == Filter::Sat
+          ? std::vector<float>(2 * static_cast<std::size_t>(radius) + 1, 1.0f)
+          : gaussian_weights(radius);
+  reference_weights_.update(weights.data(), weights.size() * sizeof(float));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, reference_weights_.id());
+}
+
+void Renderer::shade(View view) {
+  if (!gbuffer_current_ || is_map_view(view)) {
+    throw std::logic_error("shade() needs a camera view rendered and a camera view to shade");
+  }
+  if (last_shadow_.accumulate > 1) throw std::logic_error("shade() of an --accumulate frame");
+  const bool ambient_occlusion = view == View::Final || view == View::Ao;
+  if (ambient_occlusion && last_ao_ == 0) {
+    throw std::logic_error("shade() of a view that needs SSAO the last render() skipped");
+  }
+  last_render_.view = view;
+  last_frame_.options.y = view_define(view);
+  last_frame_.options.w = ambient_occlusion ? 1 : 0;
+  frame_ubo_.update(&last_frame_, sizeof last_frame_);
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_LIGHTS_UBO, lights_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_UBO, shadow_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_VIEWS_UBO, views_ubo_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, poisson_.id());
+  if (view == View::ShadowReference) bind_reference_weights(last_shadow_);
+  lighting_pass_.execute(gbuffer_pass_, last_shadows_ ? &shadow_pass_.depth_maps() : nullptr,
+                         last_filtered_, last_shadow_, ambient_occlusion ? last_ao_ : 0,
+                         last_render_.width, last_render_.height);
 }
 
 ViewSource Renderer::view_source() {

@@ -26,6 +26,7 @@
 #include "shadow/shadow_map_pass.hpp"
 #include "shadow/shadow_views.hpp"
 #include "shared/bindings.h"
+#include "shared/gpu_types.h"
 
 namespace penumbra {
 
@@ -71,6 +72,17 @@ class Renderer {
   // is timed (the caller begins and ends the frame).
   void render(const RenderSettings& render, const ShadowSettings& shadow,
               const SsaoSettings& ssao = {}, gl::GpuProfiler* profiler = nullptr);
+
+  // Shades the last render()'s camera view again as `view`, from the
+  // shadow maps, the filter's output and the G-buffer it left, without
+  // rendering them again: the image render() with the same settings and
+  // this view makes, for the cost of the lighting pass alone (one setting
+  // read as its lit image, its shadow factor and its filtered reference).
+  // `view` must be a camera view that needs no ambient occlusion the last
+  // render() did not compute (shadow and shadow-reference always do).
+  // Throws std::logic_error after a map view, for an --accumulate
+  // sub-frame, or for a view that needs SSAO the last render() skipped.
+  void shade(View view);
 
   // The view chosen in the last render(): the lighting pass's output for
   // camera views; for map views, the light's z-bar maps (shadow-map) or
@@ -140,6 +152,8 @@ class Renderer {
   gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_, views_ubo_;
   gl::Buffer reference_weights_;
   gl::Buffer poisson_;  // the PCF/PCSS sample set (std430 vec2 array)
+  // The reference's kernel weights for the shadow-reference view.
+  void bind_reference_weights(const ShadowSettings& shadow);
   // Fits clip every triangle of the scene, so each light's views and the
   // camera's depth range are kept and refitted only when what they depend
   // on changes (the geometry never does).
@@ -158,6 +172,11 @@ class Renderer {
   ShadowSettings last_shadow_;
   glm::mat4 last_view_projection_{1.0f};
   bool gbuffer_current_ = false;
+  // What the last render()'s lighting pass read, for shade().
+  gpu::GpuFrame last_frame_{};
+  GLuint last_filtered_ = 0;
+  GLuint last_ao_ = 0;
+  bool last_shadows_ = false;
   int max_texture_size_ = 0;  // GL_MAX_TEXTURE_SIZE
 };
 
