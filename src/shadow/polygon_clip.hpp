@@ -34,15 +34,15 @@ std::array<HalfSpace, 4> frustum_sides(const glm::mat4& view, float kx, float ky
 void clip_polygon(std::vector<glm::vec3>& polygon, std::span<const HalfSpace> half_spaces,
                   std::vector<glm::vec3>& scratch);
 
-// Calls visit(polygon) with the part of each triangle inside the
+// Calls visit(polygon) with the part of each triangle (vertices[i]: its
+// corners' glm::vec3 positions, e.g. a PositionSpan) inside the
 // half-spaces, for the triangles with a non-empty part.
 template <class Vertices, class Indices, class Visit>
 void for_each_clipped_triangle(const Vertices& vertices, const Indices& indices,
                                std::span<const HalfSpace> half_spaces, Visit&& visit) {
   std::vector<glm::vec3> polygon, scratch;
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    polygon.assign({vertices[indices[t]].position, vertices[indices[t + 1]].position,
-                    vertices[indices[t + 2]].position});
+    polygon.assign({vertices[indices[t]], vertices[indices[t + 1]], vertices[indices[t + 2]]});
     clip_polygon(polygon, half_spaces, scratch);
     if (!polygon.empty()) visit(polygon);
   }
