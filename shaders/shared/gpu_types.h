@@ -122,6 +122,23 @@ struct GpuSsao {
   float unused1;
 };
 
+// The shadow core's one block for an engine's shaders (include/penumbra/
+// shadow_block.hpp documents it; shaders/shadow/penumbra_shadows.glsl
+// reads it): the parameters, the camera that picks cascades, every light's
+// shadow data and every shadow view. 5952 bytes, under the 16 KiB every
+// OpenGL 4.5 device allows a uniform block.
+struct GpuShadowBlock {
+  GpuShadow params;
+  mat4 camera_view;  // world -> the engine camera's view space (cascades: depth along -z)
+  // x: light count, y: shadow-view count, z: the technique the maps hold
+  // (TECHNIQUE_*), w: 1 when MSM moments are stored quantized (msm16)
+  ivec4 counts;
+  // Light i's shadow data (radiance_cos_inner is the light's too, for an
+  // engine that lights with it; the lookup does not read it).
+  GpuLight lights[MAX_LIGHTS];
+  GpuShadowView views[MAX_SHADOW_VIEWS];
+};
+
 #ifdef __cplusplus
 }  // namespace penumbra::gpu
 #endif

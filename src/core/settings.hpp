@@ -6,8 +6,15 @@
 #include <string_view>
 #include <utility>
 
-#include "core/enum_names.hpp"
+// Relative includes: this header is installed with the shadow core
+// (include/penumbra/settings.hpp), as include/penumbra/core/settings.hpp
+// beside include/penumbra/shared/bindings.h.
+#include "enum_names.hpp"
+#if __has_include("../shared/bindings.h")
+#include "../shared/bindings.h"
+#else
 #include "shared/bindings.h"
+#endif
 
 namespace penumbra {
 

@@ -43,6 +43,7 @@ std::string resolve_include(const std::string& from, const std::string& name) {
 class Assembler {
  public:
   ShaderSource result;
+  bool line_directives = true;  // "#line N file-id", for map_compile_log()
 
   void expand(const std::string& path, int depth) {
     if (depth > 32) throw RuntimeError(path + ": #include nested too deeply");
@@ -52,7 +53,7 @@ class Assembler {
     std::istringstream in{std::string(embedded_shader_text(path))};
     std::string line;
     int number = 0;
-    result.text += "#line 1 " + std::to_string(id) + "\n";
+    if (line_directives) result.text += "#line 1 " + std::to_string(id) + "\n";
     static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
     static const std::regex once_re(R"(^\s*#\s*pragma\s+once\s*$)");
     while (std::getline(in, line)) {
@@ -60,7 +61,9 @@ class Assembler {
       std::smatch match;
       if (std::regex_match(line, match, include_re)) {
         expand(resolve_include(path, match[1].str()), depth + 1);
-        result.text += "#line " + std::to_string(number + 1) + " " + std::to_string(id) + "\n";
+        if (line_directives) {
+          result.text += "#line " + std::to_string(number + 1) + " " + std::to_string(id) + "\n";
+        }
       } else if (std::regex_match(line, once_re)) {
         result.text += "\n";
       } else {
@@ -83,6 +86,13 @@ ShaderSource assemble_shader(const std::string& path, const Defines& defines) {
   }
   assembler.expand(path, 0);
   return std::move(assembler.result);
+}
+
+std::string expand_shader_includes(const std::string& path) {
+  Assembler assembler;
+  assembler.line_directives = false;
+  assembler.expand(path, 0);
+  return std::move(assembler.result.text);
 }
 
 std::string map_compile_log(const std::string& log, const std::vector<std::string>& files) {

@@ -19,6 +19,11 @@ struct ShaderSource {
 // Throws RuntimeError if `path` or one of its includes does not exist.
 ShaderSource assemble_shader(const std::string& path, const Defines& defines);
 
+// The embedded file's text with its includes expanded (each file once)
+// and no #version, defines or #line directives: a self-contained include
+// for another program's shaders. Throws RuntimeError as assemble_shader().
+std::string expand_shader_includes(const std::string& path);
+
 // Looks up an embedded file's text; throws RuntimeError if absent.
 std::string_view embedded_shader_text(const std::string& path);
 

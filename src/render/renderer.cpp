@@ -14,6 +14,7 @@
 #include "shadow/moment_math.hpp"
 #include "shadow/poisson_disc.hpp"
 #include "shadow/representation.hpp"
+#include "shadow/shadow_block_data.hpp"
 #include "shared/bindings.h"
 #include "shared/gpu_types.h"
 
@@ -25,49 +26,6 @@ static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std
 static_assert(sizeof(gpu::GpuShadow) == 112, "GpuShadow must match std140");
 
 namespace {
-
-int light_type_define(LightType type) {
-  switch (type) {
-    case LightType::Spot:
-      return LIGHT_SPOT;
-    case LightType::Directional:
-      return LIGHT_DIRECTIONAL;
-    case LightType::Point:
-      return LIGHT_POINT;
-  }
-  return LIGHT_SPOT;
-}
-
-gpu::GpuLight to_gpu(const Light& light, const LightShadowViews& views, int first_view,
-                     const ShadowSettings& shadow) {
-  gpu::GpuLight g{};
-  g.position_type = glm::vec4(light.position, light_type_define(light.type));
-  g.direction_cos_outer =
-      glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.cone_degrees)));
-  const float inner = std::min(light.inner_cone_degrees, light.cone_degrees - 0.01f);
-  g.radiance_cos_inner = glm::vec4(light.color * light.intensity, std::cos(glm::radians(inner)));
-  g.views = glm::ivec4(first_view, static_cast<int>(views.views.size()), 0, 0);
-  for (std::size_t c = 0; c < views.cascade_end.size() && c < MAX_CASCADES; ++c) {
-    g.cascade_end[static_cast<int>(c)] = views.cascade_end[c];
-  }
-  g.cascade_blend = glm::vec4(shadow.cascade_blend, views.cascade_start, 0.0f, 0.0f);
-  return g;
-}
-
-gpu::GpuShadowView to_gpu(const Light& light, const LightView& view, const ShadowSettings& shadow) {
-  gpu::GpuShadowView g{};
-  g.view = view.view;
-  g.view_projection = view.view_projection;
-  g.inverse_view_projection = glm::inverse(view.view_projection);
-  g.depth_range =
-      glm::vec4(view.z0, view.z1, view.texel_world, static_cast<float>(shadow.map_size));
-  g.source_width = light.type == LightType::Directional
-                       ? 2.0f * std::tan(glm::radians(0.5f * shadow.sun_angle))
-                       : shadow.light_size;
-  g.perspective = view.perspective ? 1 : 0;
-  g.radial_depth = view.radial ? 1 : 0;
-  return g;
-}
 
 // One layer (0 for a 2D texture) of a texture as an image.
 Image read_texture(GLuint texture, int width, int height, GLenum format, int layer = 0) {
@@ -258,10 +216,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     }
     const LightShadowViews& fitted = light_views_[index];
     first_views_[index] = view_count_;
-    lights[i] = to_gpu(light, fitted, view_count_, shadow);
+    lights[i] = gpu_light(light, fitted, view_count_, shadow);
     for (const LightView& view : fitted.views) {
       if (view_count_ >= MAX_SHADOW_VIEWS) throw std::logic_error("too many shadow views");
-      views[view_count_++] = to_gpu(light, view, shadow);
+      views[view_count_++] = gpu_shadow_view(light, view, shadow);
     }
   }
   lights_ubo_.update(lights, sizeof lights);
@@ -279,36 +237,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   frame.ambient = glm::vec4(0.06f, 0.065f, 0.08f, 0.0f);
   frame_ubo_.update(&frame, sizeof frame);
 
-  gpu::GpuShadow shadow_block{};
-  shadow_block.constant_bias = shadow.constant_bias;
-  shadow_block.slope_bias = shadow.slope_bias;
-  shadow_block.normal_offset = shadow.normal_offset;
-  shadow_block.max_slope = shadow.max_slope;
-  shadow_block.esm_c = shadow.esm_c;
-  // The fixed-point summed-area table keeps 17 bits per value, about what
-  // 16-bit moments keep: both need the larger moment bias.
-  shadow_block.msm_alpha = uses_quantized_moments(shadow) ? shadow.msm16_alpha : shadow.msm_alpha;
-  shadow_block.bleed_reduction = shadow.bleed_reduction;
-  shadow_block.vsm_min_variance = shadow.vsm_min_variance;
-  // Only the filterable techniques filter; the others (and their reference) test single texels.
-  shadow_block.blur_radius = is_filterable(shadow.technique) ? shadow.blur : 0;
-  shadow_block.sat_scale = static_cast<float>(sat_fixed_point_scale());
-  shadow_block.filter_slope_bias = shadow.filter_slope_bias;
-  shadow_block.pcf_width = shadow.pcf_width;
-  shadow_block.pcf_samples = shadow.pcf_samples;
-  shadow_block.pcss_blocker_samples = shadow.pcss_blocker_samples;
-  shadow_block.pcss_filter_samples = shadow.pcss_filter_samples;
-  shadow_block.two_moment_blockers = shadow.soft_two_moment_blockers ? 1 : 0;
-  shadow_block.accumulate_u = shadow.subframe_u;
-  shadow_block.accumulate_v = shadow.subframe_v;
-  shadow_block.accumulate_count = shadow.accumulate > 1 ? shadow.accumulate : 0;
-  shadow_block.accumulate_normal_x = shadow.subframe_normal[0];
-  shadow_block.accumulate_normal_y = shadow.subframe_normal[1];
-  shadow_block.accumulate_normal_z = shadow.subframe_normal[2];
+  gpu::GpuShadow shadow_block = gpu_shadow_params(shadow);
   shadow_block.accumulate_weighted = shadow.accumulate > 1 && render.view == View::Shadow ? 1 : 0;
-  shadow_block.accumulate_frame = shadow.subframe;
-  shadow_block.evsm_positive = shadow.evsm_positive;
-  shadow_block.evsm_negative = shadow.evsm_negative;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
@@ -320,7 +250,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
   if (shadows) {
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
-    shadow_pass_.execute(gpu_scene_, view_count_, shadow.map_size);
+    shadow_pass_.execute([this](int view) { shadow_casters_.draw(gpu_scene_, view); }, view_count_,
+                         shadow.map_size);
   }
   GLuint filtered = 0;
   const bool fused = is_filterable(shadow.technique) && uses_fused_filter(shadow);

@@ -16,6 +16,7 @@
 #include "render/gbuffer_pass.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/lighting_pass.hpp"
+#include "render/scene_shadow_casters.hpp"
 #include "render/ssao_pass.hpp"
 #include "render/surface_points.hpp"
 #include "render/view_tiling_pass.hpp"
@@ -140,6 +141,7 @@ class Renderer {
   TriangleMesh mesh_;
   Bounds bounds_;
   GpuScene gpu_scene_;
+  SceneShadowCasters shadow_casters_;
   ShadowMapPass shadow_pass_;
   MomentResolvePass resolve_pass_;
   GaussianBlurPass blur_pass_;

@@ -12,6 +12,7 @@
 
 #include <vector>
 #include "core/enum_names.hpp"
+#include "penumbra/light.hpp"
 
 namespace penumbra {
 
@@ -106,27 +107,6 @@ struct Camera {
   float near_plane = 0.0f;
   float far_plane = 0.0f;
   bool operator==(const Camera&) const = default;
-};
-
-enum class LightType { Spot, Directional, Point };
-
-inline constexpr std::array<std::pair<LightType, std::string_view>, 3> kLightTypeNames{{
-    {LightType::Spot, "spot"},
-    {LightType::Directional, "directional"},
-    {LightType::Point, "point"},
-}};
-
-struct Light {
-  LightType type = LightType::Spot;
-  glm::vec3 position{0.0f, 10.0f, 0.0f};   // spot and point
-  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // spot and directional: the way the light shines
-  glm::vec3 color{1.0f};                   // linear RGB
-  // spot, point: radiant intensity (irradiance at 1 m, falling off as 1 / d^2);
-  // directional: irradiance
-  float intensity = 1.0f;
-  float cone_degrees = 35.0f;        // spot: half-angle where the light ends
-  float inner_cone_degrees = 28.0f;  // spot: half-angle where the fall-off starts
-  bool operator==(const Light&) const = default;
 };
 
 struct Scene {

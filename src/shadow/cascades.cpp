@@ -75,7 +75,7 @@ std::array<HalfSpace, 6> camera_slice(const CameraFrustum& camera, float d0, flo
 
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
                                          std::span<const float> splits, float blend,
-                                         std::span<const Vertex> vertices,
+                                         PositionSpan vertices,
                                          std::span<const std::uint32_t> indices, int map_size) {
   const glm::vec3 dir = glm::normalize(light.direction);
   // Rotation only: light space's origin is the world's, so snapping in it

@@ -15,23 +15,11 @@
 #include <span>
 #include <vector>
 
-#include "scene/mesh.hpp"
-#include "scene/scene.hpp"
+#include "penumbra/light.hpp"
+#include "penumbra/position_span.hpp"
 #include "shadow/light_view.hpp"
 
 namespace penumbra {
-
-// The camera a directional light's cascades follow.
-struct CameraFrustum {
-  glm::vec3 position{0.0f};
-  glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit view direction
-  glm::vec3 up{0.0f, 1.0f, 0.0f};        // the camera's up vector (not parallel to forward)
-  float fov_y = 0.785f;                  // vertical field of view, radians
-  float aspect = 1.0f;                   // width / height
-  float near_plane = 0.1f;               // depths along `forward`
-  float far_plane = 100.0f;
-  bool operator==(const CameraFrustum&) const = default;
-};
 
 // Split depths C_0 = near < C_1 < ... < C_count = far of the practical split
 // scheme (Zhang et al., "Parallel-Split Shadow Maps for Large-scale Virtual
@@ -83,7 +71,7 @@ float cascade_slice_start(std::span<const float> splits, float blend, std::size_
 // receiver's column). Geometry is measured by clipping the triangles.
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
                                          std::span<const float> splits, float blend,
-                                         std::span<const Vertex> vertices,
+                                         PositionSpan vertices,
                                          std::span<const std::uint32_t> indices, int map_size);
 
 }  // namespace penumbra

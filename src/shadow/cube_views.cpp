@@ -95,13 +95,13 @@ float guard_band_texels(const ShadowSettings& settings, int map_size) {
   return std::min(std::ceil(reach) + margin, static_cast<float>(map_size) / 8.0f);
 }
 
-bool radial_depth_range(const glm::vec3& center, std::span<const Vertex> vertices,
+bool radial_depth_range(const glm::vec3& center, PositionSpan vertices,
                         std::span<const std::uint32_t> indices, float& zmin, float& zmax) {
   bool any = false;
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    const glm::vec3& a = vertices[indices[t]].position;
-    const glm::vec3& b = vertices[indices[t + 1]].position;
-    const glm::vec3& c = vertices[indices[t + 2]].position;
+    const glm::vec3& a = vertices[indices[t]];
+    const glm::vec3& b = vertices[indices[t + 1]];
+    const glm::vec3& c = vertices[indices[t + 2]];
     zmin = std::min(zmin, glm::length(closest_point_on_triangle(center, a, b, c) - center));
     for (const glm::vec3* v : {&a, &b, &c}) zmax = std::max(zmax, glm::length(*v - center));
     any = true;
@@ -109,7 +109,7 @@ bool radial_depth_range(const glm::vec3& center, std::span<const Vertex> vertice
   return any;
 }
 
-std::vector<LightView> fit_cube_views(const Light& light, std::span<const Vertex> vertices,
+std::vector<LightView> fit_cube_views(const Light& light, PositionSpan vertices,
                                       std::span<const std::uint32_t> indices, int map_size,
                                       float guard_texels) {
   float zmin = 1e30f, zmax = 0.0f, z0 = 0.0f, z1 = 0.0f;

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "core/settings.hpp"
-#include "scene/mesh.hpp"
-#include "scene/scene.hpp"
+#include "penumbra/light.hpp"
+#include "penumbra/position_span.hpp"
 #include "shadow/light_view.hpp"
 
 namespace penumbra {
@@ -48,12 +48,12 @@ float guard_band_texels(const ShadowSettings& settings, int map_size);
 // Nearest and farthest distance from `center` to the triangles (the
 // nearest point may lie inside a triangle, the farthest is a vertex).
 // False without triangles.
-bool radial_depth_range(const glm::vec3& center, std::span<const Vertex> vertices,
+bool radial_depth_range(const glm::vec3& center, PositionSpan vertices,
                         std::span<const std::uint32_t> indices, float& zmin, float& zmax);
 
 // The six face views of a point light at `light.position`, radial depth
 // range fitted to the scene and shared by all faces.
-std::vector<LightView> fit_cube_views(const Light& light, std::span<const Vertex> vertices,
+std::vector<LightView> fit_cube_views(const Light& light, PositionSpan vertices,
                                       std::span<const std::uint32_t> indices, int map_size,
                                       float guard_texels);
 

@@ -25,9 +25,8 @@ void padded_depth_range(bool found, float zmin, float zmax, float& z0, float& z1
   z0 = std::max(zmin * 0.99f, z1 * 1e-3f);
 }
 
-bool frustum_depth_range(const glm::mat4& view, float kx, float ky,
-                         std::span<const Vertex> vertices, std::span<const std::uint32_t> indices,
-                         float& zmin, float& zmax) {
+bool frustum_depth_range(const glm::mat4& view, float kx, float ky, PositionSpan vertices,
+                         std::span<const std::uint32_t> indices, float& zmin, float& zmax) {
   const std::array<HalfSpace, 4> sides = frustum_sides(view, kx, ky);
   const glm::vec4 depth = -matrix_row(view, 2);  // view depth is -z
   bool any = false;
@@ -52,7 +51,7 @@ float LightView::relative_depth(const glm::vec3& world) const {
   return (depth(world) - z0) / (z1 - z0);
 }
 
-LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
+LightView fit_light_view(const Light& light, PositionSpan vertices,
                          std::span<const std::uint32_t> indices, int map_size) {
   LightView lv;
   const glm::vec3 dir = glm::normalize(light.direction);
@@ -74,8 +73,8 @@ LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
     lv.perspective = false;
     lv.view = glm::lookAt(glm::vec3(0.0f), dir, stable_up(dir));
     glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const Vertex& v : vertices) {
-      glm::vec3 p = glm::vec3(lv.view * glm::vec4(v.position, 1.0f));
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      glm::vec3 p = glm::vec3(lv.view * glm::vec4(vertices[i], 1.0f));
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
@@ -99,8 +98,4 @@ LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
 
 }  // namespace penumbra
 
-namespace penumbra {
-LightView fit_light_view(const Light& light, const TriangleMesh& mesh, int map_size) {
-  return fit_light_view(light, mesh.vertices, mesh.indices, map_size);
-}
-}  // namespace penumbra
+namespace penumbra {}  // namespace penumbra

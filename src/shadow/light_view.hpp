@@ -3,11 +3,12 @@
 // scene, and the depth range [z0, z1] that maps light-space depth to the
 // relative depth z-bar = (z - z0) / (z1 - z0) every technique stores.
 // Pure CPU functions, tested without a GPU.
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <span>
 
-#include "scene/mesh.hpp"
-#include "scene/scene.hpp"
+#include "penumbra/light.hpp"
+#include "penumbra/position_span.hpp"
 
 namespace penumbra {
 
@@ -44,9 +45,18 @@ void padded_depth_range(bool found, float zmin, float zmax, float& z0, float& z1
 // perspective frustum covers its cone and its near/far planes hug the
 // geometry inside it; a directional light's orthographic box encloses
 // every vertex.
-LightView fit_light_view(const Light& light, std::span<const Vertex> vertices,
+LightView fit_light_view(const Light& light, PositionSpan vertices,
                          std::span<const std::uint32_t> indices, int map_size);
-LightView fit_light_view(const Light& light, const TriangleMesh& mesh, int map_size);
+// The same for a mesh with `vertices` (each with a glm::vec3 `position`)
+// and `indices` members.
+template <class Mesh>
+requires requires(const Mesh& m) {
+  PositionSpan(m.vertices);
+  std::span<const std::uint32_t>(m.indices);
+}
+LightView fit_light_view(const Light& light, const Mesh& mesh, int map_size) {
+  return fit_light_view(light, PositionSpan(mesh.vertices), mesh.indices, map_size);
+}
 
 // Depth range, in front of the eye of `view`, of the parts of the triangles
 // inside the frustum side planes |x| <= kx z, |y| <= ky z of view space (kx,
@@ -54,8 +64,7 @@ LightView fit_light_view(const Light& light, const TriangleMesh& mesh, int map_s
 // Sutherland-Hodgman style, so geometry outside the frustum does not widen
 // the range and a large triangle that crosses it still counts where it is
 // seen. False if no geometry is inside.
-bool frustum_depth_range(const glm::mat4& view, float kx, float ky,
-                         std::span<const Vertex> vertices, std::span<const std::uint32_t> indices,
-                         float& zmin, float& zmax);
+bool frustum_depth_range(const glm::mat4& view, float kx, float ky, PositionSpan vertices,
+                         std::span<const std::uint32_t> indices, float& zmin, float& zmax);
 
 }  // namespace penumbra

@@ -45,7 +45,8 @@ inline unsigned inside_mask(const glm::vec3& p, std::span<const HalfSpace> half_
   return mask;
 }
 
-// Calls visit(polygon) with the part of each triangle inside the
+// Calls visit(polygon) with the part of each triangle (vertices[i]: its
+// corners' glm::vec3 positions, e.g. a PositionSpan) inside the
 // half-spaces, for the triangles with a non-empty part. Each vertex is
 // tested once (a vertex is shared by about six triangles): a triangle
 // whose corners are all inside is visited as it is and one whose corners
@@ -61,12 +62,12 @@ void for_each_clipped_triangle(const Vertices& vertices, const Indices& indices,
   if (masks) {
     inside.resize(vertices.size());
     for (std::size_t v = 0; v < vertices.size(); ++v) {
-      inside[v] = static_cast<std::uint8_t>(inside_mask(vertices[v].position, half_spaces));
+      inside[v] = static_cast<std::uint8_t>(inside_mask(vertices[v], half_spaces));
     }
   }
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     const auto a = indices[t], b = indices[t + 1], c = indices[t + 2];
-    polygon.assign({vertices[a].position, vertices[b].position, vertices[c].position});
+    polygon.assign({vertices[a], vertices[b], vertices[c]});
     if (masks) {
       const unsigned in_all = inside[a] & inside[b] & inside[c];
       const unsigned in_any = inside[a] | inside[b] | inside[c];

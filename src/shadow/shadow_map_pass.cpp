@@ -4,13 +4,7 @@
 
 namespace penumbra {
 
-ShadowMapPass::ShadowMapPass()
-    : program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
-                                     {{"CUT_OUTS", "0"}})),
-      cut_out_program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
-                                             {{"CUT_OUTS", "1"}})) {}
-
-void ShadowMapPass::execute(const GpuScene& scene, int view_count, int map_size) {
+void ShadowMapPass::execute(const DrawCasters& draw, int view_count, int map_size) {
   if (gl::ensure_texture_array(maps_, kDepthFormat, map_size, map_size, view_count,
                                "shadow maps")) {
     framebuffers_.clear();
@@ -34,12 +28,7 @@ void ShadowMapPass::execute(const GpuScene& scene, int view_count, int map_size)
     const GLuint fb = framebuffers_[static_cast<std::size_t>(i)].id();
     glBindFramebuffer(GL_FRAMEBUFFER, fb);
     glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
-    glProgramUniform1i(program_.id(), 0, i);
-    glProgramUniform1i(cut_out_program_.id(), 0, i);
-    program_.use();
-    scene.draw(SurfaceSet::Opaque);
-    cut_out_program_.use();
-    scene.draw(SurfaceSet::CutOut);
+    draw(i);
   }
   glPopDebugGroup();
 }

@@ -25,23 +25,24 @@ ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& cam
   return inputs;
 }
 
-LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, const TriangleMesh& mesh) {
+LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, PositionSpan vertices,
+                                  std::span<const std::uint32_t> indices) {
   const Light& light = inputs.light;
   LightShadowViews result;
   switch (light.type) {
     case LightType::Spot:
-      result.views.push_back(fit_light_view(light, mesh, inputs.map_size));
+      result.views.push_back(fit_light_view(light, vertices, indices, inputs.map_size));
       break;
     case LightType::Point:
-      result.views = fit_cube_views(light, mesh.vertices, mesh.indices, inputs.map_size,
-                                    inputs.guard_band_texels);
+      result.views =
+          fit_cube_views(light, vertices, indices, inputs.map_size, inputs.guard_band_texels);
       break;
     case LightType::Directional: {
       const CameraFrustum& camera = inputs.camera;
       const std::vector<float> splits = cascade_splits(camera.near_plane, camera.far_plane,
                                                        inputs.cascades, inputs.cascade_lambda);
-      result.views = fit_cascade_views(light, camera, splits, inputs.cascade_blend, mesh.vertices,
-                                       mesh.indices, inputs.map_size);
+      result.views = fit_cascade_views(light, camera, splits, inputs.cascade_blend, vertices,
+                                       indices, inputs.map_size);
       result.cascade_end.assign(splits.begin() + 1, splits.end());
       result.cascade_start = splits.front();
       break;

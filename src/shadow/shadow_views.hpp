@@ -3,11 +3,13 @@
 // layer of the shadow-map arrays. A spot light has one perspective view;
 // a point light six, the faces of a cube (cube_views.hpp); a directional
 // light one orthographic view per cascade (cascades.hpp).
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/settings.hpp"
-#include "scene/mesh.hpp"
-#include "scene/scene.hpp"
+#include "penumbra/light.hpp"
+#include "penumbra/position_span.hpp"
 #include "shadow/cascades.hpp"
 #include "shadow/light_view.hpp"
 
@@ -41,6 +43,17 @@ ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& cam
 
 // Fits the light's views to the scene (and, for a directional light's
 // cascades, to the camera).
-LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, const TriangleMesh& mesh);
+LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, PositionSpan vertices,
+                                  std::span<const std::uint32_t> indices);
+// The same for a mesh with `vertices` (each with a glm::vec3 `position`)
+// and `indices` members.
+template <class Mesh>
+requires requires(const Mesh& m) {
+  PositionSpan(m.vertices);
+  std::span<const std::uint32_t>(m.indices);
+}
+LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, const Mesh& mesh) {
+  return fit_shadow_views(inputs, PositionSpan(mesh.vertices), mesh.indices);
+}
 
 }  // namespace penumbra

@@ -66,6 +66,32 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   EXPECT_EQ(driver_offset(p, "shadow_views[1].view"), GLint(sizeof(gpu::GpuShadowView)));
 }
 
+// The shadow core's one block (penumbra::ShadowBlock), as the lookup an
+// engine includes declares it.
+TEST_F(GpuTest, ShadowBlockMatchesItsCppMirror) {
+  gl::Program lookup = gl::Program::graphics("common/fullscreen.vert", "test/penumbra_lookup.frag");
+  const GLuint p = lookup.id();
+  EXPECT_EQ(driver_offset(p, "penumbra.params.constant_bias"),
+            GLint(offsetof(gpu::GpuShadowBlock, params)));
+  EXPECT_EQ(driver_offset(p, "penumbra.params.pcf_samples"),
+            GLint(offsetof(gpu::GpuShadowBlock, params) + offsetof(gpu::GpuShadow, pcf_samples)));
+  EXPECT_OFFSET(p, "penumbra", GpuShadowBlock, camera_view);
+  EXPECT_OFFSET(p, "penumbra", GpuShadowBlock, counts);
+  EXPECT_EQ(driver_offset(p, "penumbra.lights[0].position_type"),
+            GLint(offsetof(gpu::GpuShadowBlock, lights)));
+  EXPECT_EQ(driver_offset(p, "penumbra.lights[1].position_type"),
+            GLint(offsetof(gpu::GpuShadowBlock, lights) + sizeof(gpu::GpuLight)));
+  EXPECT_EQ(driver_offset(p, "penumbra.views[0].view"),
+            GLint(offsetof(gpu::GpuShadowBlock, views)));
+  EXPECT_EQ(driver_offset(p, "penumbra.views[1].view"),
+            GLint(offsetof(gpu::GpuShadowBlock, views) + sizeof(gpu::GpuShadowView)));
+  GLint size = 0;
+  const GLuint block = glGetProgramResourceIndex(p, GL_UNIFORM_BLOCK, "PenumbraShadowBlock");
+  const GLenum property = GL_BUFFER_DATA_SIZE;
+  glGetProgramResourceiv(p, GL_UNIFORM_BLOCK, block, 1, &property, 1, nullptr, &size);
+  EXPECT_EQ(size, GLint(sizeof(gpu::GpuShadowBlock)));
+}
+
 TEST_F(GpuTest, SsaoBlockMatchesItsCppMirror) {
   gl::Program ssao = gl::Program::compute("render/ssao.comp");
   const GLuint p = ssao.id();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/mesh.hpp"
 #include "shadow/cascades.hpp"
 
 namespace penumbra {

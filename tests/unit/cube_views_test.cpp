@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "scene/mesh.hpp"
 #include "shadow/cube_views.hpp"
 
 namespace penumbra {

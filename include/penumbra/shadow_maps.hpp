@@ -1,0 +1,116 @@
+#pragma once
+// penumbra's shadow core as an engine uses it. ShadowMaps
+//   - fits each light's shadow views to the engine's camera and casters
+//     (update): a spot light's perspective view, a point light's six cube
+//     faces (widened by a guard band), a directional light's cascades
+//     (stable: snapped to texels, sized by their slice's bounding sphere),
+//     each view's depth range bounded by what it must shadow;
+//   - owns the maps: a depth-texture array, one layer per view, into which
+//     the engine draws its casters through a callback (render), and the
+//     technique's representation (VSM/ESM/EVSM/MSM moments) filtered by a
+//     Gaussian;
+//   - binds them, with one uniform block, for the lookup in the engine's
+//     own lighting shader (bind, shadow_lookup_glsl(): penumbra_shadow()).
+// The engine owns its context, framebuffers, meshes, camera and lighting;
+// ShadowMaps never draws anything but through the callback.
+#include <epoxy/gl.h>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+
+#include "light.hpp"
+#include "position_span.hpp"
+#include "settings.hpp"
+#include "shadow_block.hpp"
+
+namespace penumbra {
+
+// The casters (and receivers) the views are fitted to, in world space: a
+// triangle list over the engine's vertex positions. Coarse stand-ins (the
+// bounding boxes of its objects) fit views as well as the real meshes.
+struct CasterGeometry {
+  PositionSpan positions;
+  std::span<const std::uint32_t> indices;  // three per triangle
+};
+
+// One shadow view as the caster callback sees it.
+struct CasterView {
+  int index = 0;                    // the view: the layer of the depth array
+  int light = 0;                    // the light it belongs to
+  glm::mat4 view_projection{1.0f};  // world -> clip, for the engine's own culling
+  // penumbra's caster program, bound: its vertex shader reads the position
+  // at attribute location 0 and places it in the world with the mat4
+  // uniform at location kModelLocation (identity until the callback sets it).
+  GLuint program = 0;
+  static constexpr GLint kModelLocation = 1;
+};
+
+// Draws the engine's casters for one view: binds its vertex arrays (and
+// sets the model matrix per object) and issues its draws. The program,
+// the framebuffer (the view's layer, cleared) and the viewport are set;
+// the callback must not change them.
+using DrawCasters = std::function<void(const CasterView&)>;
+
+class ShadowMaps {
+ public:
+  // Needs a current OpenGL 4.5 core context (the one the engine renders
+  // with). Compiles penumbra's programs: throws RuntimeError if they fail.
+  ShadowMaps();
+  ~ShadowMaps();
+  ShadowMaps(ShadowMaps&&) noexcept;
+  ShadowMaps& operator=(ShadowMaps&&) noexcept;
+  ShadowMaps(const ShadowMaps&) = delete;
+  ShadowMaps& operator=(const ShadowMaps&) = delete;
+
+  // Fits every light's shadow views for this frame (at most kMaxLights
+  // lights; a directional light takes settings.cascades views, a point
+  // light 6, a spot light 1; kMaxShadowViews in all) and fills the block.
+  // A light is refitted only when its inputs change (a spot or point light
+  // not when the camera moves). Throws UsageError for settings out of
+  // range (validate()), too many lights or views, or a technique the
+  // lookup lacks (pcss, and --filter sat: they are the renderer's for now).
+  void update(std::span<const Light> lights, const CameraFrustum& camera,
+              const CasterGeometry& casters, const ShadowSettings& settings);
+
+  // Renders the maps for the last update(): draw(view) for every view,
+  // then the technique's resolve and filter passes (compute).
+  // Changes, and leaves: the current program, the depth state (test on,
+  // LESS, writes on), face culling (off), texture unit 0, image units 0
+  // and 1, storage-buffer binding 1, the uniform-buffer binding
+  // PENUMBRA_SHADOW_BLOCK_BINDING. Restores the draw framebuffer and the
+  // viewport.
+  void render(const DrawCasters& draw);
+
+  // Binds what penumbra_shadow() reads: the block (uniform buffer
+  // PENUMBRA_SHADOW_BLOCK_BINDING), the depth maps (units
+  // PENUMBRA_UNIT_SHADOW_DEPTH, nearest, and PENUMBRA_UNIT_SHADOW_COMPARE,
+  // with a comparison sampler), the filtered maps (unit
+  // PENUMBRA_UNIT_SHADOW_FILTERED, bilinear) and PCF's sample set (storage
+  // buffer BINDING_POISSON_SSBO, 2). Valid after render().
+  void bind() const;
+
+  // The block as last uploaded, the views' count, and the textures (GL
+  // names owned by ShadowMaps), for an engine that binds them itself.
+  [[nodiscard]] const ShadowBlock& block() const;
+  [[nodiscard]] int view_count() const;
+  [[nodiscard]] GLuint depth_maps() const;
+  [[nodiscard]] GLuint filtered_maps() const;  // 0 for hard and pcf
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The lookup's GLSL (shaders/shadow/penumbra_shadows.glsl with its
+// includes expanded; the same text is installed as
+// share/penumbra/penumbra_shadows.glsl). It declares the block and the
+// samplers at the binding points above and
+//   float penumbra_shadow(int light, vec3 world_position, vec3 world_normal)
+// (the fraction of the light that reaches the point, 1 = lit), with one
+// entry point per technique (penumbra_shadow_pcf, ..._msm, ...). Insert it
+// after the engine's "#version 450 core" line.
+std::string shadow_lookup_glsl();
+
+}  // namespace penumbra

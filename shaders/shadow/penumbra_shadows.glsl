@@ -1,0 +1,148 @@
+// penumbra's shadow lookup for an engine's own shaders. Installed, with
+// its includes expanded, as share/penumbra/penumbra_shadows.glsl, and
+// returned by penumbra::shadow_lookup_glsl(): put it after the engine's
+// "#version 450 core" (and any PENUMBRA_* binding it moves), bind the maps
+// with ShadowMaps::bind(), and call
+//
+//   float penumbra_shadow(int light, vec3 world_position, vec3 world_normal)
+//
+// in a fragment shader: the fraction of light `light`'s light (1 = lit)
+// that reaches the point, for the technique the maps were rendered for
+// (chosen at run time from the block: no recompile when it changes). The
+// entry points penumbra_shadow_<technique>() do the same for one
+// technique (they must match the maps' technique); the *_at() forms take
+// the pixel for the per-pixel sample rotation instead of gl_FragCoord, for
+// other shader stages.
+//
+// The light's view is picked as penumbra's renderer picks it
+// (view_select.glsl): a spot light's one view, a point light's cube face,
+// a directional light's cascade along the camera, blended into the next
+// near each cascade's end. The tests per technique are the shared ones
+// under shaders/shadow/ (hard.glsl, pcf.glsl, vsm.glsl, esm.glsl,
+// evsm.glsl, msm.glsl), with the biases of lookup.glsl.
+#pragma once
+
+#include "../shared/bindings.h"
+#include "../shared/gpu_types.h"
+#include "lookup.glsl"
+#include "view_select.glsl"
+#include "hard.glsl"
+#include "vsm.glsl"
+#include "esm.glsl"
+#include "evsm.glsl"
+#include "msm.glsl"
+#include "noise.glsl"
+#include "pcf.glsl"
+
+layout(std140, binding = PENUMBRA_SHADOW_BLOCK_BINDING) uniform PenumbraShadowBlock {
+  GpuShadowBlock penumbra;
+};
+// Every shadow view's map is one layer of these arrays.
+layout(binding = PENUMBRA_UNIT_SHADOW_DEPTH) uniform sampler2DArray penumbra_depth;
+layout(binding = PENUMBRA_UNIT_SHADOW_COMPARE) uniform sampler2DArrayShadow penumbra_compare;
+layout(binding = PENUMBRA_UNIT_SHADOW_FILTERED) uniform sampler2DArray penumbra_filtered;
+
+// Fraction of the light that reaches the point according to shadow view v.
+float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec3 normal,
+                           vec2 rotation) {
+  GpuShadowView view = penumbra.views[v];
+  GpuShadow params = penumbra.params;
+  ShadowLookup s = shadow_lookup(view, world, normal, params.normal_offset);
+  if (!s.inside) return 1.0;
+  bool filterable = technique >= TECHNIQUE_VSM;
+  float bias = shadow_bias(params, s, normal, direction_to_light(light, world),
+                           filterable ? params.blur_radius : 0);
+  float z = s.depth - bias;
+  if (technique == TECHNIQUE_HARD) return shadow_hard(penumbra_depth, v, s.uv, z, 0.0);
+  if (technique == TECHNIQUE_PCF) {
+    // PCF, or for one sample the hardware's 2x2 bilinear compare; width 0
+    // is the plain test.
+    if (params.pcf_width <= 0.0) return shadow_hard(penumbra_depth, v, s.uv, z, 0.0);
+    if (params.pcf_samples == 1) return texture(penumbra_compare, vec4(s.uv, float(v), z));
+    vec2 gradient = receiver_depth_gradient(view, s, normal, params.max_slope);
+    OccluderCone cone = occluder_cone(light, view, s.position, PCF_MIN_CONE_TAN);
+    return shadow_pcf(penumbra_depth, v, view, cone, s.uv, z, gradient, params.pcf_width,
+                      params.pcf_samples, rotation);
+  }
+  if (!filterable) return 1.0;
+  vec4 m = texture(penumbra_filtered, vec3(s.uv, float(v)));
+  // VSM's minimum variance is given in squared texels.
+  float min_variance = params.vsm_min_variance * s.texel_depth * s.texel_depth;
+  float lit = 1.0;
+  if (technique == TECHNIQUE_ESM) return shadow_esm(m.x, z, params.esm_c);
+  if (technique == TECHNIQUE_VSM) lit = shadow_vsm(m.xy, z, min_variance, 0.0);
+  if (technique == TECHNIQUE_EVSM2) {
+    lit = shadow_evsm2(m.xy, z, params.evsm_positive, min_variance);
+  }
+  if (technique == TECHNIQUE_EVSM4) {
+    lit = shadow_evsm4(m, z, params.evsm_positive, params.evsm_negative, min_variance);
+  }
+  if (technique == TECHNIQUE_MSM) lit = 1.0 - msm_intensity32(m, z, params.msm_alpha);
+  if (technique == TECHNIQUE_MSM16) {
+    lit = 1.0 - msm_intensity16(msm_dequantize(m), z, params.msm_alpha);
+  }
+  return reduce_light_bleeding(lit, params.bleed_reduction);
+}
+
+// Fraction of light `light_index`'s light that reaches the point, for
+// `technique` (TECHNIQUE_*); `pixel` seeds the per-pixel sample rotation.
+float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, vec3 normal,
+                                   vec2 pixel) {
+  if (technique == TECHNIQUE_NONE || light_index < 0 || light_index >= penumbra.counts.x) {
+    return 1.0;
+  }
+  GpuLight light = penumbra.lights[light_index];
+  float angle = 6.28318530718 * interleaved_gradient_noise(floor(pixel));
+  vec2 rotation = vec2(cos(angle), sin(angle));
+  float camera_depth = -(penumbra.camera_view * vec4(world, 1.0)).z;
+  ViewSelection selected = select_shadow_view(light, world, camera_depth);
+  float lit = penumbra_view_shadow(technique, selected.view, light, world, normal, rotation);
+  if (selected.blend > 0.0) {
+    float next = penumbra_view_shadow(technique, selected.next, light, world, normal, rotation);
+    lit = mix(lit, next, selected.blend);
+  }
+  return lit;
+}
+
+float penumbra_shadow_at(int light, vec3 world_position, vec3 world_normal, vec2 pixel) {
+  return penumbra_shadow_technique_at(penumbra.counts.z, light, world_position, world_normal,
+                                      pixel);
+}
+
+#ifndef PENUMBRA_NO_FRAGMENT_ENTRY_POINTS
+float penumbra_shadow(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_at(light, world_position, world_normal, gl_FragCoord.xy);
+}
+float penumbra_shadow_hard(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_HARD, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+float penumbra_shadow_pcf(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_PCF, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+float penumbra_shadow_vsm(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_VSM, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+float penumbra_shadow_esm(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_ESM, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+float penumbra_shadow_evsm2(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_EVSM2, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+float penumbra_shadow_evsm4(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_EVSM4, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+float penumbra_shadow_msm(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_MSM, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+float penumbra_shadow_msm16(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_MSM16, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+#endif

@@ -1,0 +1,31 @@
+#pragma once
+// The shadow blocks' contents (shaders/shared/gpu_types.h) from the lights,
+// their fitted views and the settings: one conversion for penumbra's
+// renderer and for ShadowMaps alike, so both look shadows up from the same
+// numbers.
+#include "core/settings.hpp"
+#include "penumbra/light.hpp"
+#include "shadow/light_view.hpp"
+#include "shadow/shadow_views.hpp"
+#include "shared/gpu_types.h"
+
+namespace penumbra {
+
+// The LIGHT_* define of a light type.
+int light_type_define(LightType type);
+
+// Light i's entry of the lights block; its views are first_view.. of the
+// views block.
+gpu::GpuLight gpu_light(const Light& light, const LightShadowViews& views, int first_view,
+                        const ShadowSettings& shadow);
+
+// One view's entry of the shadow-views block.
+gpu::GpuShadowView gpu_shadow_view(const Light& light, const LightView& view,
+                                   const ShadowSettings& shadow);
+
+// The shadow parameters block for the settings. The fields a renderer sets
+// per sub-frame and per view (accumulate_*) are left for it: 0, or from
+// the settings' sub-frame fields.
+gpu::GpuShadow gpu_shadow_params(const ShadowSettings& shadow);
+
+}  // namespace penumbra

@@ -1,0 +1,193 @@
+// ShadowMaps (include/penumbra/shadow_maps.hpp): the shadow core's passes
+// wired for an engine, in the order penumbra's renderer runs them
+// (src/render/renderer.cpp): fit, depth maps, resolve + filter.
+#include "penumbra/shadow_maps.hpp"
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "filter/fused_filter_pass.hpp"
+#include "filter/gaussian_blur_pass.hpp"
+#include "gl/program.hpp"
+#include "gl/resources.hpp"
+#include "gl/shader_source.hpp"
+#include "penumbra/version.hpp"
+#include "shadow/moment_resolve_pass.hpp"
+#include "shadow/poisson_disc.hpp"
+#include "shadow/representation.hpp"
+#include "shadow/shadow_block_data.hpp"
+#include "shadow/shadow_map_pass.hpp"
+#include "shadow/shadow_views.hpp"
+
+namespace penumbra {
+
+struct ShadowMaps::Impl {
+  gl::Program caster_program =
+      gl::Program::graphics("shadow/caster_depth.vert", "shadow/caster_depth.frag");
+  ShadowMapPass map_pass;
+  MomentResolvePass resolve_pass;
+  GaussianBlurPass blur_pass;
+  FusedFilterPass fused_pass;
+  gl::Buffer block_buffer{sizeof(ShadowBlock), nullptr, true, "penumbra shadow block"};
+  gl::Buffer poisson = gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
+                                        "penumbra poisson samples");
+  gl::Sampler nearest{gl::SamplerInfo{
+      .min_filter = GL_NEAREST, .mag_filter = GL_NEAREST, .label = "penumbra nearest clamp"}};
+  gl::Sampler bilinear{gl::SamplerInfo{.label = "penumbra bilinear clamp"}};
+  gl::Sampler compare{gl::SamplerInfo{.compare_mode = GL_COMPARE_REF_TO_TEXTURE,
+                                      .label = "penumbra depth compare"}};
+
+  ShadowSettings settings;
+  ShadowBlock block{};
+  std::vector<int> view_light;  // the light of each view
+  std::vector<LightShadowViews> fitted;
+  std::vector<std::optional<ShadowViewInputs>> fit_inputs;
+  GLuint filtered = 0;
+  bool updated = false;
+  bool rendered = false;
+};
+
+ShadowMaps::ShadowMaps() : impl_(std::make_unique<Impl>()) {}
+ShadowMaps::~ShadowMaps() = default;
+ShadowMaps::ShadowMaps(ShadowMaps&&) noexcept = default;
+ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
+
+void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
+                        const CasterGeometry& casters, const ShadowSettings& settings) {
+  validate(settings);
+  if (settings.technique == Technique::Pcss) {
+    throw UsageError(
+        "ShadowMaps: pcss is not in the shadow lookup yet (penumbra's renderer has it)");
+  }
+  if (is_filterable(settings.technique) && settings.filter == Filter::Sat) {
+    throw UsageError(
+        "ShadowMaps: --filter sat is not in the shadow lookup yet (penumbra's renderer has it)");
+  }
+  if (settings.accumulate > 1) throw UsageError("ShadowMaps: accumulate is the renderer's");
+  if (lights.size() > static_cast<std::size_t>(kMaxLights)) {
+    throw UsageError("ShadowMaps: " + std::to_string(lights.size()) + " lights; at most " +
+                     std::to_string(kMaxLights) + " are supported");
+  }
+  Impl& m = *impl_;
+  m.settings = settings;
+  m.fitted.resize(lights.size());
+  m.fit_inputs.resize(lights.size());
+  m.view_light.clear();
+  ShadowBlock block{};
+  int view_count = 0;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    ShadowViewInputs inputs = shadow_view_inputs(lights[i], camera, settings);
+    if (m.fit_inputs[i] != inputs) {
+      m.fitted[i] = fit_shadow_views(inputs, casters.positions, casters.indices);
+      m.fit_inputs[i] = std::move(inputs);
+    }
+    const LightShadowViews& views = m.fitted[i];
+    if (view_count + static_cast<int>(views.views.size()) > kMaxShadowViews) {
+      throw UsageError("ShadowMaps: the lights need more than " + std::to_string(kMaxShadowViews) +
+                       " shadow views");
+    }
+    block.lights[i] = gpu_light(lights[i], views, view_count, settings);
+    for (const LightView& view : views.views) {
+      block.views[view_count++] = gpu_shadow_view(lights[i], view, settings);
+      m.view_light.push_back(static_cast<int>(i));
+    }
+  }
+  block.params = gpu_shadow_params(settings);
+  block.camera_view = glm::lookAt(camera.position, camera.position + camera.forward, camera.up);
+  block.counts =
+      glm::ivec4(static_cast<int>(lights.size()), view_count, technique_define(settings.technique),
+                 uses_quantized_moments(settings) ? 1 : 0);
+  m.block = block;
+  m.block_buffer.update(&m.block, sizeof m.block);
+  m.updated = true;
+}
+
+void ShadowMaps::render(const DrawCasters& draw) {
+  Impl& m = *impl_;
+  if (!m.updated) throw std::logic_error("ShadowMaps::render() before update()");
+  GLint framebuffer = 0;
+  GLint viewport[4] = {};
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, m.block_buffer.id());
+
+  const ShadowSettings& s = m.settings;
+  const int view_count = m.block.counts.y;
+  // An array needs at least one layer: with no lights the lookup reads none.
+  const GLuint program = m.caster_program.id();
+  m.map_pass.execute(
+      [&](int view) {
+        const glm::mat4 identity(1.0f);
+        glProgramUniform1i(program, 0, view);
+        glProgramUniformMatrix4fv(program, CasterView::kModelLocation, 1, GL_FALSE,
+                                  &identity[0][0]);
+        m.caster_program.use();
+        if (view < static_cast<int>(m.view_light.size())) {
+          draw(CasterView{.index = view,
+                          .light = m.view_light[static_cast<std::size_t>(view)],
+                          .view_projection = m.block.views[view].view_projection,
+                          .program = program});
+        }
+      },
+      std::max(view_count, 1), s.map_size);
+
+  m.filtered = 0;
+  if (is_filterable(s.technique)) {
+    if (uses_fused_filter(s)) {
+      m.fused_pass.execute(m.map_pass.depth_maps(), s);
+      m.filtered = m.fused_pass.output().id();
+    } else {
+      m.resolve_pass.execute(m.map_pass.depth_maps(), s);
+      m.filtered = m.resolve_pass.representation().id();
+      if (filter_define(s) == FILTER_GAUSSIAN) {
+        m.blur_pass.execute(m.resolve_pass.representation(), s.blur);
+        m.filtered = m.blur_pass.output().id();
+      }
+    }
+  }
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  m.rendered = true;
+}
+
+void ShadowMaps::bind() const {
+  const Impl& m = *impl_;
+  if (!m.rendered) throw std::logic_error("ShadowMaps::bind() before render()");
+  glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, m.block_buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, m.poisson.id());
+  const GLuint depth = m.map_pass.depth_maps().id();
+  glBindTextureUnit(kShadowDepthUnit, depth);
+  glBindSampler(kShadowDepthUnit, m.nearest.id());
+  glBindTextureUnit(kShadowCompareUnit, depth);
+  glBindSampler(kShadowCompareUnit, m.compare.id());
+  // Hard and PCF read no filtered map: the depth maps stand in, so the
+  // sampler2DArray the lookup declares is never left unbound.
+  glBindTextureUnit(kShadowFilteredUnit, m.filtered != 0 ? m.filtered : depth);
+  glBindSampler(kShadowFilteredUnit, m.filtered != 0 ? m.bilinear.id() : m.nearest.id());
+}
+
+const ShadowBlock& ShadowMaps::block() const {
+  return impl_->block;
+}
+int ShadowMaps::view_count() const {
+  return impl_->block.counts.y;
+}
+GLuint ShadowMaps::depth_maps() const {
+  return impl_->map_pass.depth_maps().id();
+}
+GLuint ShadowMaps::filtered_maps() const {
+  return impl_->filtered;
+}
+
+std::string shadow_lookup_glsl() {
+  return "// penumbra " PENUMBRA_VERSION_STRING
+         " shadow lookup (shaders/shadow/penumbra_shadows.glsl, includes expanded)\n" +
+         gl::expand_shader_includes("shadow/penumbra_shadows.glsl");
+}
+
+}  // namespace penumbra

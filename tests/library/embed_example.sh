@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the shadow core from the build tree into a fresh prefix, builds
+# examples/embed against that prefix alone (find_package(penumbra)), and
+# renders its scene headless into WORK/images.
+# Usage: embed_example.sh BUILD_DIR SOURCE_DIR WORK_DIR [COMPILER_LAUNCHER]
+set -euo pipefail
+build=$1 source=$2 work=$3 launcher=${4:-}
+rm -rf "$work"
+mkdir -p "$work/images"
+# Only the core's component: no renderer, tool or their dependencies.
+cmake --install "$build" --prefix "$work/prefix" --component shadows >"$work/install.log"
+cmake -S "$source/examples/embed" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON \
+  ${launcher:+-DCMAKE_CXX_COMPILER_LAUNCHER=$launcher} >"$work/configure.log"
+cmake --build "$work/build" -j2 >"$work/build.log"
+# The same prefix through pkg-config: a program that includes every public
+# header and prints the lookup's GLSL (no GL context needed).
+cat >"$work/lookup.cpp" <<'CPP'
+#include <penumbra/penumbra.hpp>
+#include <iostream>
+int main() { std::cout << penumbra::shadow_lookup_glsl(); }
+CPP
+export PKG_CONFIG_PATH="$(dirname "$(find "$work/prefix" -name penumbra-shadows.pc)")"
+${launcher} c++ -std=c++20 "$work/lookup.cpp" -o "$work/lookup" \
+  $(pkg-config --cflags --libs penumbra-shadows)
+"$work/lookup" | grep -q "float penumbra_shadow(int light, vec3 world_position, vec3 world_normal)"
+cmp <("$work/lookup") "$work/prefix/share/penumbra/penumbra_shadows.glsl"
+
+embed=$work/build/embed
+common=(--headless --width 320 --height 180 --map-size 512 --view shadow)
+"$embed" "${common[@]}" --lights spot --technique hard,pcf,msm -o "$work/images/spot.png"
+"$embed" "${common[@]}" --lights sun --technique pcf,vsm -o "$work/images/sun.png"
+"$embed" --headless --width 320 --height 180 --map-size 512 --technique msm \
+  -o "$work/images/final.png"
