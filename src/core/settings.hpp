@@ -144,6 +144,12 @@ struct ShadowSettings {
   // compute pass (Peters et al., HPG 2017) instead of a resolve and two
   // blur passes. Same maps up to rounding; off measures the two-pass path.
   bool fused = true;
+  // Mipmapped filtered maps (vsm, esm, evsm2/4, msm, msm16 with the
+  // Gaussian filter or none): after the filter, a 2x2 box chain down to
+  // 1x1, read with trilinear and anisotropic filtering over the pixel's
+  // footprint on the receiver, so distant receivers average the map over
+  // what the pixel covers instead of aliasing (MJP's EnableShadowMips).
+  bool shadow_mips = false;
   // ESM exponent c (Annen et al. 2008); the map stores exp(c (z - 1)).
   float esm_c = 60.0f;
   // EVSM exponents c+ and c- (Lauritzen & McCool 2008) of the warps
@@ -470,7 +476,7 @@ struct SwitchParam {
   OptionGroup group = OptionGroup::Unset;
 };
 
-inline constexpr std::array<SwitchParam<ShadowSettings>, 2> kShadowSwitchParams{{
+inline constexpr std::array<SwitchParam<ShadowSettings>, 3> kShadowSwitchParams{{
     {"guard-band",
      "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
      "filters near a face's edge read their own face (no seams)",
@@ -480,6 +486,11 @@ inline constexpr std::array<SwitchParam<ShadowSettings>, 2> kShadowSwitchParams{
      "compute pass; off (or a wider blur) runs the resolve, then the horizontal and vertical "
      "blur passes",
      &ShadowSettings::fused, OptionGroup::Filter},
+    {"shadow-mips",
+     "filterable techniques with --filter gaussian (or --blur 0): mip chain of the filtered map, "
+     "read trilinearly and anisotropically over the pixel's footprint (distant receivers do not "
+     "alias)",
+     &ShadowSettings::shadow_mips, OptionGroup::Filter},
 }};
 
 inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{

@@ -11,6 +11,12 @@
 
 namespace penumbra {
 
+// Most texels an anisotropic lookup of a mipmapped filtered map
+// (--shadow-mips) averages along its footprint's long axis (clamped to
+// the device's GL_MAX_TEXTURE_MAX_ANISOTROPY): 16, the most any current
+// GPU offers.
+inline constexpr float kShadowMipAnisotropy = 16.0f;
+
 class LightingPass {
  public:
   LightingPass();
@@ -31,11 +37,12 @@ class LightingPass {
  private:
   const gl::Program& program_for(const ShadowSettings& settings);
 
-  // One per (technique, filter, soft) combination, compiled on first use.
-  std::map<std::tuple<int, int, bool>, gl::Program> programs_;
+  // One per (technique, filter, soft, mips) combination, compiled on first use.
+  std::map<std::tuple<int, int, bool, bool>, gl::Program> programs_;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Sampler bilinear_;
+  gl::Sampler trilinear_;  // --shadow-mips: trilinear and anisotropic
   gl::Sampler compare_;
   gl::Texture output_;
   gl::Framebuffer framebuffer_;
