@@ -6,7 +6,7 @@
 // depths, as a wider filter would make it; a trilinear lookup between
 // levels stays a normalized filter. Odd sizes: level L + 1 is floor(size /
 // 2) wide (OpenGL's chain), so the last row or column of level L is left
-// out. IMAGE_FORMAT: the map's image format; workgroup z is the layer.
+// out (and a 2 x 1 level's texel is the mean of its two). IMAGE_FORMAT: the map's image format; workgroup z is the layer.
 #include "../shared/bindings.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -18,8 +18,10 @@ layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT_2) uniform writeonly image2DArray co
 void main() {
   ivec3 p = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(p.xy, imageSize(coarser).xy))) return;
-  ivec3 q = ivec3(2 * p.xy, p.z);
-  vec4 sum = imageLoad(finer, q) + imageLoad(finer, q + ivec3(1, 0, 0)) +
-             imageLoad(finer, q + ivec3(0, 1, 0)) + imageLoad(finer, q + ivec3(1, 1, 0));
+  // A level one texel wide or high reads its one column or row twice.
+  ivec2 last = imageSize(finer).xy - 1;
+  ivec2 q0 = 2 * p.xy, q1 = min(q0 + 1, last);
+  vec4 sum = imageLoad(finer, ivec3(q0, p.z)) + imageLoad(finer, ivec3(q1.x, q0.y, p.z)) +
+             imageLoad(finer, ivec3(q0.x, q1.y, p.z)) + imageLoad(finer, ivec3(q1, p.z));
   imageStore(coarser, p, 0.25 * sum);
 }
