@@ -150,6 +150,12 @@ struct ShadowSettings {
   // footprint on the receiver, so distant receivers average the map over
   // what the pixel covers instead of aliasing (MJP's EnableShadowMips).
   bool shadow_mips = false;
+  // --shadow-mips: the largest ratio of a pixel's footprint's long side to
+  // its short side that the lookup follows with anisotropic filtering
+  // (clamped to the device's GL_MAX_TEXTURE_MAX_ANISOTROPY); 1: trilinear
+  // only, the footprint's long side choosing the level. CPU rasterizers
+  // (llvmpipe) filter trilinearly whatever this says (LightingPass).
+  int shadow_anisotropy = 16;
   // ESM exponent c (Annen et al. 2008); the map stores exp(c (z - 1)).
   float esm_c = 60.0f;
   // EVSM exponents c+ and c- (Lauritzen & McCool 2008) of the warps
@@ -385,7 +391,7 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 17> kShadowFloa
      0.5f, &ShadowSettings::cascade_blend, OptionGroup::Lights},
 }};
 
-inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 7> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowSettings::map_size, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
@@ -401,6 +407,10 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntPara
      kMaxShadowSamples, &ShadowSettings::pcss_filter_samples, OptionGroup::Technique},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
      &ShadowSettings::cascades, OptionGroup::Lights},
+    {"shadow-anisotropy",
+     "--shadow-mips: most anisotropic filtering along the pixel's footprint (up to the device's "
+     "limit; llvmpipe: 1); 1: trilinear only",
+     1, 16, &ShadowSettings::shadow_anisotropy, OptionGroup::Filter},
 }};
 
 inline constexpr int kMaxAccumulate = 4096;

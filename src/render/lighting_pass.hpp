@@ -11,11 +11,6 @@
 
 namespace penumbra {
 
-// Most texels an anisotropic lookup of a mipmapped filtered map
-// (--shadow-mips) averages along its footprint's long axis (clamped to
-// the device's GL_MAX_TEXTURE_MAX_ANISOTROPY): 16, the most any current
-// GPU offers.
-inline constexpr float kShadowMipAnisotropy = 16.0f;
 
 class LightingPass {
  public:
@@ -42,7 +37,9 @@ class LightingPass {
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Sampler bilinear_;
-  gl::Sampler trilinear_;  // --shadow-mips: trilinear and anisotropic
+  // --shadow-mips: trilinear and anisotropic, one per --shadow-anisotropy.
+  std::map<int, gl::Sampler> trilinear_;
+  bool cpu_rasterizer_ = false;  // llvmpipe and the like (see execute())
   gl::Sampler compare_;
   gl::Texture output_;
   gl::Framebuffer framebuffer_;

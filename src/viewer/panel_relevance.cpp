@@ -37,6 +37,9 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
   if (name == "fused" || name == "shadow-mips") {
     return is_filterable(t) && shadow.filter == Filter::Gaussian;
   }
+  if (name == "shadow-anisotropy") {
+    return is_filterable(t) && shadow.filter == Filter::Gaussian && shadow.shadow_mips;
+  }
   if (name == "vsm-min-variance") return t == Technique::Vsm || evsm;
   // 32-bit float moments are biased by msm-alpha; 16-bit ones and those
   // summed in the fixed-point summed-area table by msm16-alpha.
