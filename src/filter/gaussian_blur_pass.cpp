@@ -17,8 +17,7 @@ GLuint groups(int size, int tile) {
 }
 
 // `texture` as a 2D array shaped like `like`, with `levels` mip levels.
-void ensure_like(gl::Texture& texture, const gl::Texture& like, const char* label,
-                 int levels = 1) {
+void ensure_like(gl::Texture& texture, const gl::Texture& like, const char* label, int levels = 1) {
   gl::ensure_texture_array(texture, like.format(), like.width(), like.height(), like.layers(),
                            label, levels);
 }

@@ -87,12 +87,13 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
     const int anisotropy = cpu_rasterizer_ ? 1 : settings.shadow_anisotropy;
     auto it = trilinear_.find(anisotropy);
     if (it == trilinear_.end()) {
-      it = trilinear_
-               .emplace(anisotropy, gl::Sampler(gl::SamplerInfo{
-                                        .min_filter = GL_LINEAR_MIPMAP_LINEAR,
-                                        .max_anisotropy = static_cast<float>(anisotropy),
-                                        .label = "trilinear anisotropic clamp"}))
-               .first;
+      it =
+          trilinear_
+              .emplace(anisotropy,
+                       gl::Sampler(gl::SamplerInfo{.min_filter = GL_LINEAR_MIPMAP_LINEAR,
+                                                   .max_anisotropy = static_cast<float>(anisotropy),
+                                                   .label = "trilinear anisotropic clamp"}))
+              .first;
     }
     filtered_sampler = it->second.id();
   }

@@ -11,7 +11,6 @@
 
 namespace penumbra {
 
-
 class LightingPass {
  public:
   LightingPass();

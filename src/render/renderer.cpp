@@ -342,9 +342,9 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     filtered = &representation;
     const int filter = filter_define(shadow);
     if (filter == FILTER_GAUSSIAN) {
-      blur_pass_.execute(representation, shadow.blur, profiler,
-                         filtered_map_levels(shadow, representation.width(),
-                                             representation.height()));
+      blur_pass_.execute(
+          representation, shadow.blur, profiler,
+          filtered_map_levels(shadow, representation.width(), representation.height()));
       filtered = &blur_pass_.output();
     } else if (filter == FILTER_SAT) {
       sat_pass_.execute(representation, profiler);

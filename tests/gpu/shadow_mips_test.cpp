@@ -108,8 +108,8 @@ TEST_F(ShadowMipsTest, EachLevelIsTheMeanOfTheTwoByTwoTexelsBelow) {
       const int channels = channels_of(format);
       std::vector<float> data(static_cast<std::size_t>(width) * height * 3 * channels);
       for (float& v : data) v = u(rng);
-      glTextureSubImage3D(t.id(), 0, 0, 0, 0, width, height, 3, pixel_format_of(channels),
-                          GL_FLOAT, data.data());
+      glTextureSubImage3D(t.id(), 0, 0, 0, 0, width, height, 3, pixel_format_of(channels), GL_FLOAT,
+                          data.data());
       pass.execute(t);
       // Float: the mean of four floats, rounded once or twice. RGBA16: the
       // mean of four 16-bit values rounded to 16 bits (half a step) plus
@@ -167,8 +167,8 @@ TEST_F(ShadowMipsTest, TheRenderersMapsCarryTheChainOfTheirMoments) {
       const gl::Texture& maps = renderer.shadow_maps();
       if (fused) {
         ASSERT_EQ(maps.levels(), 7);  // 96 .. 1
-        EXPECT_EQ(expect_box_chain(maps, technique == Technique::Msm16 ? 0.5 / 65535.0 + 1e-6
-                                                                       : 1e-6 * 4.0),
+        EXPECT_EQ(expect_box_chain(
+                      maps, technique == Technique::Msm16 ? 0.5 / 65535.0 + 1e-6 : 1e-6 * 4.0),
                   7);
       }
     }
@@ -263,10 +263,11 @@ TEST_F(ShadowMipsTest, MipsBringTheFarGroundCloserToItsAreaAveragedShadow) {
       error[run][0] = rmse(image, reference, 40.0f);
       error[run][1] = rmse(image, reference, 0.0f);
     }
-    std::printf("%s ground RMSE against its area-averaged shadow, no mips / trilinear / "
-                "anisotropic 16: beyond 40 m %.4f / %.4f / %.4f, all %.4f / %.4f / %.4f\n",
-                std::string(name).c_str(), error[0][0], error[1][0], error[2][0], error[0][1],
-                error[1][1], error[2][1]);
+    std::printf(
+        "%s ground RMSE against its area-averaged shadow, no mips / trilinear / "
+        "anisotropic 16: beyond 40 m %.4f / %.4f / %.4f, all %.4f / %.4f / %.4f\n",
+        std::string(name).c_str(), error[0][0], error[1][0], error[2][0], error[0][1], error[1][1],
+        error[2][1]);
     for (int run = 1; run < 3; ++run) {
       EXPECT_LT(error[run][0], 0.75 * error[0][0]) << name << " run " << run;
       EXPECT_LT(error[run][1], error[0][1]) << name << " run " << run;
