@@ -17,6 +17,9 @@ from mathutils import Matrix, Vector
 CURVE_SEGMENTS = 48  # kCurveSegments, src/scene/mesh.hpp
 
 
+TERMINATOR_GEOMETRY_OFFSET = 0.1
+
+
 def to_blender(v):
     return Vector((v[0], -v[2], v[1]))
 
@@ -104,8 +107,12 @@ def add_object(name, shape, material):
     mesh.materials.append(material)
     obj = bpy.data.objects.new(name, mesh)
     bpy.context.scene.collection.objects.link(obj)
+    # Cycles' "shadow terminator geometry offset" (Blender's default 0.1)
+    # starts shadow rays near a smooth-shaded terminator from the smooth
+    # surface the vertex normals describe, as penumbra's reference starts
+    # them (Hanika 2021); no shading offset.
     if hasattr(obj, "cycles") and hasattr(obj.cycles, "shadow_terminator_geometry_offset"):
-        obj.cycles.shadow_terminator_geometry_offset = 0.0
+        obj.cycles.shadow_terminator_geometry_offset = TERMINATOR_GEOMETRY_OFFSET
         obj.cycles.shadow_terminator_offset = 0.0
     return obj
 
@@ -121,7 +128,9 @@ def look_rotation(forward, up):
 
 
 def main():
+    global TERMINATOR_GEOMETRY_OFFSET
     job = json.load(open(sys.argv[sys.argv.index("--") + 1]))
+    TERMINATOR_GEOMETRY_OFFSET = job.get("terminator_geometry_offset", 0.1)
     scene_desc = job["scene"]
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene

@@ -21,6 +21,7 @@
 #include "../shadow/penumbra.glsl"
 #include "../shadow/pcf.glsl"
 #include "../shadow/accumulate.glsl"
+#include "../shadow/backprojection.glsl"
 
 layout(std140, binding = BINDING_SHADOW_UBO) uniform ShadowBlock { GpuShadow shadow_params; };
 
@@ -158,7 +159,7 @@ float filtered_mean_depth(vec4 m) {
 }
 #endif
 
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS || \
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS || SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION || \
     (SHADOW_TECHNIQUE >= TECHNIQUE_VSM && SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS)
 // The blocker search of PCSS over the depth map: the 2x2 texels around each
 // point of the pixel's rotated Poisson set (four depths a fetch), spread
@@ -376,7 +377,8 @@ float filtered_hard_reference(int v, vec2 uv, ReceiverPlane z) {
 #endif
 }
 
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS || \
+    SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
 // PCF, or for one sample the hardware's 2x2 bilinear compare; width 0 is
 // the plain test.
 float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
@@ -388,7 +390,7 @@ float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCo
 }
 #endif
 
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS || SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
 // PCSS (Fernando 2005): blocker search (cone_blocker_search()), penumbra
 // estimate, PCF over it, each with as many samples as its region's size in
 // texels asks for, up to the settings' counts. The search's region's shape
@@ -478,6 +480,14 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
   OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
   return pcss_lit_fraction(v, s, z, gradient, cone, rotation);
 #endif
+#elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
+  vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
+  if (view.perspective != 0 && view.radial_depth == 0) {
+    return shadow_backprojection(shadow_depth, v, view, s, z, gradient, normal);
+  }
+  // A point light's cube faces and the sun's cascades: PCSS.
+  return pcss_lit_fraction(v, s, z, gradient, occluder_cone(light, view, s.position, 0.0),
+                           rotation);
 #elif SHADOW_TECHNIQUE >= TECHNIQUE_VSM
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
   float lit = soft_moment_shadow(v, s, z, light, normal, rotation);
@@ -623,15 +633,12 @@ void main() {
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {
-    // Surfaces facing away from the light receive none of it (an attached
-    // shadow, as a traced shadow ray would find); elsewhere the shadow map
-    // decides.
+    // The technique decides everywhere, also on surfaces turned away from
+    // the light's centre: an area light's source can still reach them over
+    // their horizon, and the traced reference judges them by the part of
+    // the source above it.
     int i = frame.options.z;
-    bool faces_light = dot(n, direction_to_light(lights[i], world)) > 0.0;
-    float lit =
-        faces_light
-            ? shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE, rotation, footprint)
-            : 0.0;
+    float lit = shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE, rotation, footprint);
     out_color = shadow_params.accumulate_weighted != 0
                     ? vec4(lit, vec2(lit, 1.0) * accumulate_source_weight(lights[i], world, n), 1.0)
                     : vec4(vec3(lit), 1.0);

@@ -72,12 +72,13 @@
 #define TECHNIQUE_HARD 1
 #define TECHNIQUE_PCF 2
 #define TECHNIQUE_PCSS 3
-#define TECHNIQUE_VSM 4
-#define TECHNIQUE_ESM 5
-#define TECHNIQUE_MSM 6
-#define TECHNIQUE_MSM16 7
-#define TECHNIQUE_EVSM2 8
-#define TECHNIQUE_EVSM4 9
+#define TECHNIQUE_BACKPROJECTION 4
+#define TECHNIQUE_VSM 5
+#define TECHNIQUE_ESM 6
+#define TECHNIQUE_MSM 7
+#define TECHNIQUE_MSM16 8
+#define TECHNIQUE_EVSM2 9
+#define TECHNIQUE_EVSM4 10
 
 // Filters of the filterable maps (compile-time define SHADOW_FILTER)
 #define FILTER_NONE 0

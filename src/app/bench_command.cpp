@@ -9,6 +9,7 @@
 #include "app/help_formatter.hpp"
 #include "app/light_choice.hpp"
 #include "app/option_style.hpp"
+#include "app/options.hpp"
 #include "app/scene_source.hpp"
 #include "core/error.hpp"
 #include "filter/summed_area_table_pass.hpp"
@@ -66,6 +67,7 @@ std::string describe(const ShadowSettings& s) {
     out << " (" << format_name(representation_format(s.technique)) << ")";
   }
   out << ", map " << s.map_size;
+  if (s.accumulate > 1) out << ", accumulate " << s.accumulate << " (a frame is one sub-frame)";
   return out.str();
 }
 
@@ -121,6 +123,12 @@ void print_run(const PassTimes& run, int frames, bool timer) {
     if (run.ran[p]) row(gl::kGpuPassNames[p], run.passes[p]);
   }
   row("total (frame)", run.total);
+  if (run.shadow.accumulate > 1) {
+    const int n = run.shadow.accumulate;
+    std::printf(
+        "  a converged image (%d sub-frames): %.3f ms by the timers, %.3f by the wall clock\n", n,
+        n * spread_of(run.total.timer_ms).median, n * spread_of(run.total.wall_ms).median);
+  }
   const CopyRatios ratios = copy_ratios(run, timer);
   for (const auto& [name, ratio] : ratios.values) {
     std::printf("  %-18s %8.2fx the copy (%s)\n", name.c_str(), ratio, ratios.clock);
@@ -141,6 +149,11 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
     j["representation_format"] = format_name(representation_format(s.technique));
   }
   j["frames"] = frames;
+  // With --accumulate N each frame is one sub-frame; N of them make the
+  // converged image.
+  j["accumulate"] = s.accumulate;
+  j["converged_image_ms"] = s.accumulate * spread_of(run.total.timer_ms).median;
+  j["converged_image_wall_ms"] = s.accumulate * spread_of(run.total.wall_ms).median;
   auto samples_json = [](const Samples& samples) {
     const Spread t = spread_of(samples.timer_ms), w = spread_of(samples.wall_ms);
     return nlohmann::json{{"median_ms", t.median}, {"min_ms", t.min},
@@ -206,12 +219,15 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
              "summed-area table",
              filter_names(), OptionGroup::Filter);
   add_shadow_parameters(command, args.shadow);
+  add_accumulate_option(command, args.shadow);
   command.footer(examples_footer({
       {"every pass of msm, timed", "penumbra bench"},
       {"three techniques side by side, numbers also as JSON",
        "penumbra bench --technique hard,vsm,msm --json bench.json"},
       {"the cost of the filter width, Gaussian against the summed-area table",
        "penumbra bench --technique vsm --sweep blur --filter sat"},
+      {"one sub-frame of accumulated soft shadows, and what 64 of them cost",
+       "penumbra bench --technique hard --accumulate 64"},
   }));
 }
 

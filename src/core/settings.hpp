@@ -11,13 +11,14 @@
 
 namespace penumbra {
 
-enum class Technique { None, Hard, Pcf, Pcss, Vsm, Esm, Msm, Msm16, Evsm2, Evsm4 };
+enum class Technique { None, Hard, Pcf, Pcss, Backprojection, Vsm, Esm, Msm, Msm16, Evsm2, Evsm4 };
 
-inline constexpr std::array<std::pair<Technique, std::string_view>, 10> kTechniqueNames{{
+inline constexpr std::array<std::pair<Technique, std::string_view>, 11> kTechniqueNames{{
     {Technique::None, "none"},
     {Technique::Hard, "hard"},
     {Technique::Pcf, "pcf"},
     {Technique::Pcss, "pcss"},
+    {Technique::Backprojection, "backprojection"},
     {Technique::Vsm, "vsm"},
     {Technique::Esm, "esm"},
     {Technique::Msm, "msm"},
@@ -110,7 +111,7 @@ struct ShadowSettings {
   // Normal offset: the lookup moves this many texels along the surface normal.
   float normal_offset = 0.5f;
   // Width of a spot light's source in world units (0: a point, hard
-  // shadows), for pcss, --soft and the area-light reference; the diameter
+  // shadows), for pcss, backprojection, --soft and the area-light reference; the diameter
   // of a point light's spherical source.
   float light_size = 0.5f;
   // Angular diameter of a directional light's source in degrees (the sun
@@ -353,7 +354,8 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 17> kShadowFloa
     {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
      &ShadowSettings::normal_offset, OptionGroup::Bias},
     {"light-size",
-     "width of a spot light's source in world units (0: a point), for pcss, --soft and "
+     "width of a spot light's source in world units (0: a point), for pcss, backprojection, "
+     "--soft and "
      "the area-light reference (a square facing the light's direction); a point light's "
      "source is a sphere of this diameter",
      0.0f, 100.0f, &ShadowSettings::light_size, OptionGroup::Lights},

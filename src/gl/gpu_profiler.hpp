@@ -26,6 +26,7 @@ enum class GpuPass {
   GBuffer,
   AmbientOcclusion,
   Lighting,
+  Accumulate,     // --accumulate: one sub-frame added to the running sum
   BandwidthCopy,  // the yardstick of `penumbra bench`, not part of a frame
   Count
 };
@@ -34,7 +35,8 @@ inline constexpr std::array<std::string_view, static_cast<std::size_t>(GpuPass::
     kGpuPassNames{"shadow depth", "resolve",  "resolve+filter (fused)",
                   "filter H",     "filter V", "SAT rows",
                   "SAT columns",  "mips",     "G-buffer",
-                  "SSAO",         "lighting", "copy (yardstick)"};
+                  "SSAO",         "lighting", "accumulate",
+                  "copy (yardstick)"};
 
 // Milliseconds per pass (0 for passes that did not run), and the frame's
 // total from its first timestamp to its last. With a serializing profiler

@@ -130,13 +130,22 @@ class FacetPackets {
  public:
   static constexpr int kWidth = 16;
 
-  // `normals`: where the normals go, indexed as add() is given them.
-  FacetPackets(RTCScene scene, glm::vec3* normals) : scene_(scene), normals_(normals) {}
+  // `normals` and `lifts`: where each receiver's triangle normal and the
+  // lift of its ray origin go, indexed as add() is given them; the
+  // triangles' corners and vertex normals, three per triangle.
+  FacetPackets(RTCScene scene, const std::vector<glm::vec3>& corner_positions,
+               const std::vector<glm::vec3>& corner_normals, glm::vec3* normals, glm::vec3* lifts)
+      : scene_(scene),
+        corner_positions_(corner_positions),
+        corner_normals_(corner_normals),
+        normals_(normals),
+        lifts_(lifts) {}
 
   void add(const glm::vec3& p, const glm::vec3& n, float reach, int index) {
     const int lane = size_;
     set_ray(hits_.ray, lane, p + reach * n, -n, 2.0f * reach);
     hits_.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    point_[lane] = p;
     normal_[lane] = n;
     index_[lane] = index;
     if (++size_ == kWidth) flush();
@@ -148,22 +157,54 @@ class FacetPackets {
     rtcIntersect16(valid_, scene_, &context, &hits_);
     for (int lane = 0; lane < size_; ++lane) {
       const glm::vec3 n = normal_[lane];
-      glm::vec3 ng = n;
+      glm::vec3 ng = n, lift(0.0f);
       if (hits_.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
         const glm::vec3 g(hits_.hit.Ng_x[lane], hits_.hit.Ng_y[lane], hits_.hit.Ng_z[lane]);
         const float length = glm::length(g);
         if (length > 0.0f) ng = glm::dot(g, n) < 0.0f ? -g / length : g / length;
+        lift = terminator_lift(hits_.hit.primID[lane], hits_.hit.u[lane], hits_.hit.v[lane],
+                               point_[lane], n);
       }
       normals_[index_[lane]] = ng;
+      lifts_[index_[lane]] = lift;
     }
     size_ = 0;
   }
 
  private:
+  // How far the point p of triangle `triangle` (barycentrics 1 - u - v, u,
+  // v) moves to lie on the smooth surface its vertex normals describe:
+  // below each corner's tangent plane by h_i, it rises by the barycentric
+  // mean of h_i n_i (Hanika, "Hacking the Shadow Terminator", Ray Tracing
+  // Gems II, 2021, ch. 4). A shadow ray from there clears the flat
+  // triangles' own facets at a terminator, as a path tracer's does (Cycles
+  // applies this near terminators by default, its "shadow terminator
+  // geometry offset"); on a flat mesh, whose vertex normals are the
+  // triangles', it is 0. Corner normals facing away from n (a two-sided
+  // surface seen from its back) are turned to n's side.
+  glm::vec3 terminator_lift(unsigned triangle, float u, float v, const glm::vec3& p,
+                            const glm::vec3& n) const {
+    const std::size_t first = static_cast<std::size_t>(triangle) * 3;
+    if (first + 2 >= corner_normals_.size()) return glm::vec3(0.0f);
+    const float weights[3] = {1.0f - u - v, u, v};
+    glm::vec3 lift(0.0f);
+    for (int c = 0; c < 3; ++c) {
+      glm::vec3 corner_normal = corner_normals_[first + c];
+      if (glm::dot(corner_normal, n) < 0.0f) corner_normal = -corner_normal;
+      const float below = glm::dot(corner_positions_[first + c] - p, corner_normal);
+      if (below > 0.0f) lift += weights[c] * below * corner_normal;
+    }
+    return lift;
+  }
+
   RTCScene scene_;
+  const std::vector<glm::vec3>& corner_positions_;
+  const std::vector<glm::vec3>& corner_normals_;
   glm::vec3* normals_;
+  glm::vec3* lifts_;
   RTCRayHit16 hits_;
   alignas(64) int valid_[kWidth] = {};
+  glm::vec3 point_[kWidth];
   glm::vec3 normal_[kWidth];
   int index_[kWidth] = {};
   int size_ = 0;
@@ -281,6 +322,12 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Mat
   for (const Vertex& v : mesh.vertices) {
     const glm::vec3 a = glm::abs(v.position);
     max_coordinate_ = std::max({max_coordinate_, a.x, a.y, a.z});
+  }
+  corner_positions_.reserve(mesh.indices.size());
+  corner_normals_.reserve(mesh.indices.size());
+  for (const std::uint32_t i : mesh.indices) {
+    corner_positions_.push_back(mesh.vertices[i].position);
+    corner_normals_.push_back(mesh.vertices[i].normal);
   }
 }
 
@@ -476,9 +523,10 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
     PixelRays rays(count);
     const auto w = static_cast<std::size_t>(width);
     std::vector<Receiver> receivers(w);
-    std::vector<glm::vec3> facets(w);
+    std::vector<glm::vec3> facets(w), lifts(w);
     std::vector<double> total(w), lit(w);
-    FacetPackets facet_packets(scene_, facets.data());
+    FacetPackets facet_packets(scene_, corner_positions_, corner_normals_, facets.data(),
+                               lifts.data());
     OcclusionPackets packets(scene_, lit.data());
     for (int y = rows.begin(); y != rows.end(); ++y) {
       std::fill(total.begin(), total.end(), 0.0);
@@ -503,6 +551,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       for (int x = 0; x < width; ++x) {
         if (!surfaces.covered[row + x]) continue;
         receivers[x].ng = facets[x];
+        receivers[x].origin += lifts[x];
         sample_pixel(row + x, x, receivers[x], rays, total[x], lit[x], packets);
       }
       packets.flush();

@@ -107,7 +107,10 @@ class ShadowRayTracer {
  private:
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
-  float max_coordinate_ = 0.0f;             // the largest |x|, |y| or |z| of a vertex
+  float max_coordinate_ = 0.0f;  // the largest |x|, |y| or |z| of a vertex
+  // The triangles' corners and vertex normals, for the shadow rays'
+  // origins on the smooth surface the normals describe (trace()).
+  std::vector<glm::vec3> corner_positions_, corner_normals_;
   std::unique_ptr<CasterCutouts> cutouts_;  // null: nothing to cut
 };
 

@@ -135,8 +135,12 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
   for (std::size_t b = 1; b < batches_.size(); ++b) {
     batches_[b].first_index = batches_[b - 1].first_index + batches_[b - 1].index_count;
   }
-  std::vector<std::uint32_t> ordered(mesh.indices.size());
-  {
+  // With one batch drawn (one material kind: a scanned model on the
+  // ground), the mesh's own order is the batch order: no copy.
+  const bool one_batch = std::count_if(batches_.begin(), batches_.end(),
+                                       [](const Batch& b) { return b.index_count > 0; }) <= 1;
+  std::vector<std::uint32_t> ordered(one_batch ? 0 : mesh.indices.size());
+  if (!one_batch) {
     std::vector<std::size_t> next(batches_.size());
     for (std::size_t b = 0; b < batches_.size(); ++b) next[b] = batches_[b].first_index;
     for (std::size_t i = 0; i < triangles; ++i) {
@@ -146,7 +150,8 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
       at += 3;
     }
   }
-  indices_ = gl::Buffer::from(std::span<const std::uint32_t>(ordered), "scene indices");
+  indices_ = gl::Buffer::from(std::span<const std::uint32_t>(one_batch ? mesh.indices : ordered),
+                              "scene indices");
   // Batch b uses samplers_[b] and the texture of its key.
   for (const auto& [key, b] : batch_index) {
     batches_[b].texture = &textures_[std::get<0>(key)];

@@ -7,6 +7,8 @@
 #include "filter/mip_chain_pass.hpp"
 #include "filter/summed_area_table_pass.hpp"
 #include "gl/context.hpp"
+#include "render/accumulation.hpp"
+#include "render/accumulator.hpp"
 #include "shadow/moment_resolve_pass.hpp"
 #include "shadow/representation.hpp"
 #include "shadow/shadow_map_pass.hpp"
@@ -77,9 +79,21 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
   gl::GpuProfiler profiler(2, /*serialize=*/true);
   PassTimes run;
   run.shadow = shadow;
+  // With --accumulate N a frame is one sub-frame, added to the sum: the
+  // sub-frames cycle through the source's N points, as the viewer's do.
+  const bool accumulating = shadow.accumulate > 1 && !is_map_view(render.view);
+  const std::vector<Light> lights = renderer.scene().lights;
+  std::optional<Accumulator> accumulator;
+  if (accumulating) accumulator.emplace();
   for (int frame = 0; frame < warmup + frames; ++frame) {
     profiler.begin_frame();
-    renderer.render(render, shadow, {}, &profiler);
+    if (accumulating) {
+      render_subframe(renderer, lights, render, shadow, {}, frame % shadow.accumulate, &profiler);
+      gl::GpuPassScope timed(&profiler, GpuPass::Accumulate);
+      accumulator->add(renderer.view_source());
+    } else {
+      renderer.render(render, shadow, {}, &profiler);
+    }
     {
       gl::GpuPassScope timed(&profiler, GpuPass::BandwidthCopy);
       copy.execute(renderer.shadow_maps());
@@ -98,6 +112,7 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
     run.total.timer_ms.push_back(times->total_ms);
     run.total.wall_ms.push_back(times->total_wall_ms);
   }
+  if (accumulating) renderer.set_lights(lights);
   const gl::Texture& maps = renderer.shadow_maps();
   run.texels = static_cast<double>(maps.width()) * maps.height() * maps.layers();
   GLint shared_bytes = 0;

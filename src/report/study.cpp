@@ -1,5 +1,6 @@
 #include "report/study.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,7 +20,9 @@
 #include "render/accumulation.hpp"
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
+#include "report/foliage_scene.hpp"
 #include "report/html_page.hpp"
+#include "scene/gltf_scene.hpp"
 
 namespace penumbra {
 
@@ -62,6 +65,7 @@ class Study {
     sweeps_section(page);
     esm_section(page);
     errors_section(page);
+    foliage_section(page);
     timings_section(page);
 
     StudyResult result;
@@ -82,10 +86,18 @@ class Study {
   // The same with another renderer, made for the scene with `light_choice`.
   HtmlFigure figure(Renderer& renderer, const std::string& light_choice, const std::string& file,
                     const std::string& caption, RenderSettings render, ShadowSettings shadow) {
+    return figure(renderer, options_.scene_argument, options_.model_argument, light_choice, file,
+                  caption, render, shadow);
+  }
+  // The same for another scene, named by its --scene (or --model) argument.
+  HtmlFigure figure(Renderer& renderer, const std::string& scene_argument,
+                    const std::string& model_argument, const std::string& light_choice,
+                    const std::string& file, const std::string& caption, RenderSettings render,
+                    ShadowSettings shadow) {
     HtmlFigure f;
     f.caption = caption;
-    f.command = shell_command(render_command_args({.scene_argument = options_.scene_argument,
-                                                   .model_argument = options_.model_argument,
+    f.command = shell_command(render_command_args({.scene_argument = scene_argument,
+                                                   .model_argument = model_argument,
                                                    .light = light_choice,
                                                    .render = render,
                                                    .shadow = shadow,
@@ -134,9 +146,9 @@ class Study {
         "texels; the soft variants size their filter from a blocker search (PCSS, and the "
         "summed-area-table moment shadows).");
     std::vector<HtmlFigure> figures;
-    for (Technique t :
-         {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm,
-          Technique::Esm, Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss,
+                        Technique::Backprojection, Technique::Vsm, Technique::Esm, Technique::Msm,
+                        Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
       figures.push_back(
           figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t)));
     }
@@ -180,9 +192,10 @@ class Study {
         " rays per pixel; the point light a sphere of the light size, the sun a disk of its "
         "angle), over the pixels the light reaches.");
     const std::vector<Technique> techniques =
-        options_.quick ? std::vector<Technique>{Technique::Hard, Technique::Pcss, Technique::Msm}
-                       : std::vector<Technique>{Technique::Hard, Technique::Pcf, Technique::Pcss,
-                                                Technique::Vsm, Technique::Msm};
+        options_.quick
+            ? std::vector<Technique>{Technique::Hard, Technique::Pcss, Technique::Msm}
+            : std::vector<Technique>{Technique::Hard,           Technique::Pcf, Technique::Pcss,
+                                     Technique::Backprojection, Technique::Vsm, Technique::Msm};
     std::vector<std::vector<std::string>> rows = {{"technique"}};
     for (Technique t : techniques) rows.push_back({name_of(t)});
     std::vector<HtmlFigure> figures;
@@ -378,8 +391,12 @@ class Study {
   }
   std::optional<Image> shadow_image(Renderer& renderer, const ShadowSettings& shadow,
                                     View view = View::Shadow) {
+    return shadow_image(renderer, base_render_, shadow, view);
+  }
+  std::optional<Image> shadow_image(Renderer& renderer, const RenderSettings& render,
+                                    const ShadowSettings& shadow, View view = View::Shadow) {
     try {
-      RenderSettings r = base_render_;
+      RenderSettings r = render;
       r.view = view;
       renderer.render(r, shadow);
       Image image = renderer.read_view();
@@ -462,9 +479,9 @@ class Study {
       }
       figures.push_back(f);
     };
-    for (Technique t :
-         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
-          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Backprojection,
+                        Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16,
+                        Technique::Evsm2, Technique::Evsm4}) {
       ++items_;
       progress_.update(items_, total_items());
       const ShadowSettings settings = with(t);
@@ -491,8 +508,164 @@ class Study {
     page.figures(figures);
   }
 
+  // Alpha-tested casters: the foliage scene (report/foliage_scene.hpp),
+  // each technique against the traced reference of each of its lights.
+  void foliage_section(HtmlPage& page) {
+    page.heading("7. Foliage: alpha-tested casters");
+    const int samples = options_.quick ? 64 : 256;
+    const std::vector<Technique> techniques =
+        options_.quick
+            ? std::vector<Technique>{Technique::Hard, Technique::Pcf, Technique::Pcss,
+                                     Technique::Vsm, Technique::Msm}
+            : std::vector<Technique>{
+                  Technique::Hard,  Technique::Pcf,  Technique::Pcss, Technique::Backprojection,
+                  Technique::Vsm,   Technique::Esm,  Technique::Msm,  Technique::Msm16,
+                  Technique::Evsm2, Technique::Evsm4};
+    // The scene's files go into the report's folder, so the commands under
+    // the images run there as they are.
+    const std::string scene_argument = "foliage/foliage.gltf";
+    std::optional<Scene> scene;
+    try {
+      write_foliage_scene((std::filesystem::path(options_.output_dir) / "foliage").string());
+      scene = gltf_scene((std::filesystem::path(options_.output_dir) / scene_argument).string());
+    } catch (const std::exception& e) {
+      ++failed_;
+      page.paragraph(std::string("The foliage scene could not be read: ") + e.what());
+      return;
+    }
+    page.paragraph(
+        "The scene scripts/make-foliage-scene writes (built into penumbra, written next to this "
+        "page as " +
+        scene_argument +
+        "): a ground, three trees whose crowns are alpha-masked "
+        "leaf cards, a fence of 8 cm slats and a grille cut out by a mask, under a sun (" +
+        std::to_string(base_shadow_.cascades) +
+        " cascades) and a warm spot light, seen by the file's camera. Many depth "
+        "discontinuities per texel: the hardest case for filtered maps. Each technique's shadow "
+        "factor for each light alone (--light-index) against that light's traced reference (" +
+        std::to_string(samples) +
+        " rays per pixel through the same cut-outs), over the pixels the light reaches; leaking "
+        "and the error images as in section 6.");
+    Renderer renderer(*scene);
+    const auto image_figure = [](const std::string& file, const std::string& caption, int width,
+                                 int height) {
+      HtmlFigure f;
+      f.image = file;
+      f.caption = caption;
+      f.width = width;
+      f.height = height;
+      return f;
+    };
+    std::vector<HtmlFigure> figures;
+    figures.push_back(figure(renderer, scene_argument, "", "", "foliage.png",
+                             "the foliage scene, pcss", base_render_, with(Technique::Pcss)));
+    std::vector<std::vector<std::string>> rows = {{"technique"}};
+    for (Technique t : techniques) rows.push_back({name_of(t)});
+    std::vector<std::string> summary;
+    for (std::size_t light = 0; light < scene->lights.size(); ++light) {
+      const std::string light_name =
+          std::string(enum_name<LightType>(kLightTypeNames, scene->lights[light].type));
+      rows.front().push_back("RMSE " + light_name);
+      rows.front().push_back("leaking " + light_name);
+      RenderSettings render = base_render_;
+      render.light_index = static_cast<int>(light);
+      ++items_;
+      progress_.update(items_, total_items());
+      std::optional<TracedReference> traced;
+      try {
+        traced = traced_reference(renderer, render, base_shadow_, samples, default_cache_dir());
+        check_gl();
+        const std::string file = "foliage-" + light_name + "-traced.png";
+        write_png(traced->image, (std::filesystem::path(options_.output_dir) / file).string(),
+                  PngEncoding::Linear);
+        figures.push_back(image_figure(file, light_name + ": traced reference", traced->image.width,
+                                       traced->image.height));
+      } catch (const std::exception& e) {
+        ++failed_;
+        HtmlFigure failed;
+        failed.caption = light_name + ": traced reference";
+        failed.error = e.what();
+        figures.push_back(failed);
+      }
+      std::vector<std::pair<Technique, ShadowMetrics>> measured;
+      for (std::size_t i = 0; i < techniques.size(); ++i) {
+        ++items_;
+        progress_.update(items_, total_items());
+        std::optional<Image> image;
+        if (traced) image = shadow_image(renderer, render, with(techniques[i]));
+        if (!image) {
+          rows[i + 1].insert(rows[i + 1].end(), {"failed", ""});
+          continue;
+        }
+        const ShadowMetrics m = compare_shadow(*image, traced->image);
+        measured.push_back({techniques[i], m});
+        rows[i + 1].push_back(fixed(m.rmse, 4));
+        rows[i + 1].push_back(fixed(100.0 * m.leak_fraction, 2) + " %");
+        const std::string file =
+            "foliage-" + light_name + "-error-" + name_of(techniques[i]) + ".png";
+        const Image error = error_image(*image, traced->image);
+        write_png(error, (std::filesystem::path(options_.output_dir) / file).string(),
+                  PngEncoding::Linear);
+        figures.push_back(image_figure(file,
+                                       light_name + ", " + name_of(techniques[i]) + " minus traced",
+                                       error.width, error.height));
+      }
+      if (!measured.empty()) summary.push_back(foliage_summary(light_name, measured));
+    }
+    page.table(rows);
+    for (const std::string& sentence : summary) page.paragraph(sentence);
+    page.figures(figures);
+  }
+
+  // What the numbers of one light say: the technique closest to the
+  // traced reference, those much further off, and the filtered ones that
+  // leak light through the cut-outs more often than the hard map.
+  static std::string foliage_summary(
+      const std::string& light, const std::vector<std::pair<Technique, ShadowMetrics>>& measured) {
+    const auto best = std::min_element(measured.begin(), measured.end(), [](auto& a, auto& b) {
+      return a.second.rmse < b.second.rmse;
+    });
+    const auto hard = std::find_if(measured.begin(), measured.end(),
+                                   [](auto& m) { return m.first == Technique::Hard; });
+    std::ostringstream out;
+    out << "Under the " << light << " light, " << name_of(best->first)
+        << " is closest to the traced reference (RMSE " << fixed(best->second.rmse, 4) << ").";
+    std::vector<std::string> far_off, leaky;
+    for (const auto& [t, m] : measured) {
+      if (m.rmse > 1.5 * best->second.rmse) {
+        far_off.push_back(name_of(t) + " " + fixed(m.rmse, 4));
+      }
+      if (is_filterable(t) && hard != measured.end() &&
+          m.leak_fraction > 2.0 * hard->second.leak_fraction && m.leak_fraction > 1e-3) {
+        leaky.push_back(name_of(t) + " " + fixed(100.0 * m.leak_fraction, 2) + " %");
+      }
+    }
+    const auto join = [](const std::vector<std::string>& items) {
+      std::string text;
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        text += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + items[i];
+      }
+      return text;
+    };
+    if (!far_off.empty()) {
+      out << " More than 1.5 times its error: " << join(far_off) << ".";
+    } else {
+      out << " Every technique is within 1.5 times its error.";
+    }
+    if (hard == measured.end()) return out.str();
+    if (!leaky.empty()) {
+      out << " Struggling with the cut-outs, the filtered representations leak light through "
+             "leaves and slats on more than twice the hard map's share of pixels ("
+          << fixed(100.0 * hard->second.leak_fraction, 2) << " %): " << join(leaky) << ".";
+    } else {
+      out << " No filtered technique leaks on more than twice the hard map's share of pixels ("
+          << fixed(100.0 * hard->second.leak_fraction, 2) << " %).";
+    }
+    return out.str();
+  }
+
   void timings_section(HtmlPage& page) {
-    page.heading("7. GPU time per pass");
+    page.heading("8. GPU time per pass");
     const bool timer = !timers_miss_compute(context_.renderer());
     page.paragraph(
         "Device: " + context_.renderer() + " (" + context_.vendor() + ", " + context_.version() +
@@ -510,9 +683,9 @@ class Study {
     header.emplace_back("total");
     header.emplace_back("filters / copy");
     rows.push_back(header);
-    for (Technique t :
-         {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Vsm, Technique::Esm,
-          Technique::Msm, Technique::Msm16, Technique::Evsm2, Technique::Evsm4}) {
+    for (Technique t : {Technique::Hard, Technique::Pcf, Technique::Pcss, Technique::Backprojection,
+                        Technique::Vsm, Technique::Esm, Technique::Msm, Technique::Msm16,
+                        Technique::Evsm2, Technique::Evsm4}) {
       ++items_;
       progress_.update(items_, total_items());
       try {
@@ -550,7 +723,9 @@ class Study {
   RenderSettings base_render_;
   ShadowSettings base_shadow_;
   // Images, metrics and timings the study makes, for the progress bar.
-  int total_items() const { return options_.quick ? 91 : 124; }
+  // The foliage section: its scene image, and per light (2) a trace and
+  // each technique (5 or 10).
+  int total_items() const { return options_.quick ? 94 + 13 : 133 + 23; }
   ProgressBar progress_{"report"};
   int items_ = 0;
   int failed_ = 0;

@@ -21,11 +21,13 @@
 #include <map>
 #include <memory>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <type_traits>
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
+#include "scene/direct_readers.hpp"
 #include "scene/gltf_lights.hpp"
 #include "scene/smooth_normals.hpp"
 #include "scene/texture.hpp"
@@ -810,14 +812,82 @@ std::size_t read_memory_limit(std::uintmax_t file_size) {
   return static_cast<std::size_t>(std::min<std::uintmax_t>(limit, std::uintmax_t{1} << 46));
 }
 
+bool has_extension(const std::string& path, const char* extension) {
+  std::string e = fs::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e == extension;
+}
+
+// The material assimp 5.2 gives a file without one, as to_material reads
+// it: the OBJ reader's "DefaultMaterial" (diffuse 0.6, no specular), the
+// PLY reader's unnamed white one (diffuse and specular 1).
+Material default_file_material(bool obj) {
+  Material m;
+  if (obj) {
+    m.name = "DefaultMaterial";
+    m.albedo = glm::vec3(0.6f);
+    m.specular = glm::vec3(0.0f);
+  } else {
+    m.albedo = glm::vec3(1.0f);
+    m.specular = glm::vec3(1.0f);
+  }
+  return m;
+}
+
+// The model the direct readers read, finished as read_model finishes
+// assimp's: unit normals (unusable ones repaired) or smooth ones computed.
+Model finish_direct(const std::string& path, DirectMesh in, bool obj) {
+  Model model;
+  model.path = path;
+  model.materials.push_back(default_file_material(obj));
+  TriangleMesh& mesh = in.mesh;
+  if (in.has_normals) {
+    std::vector<std::uint32_t> broken;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      glm::vec3& normal = mesh.vertices[v].normal;
+      const float length = glm::length(normal);
+      if (std::isfinite(length) && length > 1e-12f) {
+        normal /= length;
+      } else {
+        broken.push_back(static_cast<std::uint32_t>(v));
+      }
+    }
+    repair_normals(mesh, 0, 0, broken);
+  } else {
+    mesh = with_smooth_normals(mesh, kCreaseDegrees);
+  }
+  for (const Vertex& v : mesh.vertices) model.bounds.extend(v.position);
+  model.mesh = std::move(mesh);
+  return model;
+}
+
+// The model read by a direct reader, or nullopt for a file they leave to assimp.
+std::optional<Model> read_directly(const std::string& path) {
+  std::optional<DirectMesh> mesh;
+  const bool obj = has_extension(path, ".obj");
+  if (obj) {
+    mesh = read_obj_directly(path);
+  } else if (has_extension(path, ".ply")) {
+    mesh = read_ply_directly(path);
+  }
+  if (!mesh) return std::nullopt;
+  return finish_direct(path, std::move(*mesh), obj);
+}
+
 }  // namespace
 
 // Assimp's readers can crash or never return on malformed files (fuzzing
 // assimp 5.2 found OFF files that crash its reader and PLY files it never
 // finishes), so the model is read in a child process: such a file costs an
 // error naming it, not the program.
-Model load_model(const std::string& path) {
+Model load_model(const std::string& path, ModelReader reader) {
   check_readable(path);
+  // The direct readers are ours, bounded by the file's size and checked
+  // for every malformed input the fuzzer and the tests throw at them, so
+  // they run here, without the child's copies through the pipe.
+  if (reader == ModelReader::Any) {
+    if (std::optional<Model> model = read_directly(path)) return std::move(*model);
+  }
   check_ply_header(path);
   std::error_code ec;
   const std::uintmax_t size = fs::file_size(path, ec);

@@ -50,8 +50,13 @@ struct Model {
 // computed (smooth_normals.hpp, creases above 80 degrees kept); a file's
 // normal that is non-finite or zero becomes the area-weighted mean of its
 // triangles' normals.
+// OBJ files without materials and binary PLY files are read by the direct
+// readers (direct_readers.hpp) in this process; every other file by
+// assimp in a child process. ModelReader::Assimp sends every file to
+// assimp (the tests compare the two).
 // Throws RuntimeError "<path>: <what is wrong>".
-Model load_model(const std::string& path);
+enum class ModelReader { Any, Assimp };
+Model load_model(const std::string& path, ModelReader reader = ModelReader::Any);
 
 // Loads the model into `shape` (kind Model, file = path). With
 // `own_materials`, the model's materials are appended to the scene and

@@ -13,7 +13,9 @@ namespace penumbra {
 // (and equal material, texture coordinates and colour) share one vertex
 // of the result. A corner whose triangles have no area
 // takes the mean of every triangle there, or +y. Vertex::material is the
-// corner's own. O(n log n) in the vertices, no allocation per vertex.
+// corner's own. The result's vertices follow the order in which the
+// input's vertices first reach each position. O(n log n) in the vertices,
+// no allocation per vertex.
 TriangleMesh with_smooth_normals(const TriangleMesh& mesh, float crease_degrees);
 
 }  // namespace penumbra

@@ -74,6 +74,7 @@ float guard_band_texels(const ShadowSettings& settings, int map_size) {
       reach = 0.5f * settings.pcf_width;
       break;
     case Technique::Pcss:
+    case Technique::Backprojection:  // reads as PCSS in a point light's cube faces
       reach = 0.5f * MAX_PCF_WIDTH;  // blocker search and penumbra are capped at this width
       break;
     case Technique::Vsm:

@@ -24,6 +24,22 @@ std::array<HalfSpace, 4> frustum_sides(const glm::mat4& view, float kx, float ky
 
 void clip_polygon(std::vector<glm::vec3>& polygon, std::span<const HalfSpace> half_spaces,
                   std::vector<glm::vec3>& scratch) {
+  // A polygon inside every half-space is its own result, one outside
+  // any of them has none: most of a scene's triangles are one or the other.
+  if (half_spaces.size() <= 8 && !polygon.empty()) {
+    const unsigned all = (1u << half_spaces.size()) - 1u;
+    unsigned in_all = all, in_any = 0;
+    for (const glm::vec3& p : polygon) {
+      const unsigned mask = inside_mask(p, half_spaces);
+      in_all &= mask;
+      in_any |= mask;
+    }
+    if (in_all == all) return;
+    if (in_any != all) {
+      polygon.clear();
+      return;
+    }
+  }
   for (const HalfSpace& h : half_spaces) {
     if (polygon.empty()) return;
     const glm::vec3 n(h);

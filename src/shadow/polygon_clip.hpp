@@ -4,6 +4,7 @@
 // range of the geometry inside: shadow views fit their depth bounds to it.
 // Pure CPU functions, tested without a GPU.
 #include <array>
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <span>
 #include <vector>
@@ -34,16 +35,46 @@ std::array<HalfSpace, 4> frustum_sides(const glm::mat4& view, float kx, float ky
 void clip_polygon(std::vector<glm::vec3>& polygon, std::span<const HalfSpace> half_spaces,
                   std::vector<glm::vec3>& scratch);
 
+// Bit h set: the point is inside half_spaces[h] (at most 8 of them), with
+// the very test clip_polygon makes.
+inline unsigned inside_mask(const glm::vec3& p, std::span<const HalfSpace> half_spaces) {
+  unsigned mask = 0;
+  for (std::size_t h = 0; h < half_spaces.size(); ++h) {
+    if (glm::dot(glm::vec3(half_spaces[h]), p) + half_spaces[h].w >= 0.0f) mask |= 1u << h;
+  }
+  return mask;
+}
+
 // Calls visit(polygon) with the part of each triangle inside the
-// half-spaces, for the triangles with a non-empty part.
+// half-spaces, for the triangles with a non-empty part. Each vertex is
+// tested once (a vertex is shared by about six triangles): a triangle
+// whose corners are all inside is visited as it is and one whose corners
+// are all outside one half-space is skipped, without clipping; only the
+// triangles that cross a boundary are clipped.
 template <class Vertices, class Indices, class Visit>
 void for_each_clipped_triangle(const Vertices& vertices, const Indices& indices,
                                std::span<const HalfSpace> half_spaces, Visit&& visit) {
   std::vector<glm::vec3> polygon, scratch;
+  std::vector<std::uint8_t> inside;
+  const bool masks = half_spaces.size() <= 8;
+  const unsigned all = (1u << half_spaces.size()) - 1u;
+  if (masks) {
+    inside.resize(vertices.size());
+    for (std::size_t v = 0; v < vertices.size(); ++v) {
+      inside[v] = static_cast<std::uint8_t>(inside_mask(vertices[v].position, half_spaces));
+    }
+  }
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    polygon.assign({vertices[indices[t]].position, vertices[indices[t + 1]].position,
-                    vertices[indices[t + 2]].position});
-    clip_polygon(polygon, half_spaces, scratch);
+    const auto a = indices[t], b = indices[t + 1], c = indices[t + 2];
+    polygon.assign({vertices[a].position, vertices[b].position, vertices[c].position});
+    if (masks) {
+      const unsigned in_all = inside[a] & inside[b] & inside[c];
+      const unsigned in_any = inside[a] | inside[b] | inside[c];
+      if (in_any != all) continue;  // all three outside one half-space
+      if (in_all != all) clip_polygon(polygon, half_spaces, scratch);
+    } else {
+      clip_polygon(polygon, half_spaces, scratch);
+    }
     if (!polygon.empty()) visit(polygon);
   }
 }

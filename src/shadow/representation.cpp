@@ -17,6 +17,8 @@ int technique_define(Technique technique) {
       return TECHNIQUE_PCF;
     case Technique::Pcss:
       return TECHNIQUE_PCSS;
+    case Technique::Backprojection:
+      return TECHNIQUE_BACKPROJECTION;
     case Technique::Vsm:
       return TECHNIQUE_VSM;
     case Technique::Esm:

@@ -19,7 +19,7 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
   const bool shadowed = t != Technique::None;
   const bool moments = t == Technique::Msm || t == Technique::Msm16;
   // The source size matters where a technique or --soft makes a penumbra.
-  const bool sized_source = t == Technique::Pcss || shadow.soft;
+  const bool sized_source = t == Technique::Pcss || t == Technique::Backprojection || shadow.soft;
   const bool positional = has_light(lights, LightType::Spot) || has_light(lights, LightType::Point);
   const bool directional = has_light(lights, LightType::Directional);
 
@@ -29,7 +29,8 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
   }
   if (name == "filter" || name == "blur" || name == "filter-slope-bias") return is_filterable(t);
   if (name == "pcf-width" || name == "pcf-samples") return t == Technique::Pcf;
-  if (name == "pcss-blocker-samples" || name == "pcss-filter-samples") return t == Technique::Pcss;
+  if (name == "pcss-blocker-samples" || name == "pcss-filter-samples")
+    return t == Technique::Pcss || t == Technique::Backprojection;
   if (name == "esm-c") return t == Technique::Esm;
   const bool evsm = t == Technique::Evsm2 || t == Technique::Evsm4;
   if (name == "evsm-positive") return evsm;

@@ -155,6 +155,27 @@ TEST(Cli, BenchReportsTheFusedFilterAndItsFallback) {
   EXPECT_EQ(sweep.at("runs").at(1).at("representation_format").get<std::string>(), "RGBA32F");
 }
 
+// bench --accumulate N times one sub-frame per frame (its shadow maps from
+// another point of the source, and the sum's accumulate pass) and reports
+// what the N sub-frames of a converged image cost.
+TEST(Cli, BenchTimesAccumulatedSubframes) {
+  const std::string json_path = out_path("bench-accumulate.json");
+  Result r =
+      run("bench --frames 2 --warmup 0 --technique hard --accumulate 8 --width 32 --height 24 "
+          "--shadow-map-size 64 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("a converged image (8 sub-frames)"), std::string::npos) << r.out;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const auto& run = j.at("runs").at(0);
+  EXPECT_EQ(run.at("accumulate").get<int>(), 8);
+  EXPECT_TRUE(run.at("passes").contains("accumulate"));
+  EXPECT_TRUE(run.at("passes").contains("shadow depth"));
+  EXPECT_DOUBLE_EQ(run.at("converged_image_wall_ms").get<double>(),
+                   8.0 * run.at("total").at("wall_median_ms").get<double>());
+}
+
 // Each pass over the shadow maps reports its bytes per texel (as its
 // formats give them: msm's resolve writes RGBA32F, a W = 2 Gaussian pass
 // over a 256^2 map reads 16 (1 + 4 / 64) bytes), the bandwidth it

@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
+#include <sstream>
 #include <string>
 
 #include "io/image.hpp"
@@ -33,6 +35,57 @@ struct Figure {
   int width, height;
   std::string command;
 };
+
+// Section 7: every technique's error against the traced reference of each
+// of the foliage scene's two lights, and a sentence that says which is
+// closest, from the same numbers.
+// (Checked within WritesAPageWhoseImagesExist: each test of this suite
+// runs in its own process under CTest, and so makes its own report.)
+void expect_foliage_section(const std::string& html, const fs::path& dir) {
+  const std::size_t begin = html.find("7. Foliage: alpha-tested casters");
+  ASSERT_NE(begin, std::string::npos);
+  const std::size_t end = html.find("<h2>", begin);
+  const std::string section = html.substr(begin, end - begin);
+  EXPECT_NE(section.find("<th>RMSE directional</th><th>leaking directional</th>"
+                         "<th>RMSE spot</th><th>leaking spot</th>"),
+            std::string::npos)
+      << section;
+  // Each technique's row: RMSE and leaking for each light, all measured.
+  const std::regex row_re(
+      R"re(<tr><td>(\w+)</td><td>(0\.\d{4})</td><td>(\d+\.\d\d) %</td><td>(0\.\d{4})</td><td>(\d+\.\d\d) %</td></tr>)re");
+  std::map<std::string, std::pair<double, double>> rmse;  // technique -> (sun, spot)
+  for (std::sregex_iterator it(section.begin(), section.end(), row_re), stop; it != stop; ++it) {
+    rmse[(*it)[1].str()] = {std::stod((*it)[2].str()), std::stod((*it)[4].str())};
+  }
+  for (const char* technique : {"hard", "pcf", "pcss", "vsm", "msm"}) {
+    ASSERT_EQ(rmse.count(technique), 1u) << technique << " has no row:\n" << section;
+    // A shadow factor in [0, 1] over many pixels: an error, not 0 or garbage.
+    EXPECT_GT(rmse[technique].first, 0.0) << technique;
+    EXPECT_LT(rmse[technique].first, 0.5) << technique;
+    EXPECT_GT(rmse[technique].second, 0.0) << technique;
+    EXPECT_LT(rmse[technique].second, 0.5) << technique;
+  }
+  // The sentence names the technique of the smallest RMSE, with that RMSE.
+  for (const bool sun : {true, false}) {
+    const auto best = std::min_element(rmse.begin(), rmse.end(), [&](auto& a, auto& b) {
+      return sun ? a.second.first < b.second.first : a.second.second < b.second.second;
+    });
+    std::ostringstream expected;
+    expected.setf(std::ios::fixed);
+    expected.precision(4);
+    expected << "Under the " << (sun ? "directional" : "spot") << " light, " << best->first
+             << " is closest to the traced reference (RMSE "
+             << (sun ? best->second.first : best->second.second) << ").";
+    EXPECT_NE(section.find(expected.str()), std::string::npos) << expected.str() << "\n" << section;
+  }
+  for (const char* image : {"foliage-spot-traced.png", "foliage-directional-traced.png",
+                            "foliage-spot-error-vsm.png", "foliage-directional-error-pcss.png"}) {
+    EXPECT_NE(section.find(std::string("<img src=\"") + image + "\""), std::string::npos) << image;
+  }
+  // The scene's files are in the report's folder, for the commands.
+  EXPECT_TRUE(fs::exists(dir / "foliage" / "foliage.gltf"));
+  EXPECT_TRUE(fs::exists(dir / "foliage" / "leaves.png"));
+}
 
 class Report : public ::testing::Test {
  protected:
@@ -76,10 +129,11 @@ TEST_F(Report, WritesAPageWhoseImagesExist) {
   for (const char* section :
        {"1. The techniques", "2. Spot, point and directional lights",
         "3. Shadow maps before and after", "4. From anti-aliased to soft", "5. The ESM exponent c",
-        "6. Errors against", "7. GPU time per pass"}) {
+        "6. Errors against", "7. Foliage: alpha-tested casters", "8. GPU time per pass"}) {
     EXPECT_NE(html_.find(section), std::string::npos) << section;
   }
   EXPECT_EQ(html_.find("<div class=\"failed\">"), std::string::npos) << "an item failed";
+  expect_foliage_section(html_, dir_);
   ASSERT_GE(figures_.size(), 30u);
   ASSERT_GE(images_.size(), figures_.size() + 7) << "the error images are missing";
   for (const Figure& f : images_) {
@@ -96,9 +150,10 @@ TEST_F(Report, WritesAPageWhoseImagesExist) {
 TEST_F(Report, TheCommandUnderAnImageRemakesIt) {
   ASSERT_EQ(status_, 0);
   // Spot-check a filtered technique's image under the scene's lights and
-  // under a point light alone (--light): its command, run in the report's
-  // folder, writing to another name.
-  for (const std::string name : {"technique-msm.png", "light-point-msm.png"}) {
+  // under a point light alone (--light), and the foliage scene (its glTF
+  // written next to the page): its command, run in the report's folder,
+  // writing to another name.
+  for (const std::string name : {"technique-msm.png", "light-point-msm.png", "foliage.png"}) {
     const auto chosen = std::find_if(figures_.begin(), figures_.end(),
                                      [&](const Figure& f) { return f.src == name; });
     ASSERT_NE(chosen, figures_.end()) << name;

@@ -67,7 +67,8 @@ TEST_P(ContactTest, GroundAtTheFootOfALitFaceIsNotDarkened) {
     const SurfacePoints surfaces = renderer.read_surfaces();
     // msm --soft: the moments over the SAT, with the depth map's
     // cone-tested search deciding that nothing blocks.
-    for (const Technique technique : {Technique::Pcf, Technique::Pcss, Technique::Msm}) {
+    for (const Technique technique :
+         {Technique::Pcf, Technique::Pcss, Technique::Backprojection, Technique::Msm}) {
       ShadowSettings shadow = base;
       shadow.technique = technique;
       if (technique == Technique::Msm) {

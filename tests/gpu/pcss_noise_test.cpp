@@ -4,6 +4,8 @@
 // what it removes (sampling noise, and pixel-sized error at silhouettes and
 // terminators), and the latter alone inside smooth penumbrae: the grain.
 #include <algorithm>
+#include <initializer_list>
+#include <vector>
 #include <cmath>
 #include <cstdio>
 
@@ -71,18 +73,29 @@ ErrorParts error_parts(const Image& technique, const Image& reference) {
           std::sqrt(grain / std::max(smooth_count, 1L)), double(smooth_count) / count};
 }
 
-ErrorParts pcss_error(Renderer& renderer, float light_size) {
+// The techniques' errors against one traced reference of the key spot
+// light, at 320x180.
+std::vector<ErrorParts> soft_errors(Renderer& renderer, float light_size,
+                                    std::initializer_list<Technique> techniques) {
   RenderSettings rs;
   rs.width = 320;
   rs.height = 180;
   rs.view = View::Shadow;
   rs.light_index = 0;  // the key spot light
   ShadowSettings s;
-  s.technique = Technique::Pcss;
   s.light_size = light_size;
   const TracedReference reference = traced_reference(renderer, rs, s, 1024, "");
-  renderer.render(rs, s);
-  return error_parts(renderer.read_view(), reference.image);
+  std::vector<ErrorParts> errors;
+  for (Technique t : techniques) {
+    s.technique = t;
+    renderer.render(rs, s);
+    errors.push_back(error_parts(renderer.read_view(), reference.image));
+  }
+  return errors;
+}
+
+ErrorParts pcss_error(Renderer& renderer, float light_size) {
+  return soft_errors(renderer, light_size, {Technique::Pcss}).front();
 }
 
 // Default settings, both source sizes. Inside wide penumbrae (the 1.5
@@ -102,6 +115,22 @@ TEST_F(GpuTest, PcssIsQuietAgainstTheTracedReference) {
       ASSERT_GT(e.penumbra_fraction, 0.01) << "no wide penumbra in view";
       EXPECT_LT(e.grain, 0.035);
     }
+  }
+}
+
+// Backprojection (shaders/shadow/backprojection.glsl) models each blocker
+// where the map puts it instead of one mean blocker depth per pixel: on the
+// default scene its error is at most about half of PCSS's at both source
+// sizes (320x180: 0.0074 vs 0.0156 at 0.5, 0.0145 vs 0.0381 at 1.5).
+TEST_F(GpuTest, BackprojectionErrsAboutHalfAsMuchAsPcss) {
+  Renderer renderer(*builtin_scene("default"));
+  for (float size : {0.5f, 1.5f}) {
+    const std::vector<ErrorParts> e =
+        soft_errors(renderer, size, {Technique::Pcss, Technique::Backprojection});
+    std::printf("source %.1f: RMSE pcss %.4f, backprojection %.4f (after a 3x3 box %.4f)\n", size,
+                e[0].rmse, e[1].rmse, e[1].smooth);
+    EXPECT_GT(e[1].rmse, 0.0) << "nothing compared";
+    EXPECT_LT(e[1].rmse, 0.55 * e[0].rmse) << size;
   }
 }
 

@@ -141,7 +141,8 @@ TEST(ModelShape, SceneFileErrorsNameTheKeyAndTheModel) {
   const Case cases[] = {
       {R"({"shape": "model"})", "/objects/0/file: missing"},
       {R"({"shape": "model", "file": "nothere.obj"})", "/objects/0/file: "},
-      {R"({"shape": "model", "file": "bad.obj"})", "bad.obj: cannot read the model"},
+      {R"({"shape": "model", "file": "bad.obj"})",
+       "bad.obj: line 4: position index 99 is out of range"},
       {R"({"shape": "model", "file": 3})", "/objects/0/file: expected a string"},
       {R"({"shape": "box", "scale": 0})", "/objects/0/scale: must be between"},
       {R"({"shape": "box", "scale": [1, -1, 1]})", "/objects/0/scale/1: must be between"},

@@ -259,6 +259,28 @@ TEST(ShadowRayTracer, LightBelowTheTrianglesPlaneCountsInNeitherSum) {
   EXPECT_EQ(hidden.pixel(0, 0)[3], 0.0f);
 }
 
+// Shadow rays start on the smooth surface the vertex normals describe
+// (Hanika 2021): under a coarse cap whose corner normals lean outwards the
+// smooth surface lies well above the flat triangles' centre, so a small
+// occluder between the two does not shadow the point; on the same quad
+// with flat normals, the origin stays on the triangles and it does.
+TEST(ShadowRayTracer, RaysStartOnTheSmoothSurfaceOfTheVertexNormals) {
+  for (const bool smooth : {true, false}) {
+    TriangleMesh mesh;
+    add_quad(mesh, -1.0f, 1.0f, -1.0f, 1.0f, 0.0f);
+    if (smooth) {
+      for (Vertex& v : mesh.vertices) {
+        v.normal = glm::normalize(glm::vec3(0.5f * v.position.x, 1.0f, 0.5f * v.position.z));
+      }
+    }
+    add_quad(mesh, -0.1f, 0.1f, -0.1f, 0.1f, 0.1f);  // the occluder, facing up
+    const ShadowRayTracer tracer(mesh);
+    SurfacePoints s = ground_points({{0.0f, 0.0f, 0.0f}});
+    const float lit = tracer.trace(s, spot_down(3.0f, 0.0f), 1).pixel(0, 0)[0];
+    EXPECT_EQ(lit, smooth ? 1.0f : 0.0f) << (smooth ? "smooth" : "flat");
+  }
+}
+
 // A square source emits from its front only: a point above a downward
 // spot light, facing it, gets no light (0 and not judged, as a surface
 // facing away).
