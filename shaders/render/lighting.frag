@@ -5,7 +5,9 @@
 // shadow * (Lambert diffuse + normalized Blinn-Phong specular).
 // Compile-time defines: SHADOW_TECHNIQUE (TECHNIQUE_*), SHADOW_FILTER
 // (FILTER_*), MSM_QUANTIZED (0/1: moments in the quantization basis),
-// SOFT_SHADOWS (0/1: penumbra-sized filters from the summed-area table).
+// SOFT_SHADOWS (0/1: penumbra-sized filters from the summed-area table),
+// SHADOW_MIPS (0/1: the filtered map has a mip chain, read over the
+// pixel's footprint).
 #include "../common/uniforms.glsl"
 #include "../shadow/lookup.glsl"
 #include "../shadow/view_select.glsl"
@@ -38,7 +40,8 @@ layout(binding = UNIT_SHADOW_COMPARE) uniform sampler2DArrayShadow shadow_compar
 #if SHADOW_FILTER == FILTER_SAT
 layout(binding = UNIT_SHADOW_FILTERED) uniform usampler2DArray shadow_sat;
 #else
-// The technique's representation, filtered or not; sampled bilinearly.
+// The technique's representation, filtered or not; sampled bilinearly, or
+// trilinearly and anisotropically with SHADOW_MIPS.
 layout(binding = UNIT_SHADOW_FILTERED) uniform sampler2DArray shadow_filtered;
 #endif
 
@@ -51,15 +54,65 @@ vec3 world_position(ivec2 pixel, float depth) {
   return p.xyz / p.w;
 }
 
+// What one pixel covers of the receiver: the world offsets from the
+// pixel's point to where the camera rays through the next pixel in x and
+// in y meet the receiver's tangent plane. A mipmapped lookup projects them
+// into the shadow map as its uv derivatives. In a deferred pass the
+// screen-space derivatives of the reconstructed position (dFdx) would mix
+// the 2x2 quad's surfaces at every silhouette and pick the coarsest mip
+// there (a halo), and the lookups sit in non-uniform control flow (per
+// light, per view) where implicit derivatives are undefined; the plane's
+// are exact for the pixel's own surface and defined everywhere.
+struct PixelFootprint {
+  vec3 dx, dy;
+};
+
+// The offset towards the ray through pixel-centre NDC `ndc`, on the plane.
+// Where that ray runs (nearly) along the plane or meets it behind the
+// camera, and to bound grazing footprints, at most 256 times the offset
+// to the ray at the point's own camera distance (beyond that the lookup
+// is at the map's coarsest levels anyway).
+vec3 footprint_offset(vec2 ndc, vec3 world, vec3 n) {
+  vec4 near_h = frame.inverse_view_projection * vec4(ndc, -1.0, 1.0);
+  vec4 far_h = frame.inverse_view_projection * vec4(ndc, 1.0, 1.0);
+  vec3 origin = near_h.xyz / near_h.w;
+  vec3 direction = far_h.xyz / far_h.w - origin;
+  // The ray's point at the camera depth of `world` (depth is affine along it).
+  float d0 = -(frame.view * vec4(origin, 1.0)).z;
+  float d1 = -(frame.view * vec4(origin + direction, 1.0)).z;
+  float dw = -(frame.view * vec4(world, 1.0)).z;
+  vec3 level = origin + direction * ((dw - d0) / (d1 - d0)) - world;
+  float limit = 256.0 * length(level);
+  float denominator = dot(n, direction);
+  float t = dot(n, world - origin) / denominator;
+  vec3 offset = origin + t * direction - world;
+  float len = length(offset);
+  bool hit = abs(denominator) > 1e-12 && t > 0.0 && !isinf(len) && !isnan(len);
+  if (hit && len <= limit) return offset;
+  vec3 along = hit && len > 0.0 ? offset / len : level / max(length(level), 1e-30);
+  return along * limit;
+}
+
+PixelFootprint pixel_footprint(ivec2 pixel, vec3 world, vec3 n) {
+  vec2 ndc = (vec2(pixel) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
+  vec2 step = 2.0 * frame.viewport.zw;
+  return PixelFootprint(footprint_offset(ndc + vec2(step.x, 0.0), world, n),
+                        footprint_offset(ndc + vec2(0.0, step.y), world, n));
+}
+
 #if SHADOW_TECHNIQUE >= TECHNIQUE_VSM
-// View v's filtered representation at the lookup point.
-vec4 filtered_map(int v, vec2 uv) {
+// View v's filtered representation at the lookup point; with SHADOW_MIPS
+// averaged over the pixel's footprint, whose sides in uv are duv_dx and
+// duv_dy.
+vec4 filtered_map(int v, vec2 uv, vec2 duv_dx, vec2 duv_dy) {
 #if SHADOW_FILTER == FILTER_SAT
   // The (2W + 1)^2 box, centred on the lookup point itself rather than on
   // the texel it falls in: half-width W + 1/2 texels.
   return sat_rectangle_average(shadow_sat, v, uv * vec2(textureSize(shadow_sat, 0).xy),
                                vec2(float(shadow_params.blur_radius) + 0.5),
                                shadow_params.sat_scale);
+#elif SHADOW_MIPS
+  return textureGrad(shadow_filtered, vec3(uv, float(v)), duv_dx, duv_dy);
 #else
   return texture(shadow_filtered, vec3(uv, float(v)));
 #endif
@@ -374,13 +427,26 @@ float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderC
 // to shadow view v. `rotation` is the pixel's (cos, sin) rotation of the
 // sample set.
 float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool reference,
-                         vec2 rotation) {
+                         vec2 rotation, PixelFootprint footprint) {
   GpuShadowView view = shadow_views[v];
   ShadowLookup s = shadow_lookup(view, world, normal, shadow_params.normal_offset);
   if (!s.inside) return 1.0;
-  float bias = shadow_bias(shadow_params, s, normal, direction_to_light(light, world),
-                           SHADOW_TECHNIQUE >= TECHNIQUE_VSM && !reference
-                               ? shadow_params.blur_radius : 0);
+  float filter_radius =
+      SHADOW_TECHNIQUE >= TECHNIQUE_VSM && !reference ? float(shadow_params.blur_radius) : 0.0;
+#if SHADOW_MIPS
+  // The pixel's footprint in the map. A lookup over it averages the
+  // receiver's own sloped plane over its long side as well: half of it
+  // (beyond one texel) adds to the filter's radius in the slope bias.
+  vec2 duv_dx = shadow_map_uv(view, s.position + footprint.dx) - s.uv;
+  vec2 duv_dy = shadow_map_uv(view, s.position + footprint.dy) - s.uv;
+  vec2 map_size = vec2(textureSize(shadow_filtered, 0).xy);
+  float footprint_texels = max(length(duv_dx * map_size), length(duv_dy * map_size));
+  if (!reference) filter_radius += 0.5 * max(footprint_texels - 1.0, 0.0);
+#else
+  vec2 duv_dx = vec2(0.0), duv_dy = vec2(0.0);
+#endif
+  float bias =
+      shadow_bias(shadow_params, s, normal, direction_to_light(light, world), filter_radius);
   if (reference) {
     return filtered_hard_reference(v, s.uv, ReceiverPlane(s.position, normal, s.depth, bias));
   }
@@ -426,7 +492,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
   float lit = soft_moment_shadow(v, s, z, light, normal, rotation);
 #else
-  float lit = filtered_lit_fraction(filtered_map(v, s.uv), z, s.texel_depth);
+  float lit = filtered_lit_fraction(filtered_map(v, s.uv, duv_dx, duv_dy), z, s.texel_depth);
 #endif
 #if SHADOW_TECHNIQUE == TECHNIQUE_ESM
   return lit;
@@ -446,15 +512,18 @@ float camera_depth(vec3 world) {
 // Fraction of light i's light that reaches the point (1 = lit): from the
 // shadow view the point falls in, blended with the next cascade near the
 // end of a directional light's cascade.
-float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotation) {
+float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotation,
+                    PixelFootprint footprint) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_NONE
   return 1.0;
 #else
   GpuLight light = lights[i];
   ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
-  float lit = view_shadow_factor(selected.view, light, world, normal, reference, rotation);
+  float lit =
+      view_shadow_factor(selected.view, light, world, normal, reference, rotation, footprint);
   if (selected.blend > 0.0) {
-    float next = view_shadow_factor(selected.next, light, world, normal, reference, rotation);
+    float next =
+        view_shadow_factor(selected.next, light, world, normal, reference, rotation, footprint);
     lit = mix(lit, next, selected.blend);
   }
   return lit;
@@ -525,6 +594,11 @@ void main() {
   vec3 world = world_position(pixel, texelFetch(gbuffer_depth, pixel, 0).r);
   vec3 albedo = texelFetch(gbuffer_albedo, pixel, 0).rgb;
   float angle = 6.28318530718 * interleaved_gradient_noise(vec2(pixel));
+#if SHADOW_MIPS
+  PixelFootprint footprint = pixel_footprint(pixel, world, n);
+#else
+  PixelFootprint footprint = PixelFootprint(vec3(0.0), vec3(0.0));
+#endif
   vec2 rotation = vec2(cos(angle), sin(angle));
 
   if (view == VIEW_NORMALS) {
@@ -564,7 +638,7 @@ void main() {
     // their horizon, and the traced reference judges them by the part of
     // the source above it.
     int i = frame.options.z;
-    float lit = shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE, rotation);
+    float lit = shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE, rotation, footprint);
     out_color = shadow_params.accumulate_weighted != 0
                     ? vec4(lit, vec2(lit, 1.0) * accumulate_source_weight(lights[i], world, n), 1.0)
                     : vec4(vec3(lit), 1.0);
@@ -584,7 +658,8 @@ void main() {
     // Normalized Blinn-Phong: (s + 8) / 8 keeps the highlight's energy
     // constant as the exponent changes (Akenine-Moller et al., RTR 4th ed.).
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
-    color += shadow_factor(i, world, n, false, rotation) * irradiance * n_dot_l * brdf;
+    color +=
+        shadow_factor(i, world, n, false, rotation, footprint) * irradiance * n_dot_l * brdf;
   }
   out_color = vec4(color, 1.0);
 }

@@ -74,12 +74,19 @@ ShadowLookup shadow_lookup(GpuShadowView view, vec3 world, vec3 normal, float no
 // +-W texels of that slope; the filtered techniques compare against the
 // whole spread, so their slope term grows by filter_slope_bias per texel
 // of radius (W = 0 for the techniques that test single texels).
+// (A mipmapped lookup filters wider still: its radius is then a fraction.)
 float shadow_bias(GpuShadow params, ShadowLookup s, vec3 normal, vec3 to_light,
-                  int filter_radius) {
+                  float filter_radius) {
   float cos_theta = clamp(abs(dot(normal, to_light)), 1e-4, 1.0);
   float tan_theta = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, params.max_slope);
-  float slope_texels = params.slope_bias + params.filter_slope_bias * float(filter_radius);
+  float slope_texels = params.slope_bias + params.filter_slope_bias * filter_radius;
   return (params.constant_bias + slope_texels * tan_theta) * s.texel_depth;
+}
+
+// Shadow-map coordinates of a world point in a view (the uv of shadow_lookup()).
+vec2 shadow_map_uv(GpuShadowView view, vec3 world) {
+  vec4 clip = view.view_projection * vec4(world, 1.0);
+  return clip.xy / clip.w * 0.5 + 0.5;
 }
 
 // The world points where the light's ray through shadow-map point uv

@@ -63,6 +63,7 @@ std::string describe(const ShadowSettings& s) {
         << (s.soft ? " soft" : "");
     // Which path filtered: --fused on falls back past the fused pass's reach.
     if (filter_define(s) == FILTER_GAUSSIAN) out << (uses_fused_filter(s) ? " fused" : " two-pass");
+    if (uses_shadow_mips(s)) out << " mips";
     out << " (" << format_name(representation_format(s.technique)) << ")";
   }
   out << ", map " << s.map_size;
@@ -143,6 +144,7 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
   j["soft"] = s.soft;
   j["shadow_map_size"] = s.map_size;
   j["fused"] = is_filterable(s.technique) && uses_fused_filter(s);
+  j["shadow_mips"] = uses_shadow_mips(s);
   if (is_filterable(s.technique)) {
     j["representation_format"] = format_name(representation_format(s.technique));
   }

@@ -152,6 +152,18 @@ struct ShadowSettings {
   // compute pass (Peters et al., HPG 2017) instead of a resolve and two
   // blur passes. Same maps up to rounding; off measures the two-pass path.
   bool fused = true;
+  // Mipmapped filtered maps (vsm, esm, evsm2/4, msm, msm16 with the
+  // Gaussian filter or none): after the filter, a 2x2 box chain down to
+  // 1x1, read with trilinear and anisotropic filtering over the pixel's
+  // footprint on the receiver, so distant receivers average the map over
+  // what the pixel covers instead of aliasing (MJP's EnableShadowMips).
+  bool shadow_mips = false;
+  // --shadow-mips: the largest ratio of a pixel's footprint's long side to
+  // its short side that the lookup follows with anisotropic filtering
+  // (clamped to the device's GL_MAX_TEXTURE_MAX_ANISOTROPY); 1: trilinear
+  // only, the footprint's long side choosing the level. CPU rasterizers
+  // (llvmpipe) filter trilinearly whatever this says (LightingPass).
+  int shadow_anisotropy = 16;
   // ESM exponent c (Annen et al. 2008); the map stores exp(c (z - 1)).
   float esm_c = 60.0f;
   // EVSM exponents c+ and c- (Lauritzen & McCool 2008) of the warps
@@ -388,7 +400,7 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 17> kShadowFloa
      0.5f, &ShadowSettings::cascade_blend, OptionGroup::Lights},
 }};
 
-inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 7> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowSettings::map_size, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
@@ -404,6 +416,10 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 6> kShadowIntPara
      kMaxShadowSamples, &ShadowSettings::pcss_filter_samples, OptionGroup::Technique},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
      &ShadowSettings::cascades, OptionGroup::Lights},
+    {"shadow-anisotropy",
+     "--shadow-mips: most anisotropic filtering along the pixel's footprint (up to the device's "
+     "limit; llvmpipe: 1); 1: trilinear only",
+     1, 16, &ShadowSettings::shadow_anisotropy, OptionGroup::Filter},
 }};
 
 inline constexpr int kMaxAccumulate = 4096;
@@ -479,7 +495,7 @@ struct SwitchParam {
   OptionGroup group = OptionGroup::Unset;
 };
 
-inline constexpr std::array<SwitchParam<ShadowSettings>, 2> kShadowSwitchParams{{
+inline constexpr std::array<SwitchParam<ShadowSettings>, 3> kShadowSwitchParams{{
     {"guard-band",
      "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
      "filters near a face's edge read their own face (no seams)",
@@ -489,6 +505,11 @@ inline constexpr std::array<SwitchParam<ShadowSettings>, 2> kShadowSwitchParams{
      "compute pass; off (or a wider blur) runs the resolve, then the horizontal and vertical "
      "blur passes",
      &ShadowSettings::fused, OptionGroup::Filter},
+    {"shadow-mips",
+     "filterable techniques with --filter gaussian (or --blur 0): mip chain of the filtered map, "
+     "read trilinearly and anisotropically over the pixel's footprint (distant receivers do not "
+     "alias)",
+     &ShadowSettings::shadow_mips, OptionGroup::Filter},
 }};
 
 inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{

@@ -84,7 +84,8 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
     it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;
   }
   gl::ensure_texture_array(output_, format, depth_maps.width(), depth_maps.height(),
-                           depth_maps.layers(), "fused filtered shadow maps");
+                           depth_maps.layers(), "fused filtered shadow maps",
+                           filtered_map_levels(settings, depth_maps.width(), depth_maps.height()));
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve+filter (fused)");
   it->second.use();

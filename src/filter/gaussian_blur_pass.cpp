@@ -16,10 +16,10 @@ GLuint groups(int size, int tile) {
   return static_cast<GLuint>((size + tile - 1) / tile);
 }
 
-// `texture` as a 2D array shaped like `like`.
-void ensure_like(gl::Texture& texture, const gl::Texture& like, const char* label) {
+// `texture` as a 2D array shaped like `like`, with `levels` mip levels.
+void ensure_like(gl::Texture& texture, const gl::Texture& like, const char* label, int levels = 1) {
   gl::ensure_texture_array(texture, like.format(), like.width(), like.height(), like.layers(),
-                           label);
+                           label, levels);
 }
 
 }  // namespace
@@ -67,14 +67,15 @@ TexelTraffic GaussianBlurPass::texel_traffic(GLenum format, int radius, int axis
   return {bytes * texels_read / (along * across), bytes};
 }
 
-void GaussianBlurPass::execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler) {
+void GaussianBlurPass::execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler,
+                               int levels) {
   if (radius != weights_radius_) {
     std::vector<float> weights = gaussian_weights(radius);
     weights_.update(weights.data(), weights.size() * sizeof(float));
     weights_radius_ = radius;
   }
   ensure_like(intermediate_, source, "blur intermediate");
-  ensure_like(output_, source, "blurred shadow maps");
+  ensure_like(output_, source, "blurred shadow maps", levels);
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "gaussian blur");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, weights_.id());

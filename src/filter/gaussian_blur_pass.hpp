@@ -19,7 +19,10 @@ class GaussianBlurPass {
 
   // Blurs every layer of the 2D array `source` with 2 radius + 1 taps per
   // direction into output() (same size, layers and format). radius >= 1.
-  void execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler = nullptr);
+  // `levels`: mip levels of output() (MipChainPass fills levels 1..; this
+  // pass writes level 0).
+  void execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler = nullptr,
+               int levels = 1);
 
   // Valid after execute().
   [[nodiscard]] const gl::Texture& output() const { return output_; }

@@ -22,6 +22,7 @@ enum class GpuPass {
   FilterVertical,
   SatRows,
   SatColumns,
+  Mips,  // the filtered map's mip chain (MipChainPass, --shadow-mips)
   GBuffer,
   AmbientOcclusion,
   Lighting,
@@ -31,10 +32,11 @@ enum class GpuPass {
 };
 
 inline constexpr std::array<std::string_view, static_cast<std::size_t>(GpuPass::Count)>
-    kGpuPassNames{"shadow depth", "resolve",    "resolve+filter (fused)",
-                  "filter H",     "filter V",   "SAT rows",
-                  "SAT columns",  "G-buffer",   "SSAO",
-                  "lighting",     "accumulate", "copy (yardstick)"};
+    kGpuPassNames{"shadow depth", "resolve",  "resolve+filter (fused)",
+                  "filter H",     "filter V", "SAT rows",
+                  "SAT columns",  "mips",     "G-buffer",
+                  "SSAO",         "lighting", "accumulate",
+                  "copy (yardstick)"};
 
 // Milliseconds per pass (0 for passes that did not run), and the frame's
 // total from its first timestamp to its last. With a serializing profiler

@@ -1,5 +1,6 @@
 #include "gl/resources.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -30,9 +31,9 @@ void Buffer::update(const void* data, std::size_t size, std::size_t offset) {
 }
 
 bool ensure_texture_array(Texture& texture, GLenum format, int width, int height, int layers,
-                          std::string_view label) {
+                          std::string_view label, int levels) {
   if (texture && texture.width() == width && texture.height() == height &&
-      texture.layers() == layers && texture.format() == format) {
+      texture.layers() == layers && texture.format() == format && texture.levels() == levels) {
     return false;
   }
   texture = Texture(TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
@@ -40,12 +41,17 @@ bool ensure_texture_array(Texture& texture, GLenum format, int width, int height
                                 .width = width,
                                 .height = height,
                                 .layers = layers,
+                                .levels = levels,
                                 .label = label});
   return true;
 }
 
 Texture::Texture(const TextureInfo& info)
-    : width_(info.width), height_(info.height), layers_(info.layers), format_(info.format) {
+    : width_(info.width),
+      height_(info.height),
+      layers_(info.layers),
+      levels_(info.levels),
+      format_(info.format) {
   GLuint id = 0;
   glCreateTextures(info.target, 1, &id);
   handle_ = Handle<detail::delete_texture>(id);
@@ -134,6 +140,15 @@ Sampler::Sampler(const SamplerInfo& info) {
   if (info.compare_mode != GL_NONE) {
     glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, static_cast<GLint>(info.compare_mode));
     glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  }
+  // Anisotropic filtering is core in OpenGL 4.6 and an extension (ARB or
+  // EXT, the same enums) before; where none has it, sampling stays isotropic.
+  if (info.max_anisotropy > 1.0f &&
+      (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
+       epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))) {
+    GLfloat largest = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &largest);
+    glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY, std::min(info.max_anisotropy, largest));
   }
   set_label(GL_SAMPLER, id, info.label);
 }

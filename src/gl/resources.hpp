@@ -72,6 +72,7 @@ class Texture {
   [[nodiscard]] int width() const { return width_; }
   [[nodiscard]] int height() const { return height_; }
   [[nodiscard]] int layers() const { return layers_; }
+  [[nodiscard]] int levels() const { return levels_; }
   [[nodiscard]] GLenum format() const { return format_; }
   [[nodiscard]] explicit operator bool() const { return static_cast<bool>(handle_); }
 
@@ -80,14 +81,16 @@ class Texture {
   int width_ = 0;
   int height_ = 0;
   int layers_ = 0;
+  int levels_ = 0;
   GLenum format_ = 0;
 };
 
-// Makes `texture` a 2D array texture of this format, size and layer count,
-// reallocating it only when it is not one already, so passes keep their
-// textures from frame to frame. True when it was (re)allocated.
+// Makes `texture` a 2D array texture of this format, size, layer count and
+// number of mip levels, reallocating it only when it is not one already,
+// so passes keep their textures from frame to frame. True when it was
+// (re)allocated.
 bool ensure_texture_array(Texture& texture, GLenum format, int width, int height, int layers,
-                          std::string_view label);
+                          std::string_view label, int levels = 1);
 
 class Framebuffer {
  public:
@@ -114,6 +117,8 @@ struct SamplerInfo {
   GLenum mag_filter = GL_LINEAR;
   GLenum wrap = GL_CLAMP_TO_EDGE;
   GLenum compare_mode = GL_NONE;  // GL_COMPARE_REF_TO_TEXTURE for sampler2DShadow
+  // GL_TEXTURE_MAX_ANISOTROPY, clamped to the device's maximum; 1: off.
+  float max_anisotropy = 1.0f;
   std::string_view label;
 };
 

@@ -31,11 +31,14 @@ class LightingPass {
  private:
   const gl::Program& program_for(const ShadowSettings& settings);
 
-  // One per (technique, filter, soft) combination, compiled on first use.
-  std::map<std::tuple<int, int, bool>, gl::Program> programs_;
+  // One per (technique, filter, soft, mips) combination, compiled on first use.
+  std::map<std::tuple<int, int, bool, bool>, gl::Program> programs_;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Sampler bilinear_;
+  // --shadow-mips: trilinear and anisotropic, one per --shadow-anisotropy.
+  std::map<int, gl::Sampler> trilinear_;
+  bool cpu_rasterizer_ = false;  // llvmpipe and the like (see execute())
   gl::Sampler compare_;
   gl::Texture output_;
   gl::Framebuffer framebuffer_;

@@ -4,6 +4,7 @@
 
 #include "filter/fused_filter_pass.hpp"
 #include "filter/gaussian_blur_pass.hpp"
+#include "filter/mip_chain_pass.hpp"
 #include "filter/summed_area_table_pass.hpp"
 #include "gl/context.hpp"
 #include "render/accumulation.hpp"
@@ -52,6 +53,10 @@ std::array<std::optional<TexelTraffic>, kPassCount> shadow_map_traffic(const Sha
     } else if (filter == FILTER_SAT) {
       set(GpuPass::SatRows, SummedAreaTablePass::row_traffic(maps));
       set(GpuPass::SatColumns, SummedAreaTablePass::column_traffic(maps));
+    }
+    if (uses_shadow_mips(shadow)) {
+      set(GpuPass::Mips, MipChainPass::texel_traffic(maps, width, height,
+                                                     filtered_map_levels(shadow, width, height)));
     }
   }
   set(GpuPass::BandwidthCopy, TextureCopyPass::texel_traffic(maps));
@@ -131,7 +136,7 @@ CopyRatios copy_ratios(const PassTimes& run, bool timer) {
   const double copy_ms = spread_of(timer ? copy.timer_ms : copy.wall_ms).median;
   if (copy_ms <= 0.0) return r;
   for (GpuPass p : {GpuPass::FusedFilter, GpuPass::FilterHorizontal, GpuPass::FilterVertical,
-                    GpuPass::SatRows, GpuPass::SatColumns}) {
+                    GpuPass::SatRows, GpuPass::SatColumns, GpuPass::Mips}) {
     const auto i = static_cast<std::size_t>(p);
     if (!run.ran[i]) continue;
     const Samples& s = run.passes[i];

@@ -29,7 +29,8 @@ struct Samples {
 
 // Bytes per texel of each pass a frame with these settings runs over a
 // width x height shadow-map array, from the passes' own formats, tiles and
-// aprons: the resolve, the filter's passes and the copy yardstick;
+// aprons: the resolve, the filter's passes, the mip chain and the copy
+// yardstick;
 // nullopt for the passes that are not a pass over the map's texels (the
 // shadow depth pass rasterizes; the camera's passes).
 // `shared_bytes` is the device's GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, which

@@ -253,14 +253,14 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     shadow_pass_.execute([this](int view) { shadow_casters_.draw(gpu_scene_, view); }, view_count_,
                          shadow.map_size);
   }
-  GLuint filtered = 0;
+  const gl::Texture* filtered = nullptr;
   const bool fused = is_filterable(shadow.technique) && uses_fused_filter(shadow);
   if (fused) {
     {
       gl::GpuPassScope timed(profiler, gl::GpuPass::FusedFilter);
       fused_pass_.execute(shadow_pass_.depth_maps(), shadow);
     }
-    filtered = fused_pass_.output().id();
+    filtered = &fused_pass_.output();
     // The moments view shows the unfiltered representation, which the
     // fused pass never writes.
     if (render.view == View::Moments) resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
@@ -270,15 +270,21 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
     }
     const gl::Texture& representation = resolve_pass_.representation();
-    filtered = representation.id();
+    filtered = &representation;
     const int filter = filter_define(shadow);
     if (filter == FILTER_GAUSSIAN) {
-      blur_pass_.execute(representation, shadow.blur, profiler);
-      filtered = blur_pass_.output().id();
+      blur_pass_.execute(
+          representation, shadow.blur, profiler,
+          filtered_map_levels(shadow, representation.width(), representation.height()));
+      filtered = &blur_pass_.output();
     } else if (filter == FILTER_SAT) {
       sat_pass_.execute(representation, profiler);
-      filtered = sat_pass_.table().id();
+      filtered = &sat_pass_.table();
     }
+  }
+  if (filtered != nullptr && uses_shadow_mips(shadow)) {
+    gl::GpuPassScope timed(profiler, gl::GpuPass::Mips);
+    mip_pass_.execute(*filtered);
   }
   if (is_map_view(render.view)) {
     const gl::Texture* maps = &shadow_pass_.depth_maps();
@@ -312,10 +318,11 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       ao = ssao_pass_.output().id();
     }
     gl::GpuPassScope timed(profiler, gl::GpuPass::Lighting);
-    lighting_pass_.execute(gbuffer_pass_, shadows ? &shadow_pass_.depth_maps() : nullptr, filtered,
-                           shadow, ao, render.width, render.height);
+    const GLuint filtered_id = filtered != nullptr ? filtered->id() : 0;
+    lighting_pass_.execute(gbuffer_pass_, shadows ? &shadow_pass_.depth_maps() : nullptr,
+                           filtered_id, shadow, ao, render.width, render.height);
     last_frame_ = frame;
-    last_filtered_ = filtered;
+    last_filtered_ = filtered_id;
     last_ao_ = ao;
     last_shadows_ = shadows;
   }

@@ -9,6 +9,7 @@
 #include "core/settings.hpp"
 #include "filter/fused_filter_pass.hpp"
 #include "filter/gaussian_blur_pass.hpp"
+#include "filter/mip_chain_pass.hpp"
 #include "filter/summed_area_table_pass.hpp"
 #include "gl/gpu_profiler.hpp"
 #include "gl/resources.hpp"
@@ -146,6 +147,7 @@ class Renderer {
   MomentResolvePass resolve_pass_;
   GaussianBlurPass blur_pass_;
   FusedFilterPass fused_pass_;
+  MipChainPass mip_pass_;
   SummedAreaTablePass sat_pass_;
   GBufferPass gbuffer_pass_;
   SsaoPass ssao_pass_;

@@ -29,8 +29,13 @@ void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSetti
                            {"IMAGE_FORMAT", image_format_qualifier(format)}};
     it = programs_.emplace(key, gl::Program::compute("filter/resolve.comp", defines)).first;
   }
+  // Unfiltered (--blur 0), the representation is the map the lighting
+  // reads, and carries the mip chain when there is one.
+  const int levels = filter_define(settings) == FILTER_NONE
+                         ? filtered_map_levels(settings, depth_maps.width(), depth_maps.height())
+                         : 1;
   gl::ensure_texture_array(maps_, format, depth_maps.width(), depth_maps.height(),
-                           depth_maps.layers(), "shadow representations");
+                           depth_maps.layers(), "shadow representations", levels);
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve");
   it->second.use();

@@ -1,5 +1,7 @@
 #include "shadow/representation.hpp"
 
+#include <algorithm>
+
 #include "core/error.hpp"
 #include "shared/bindings.h"
 
@@ -41,6 +43,18 @@ int filter_define(const ShadowSettings& settings) {
 bool uses_fused_filter(const ShadowSettings& settings) {
   return settings.fused && filter_define(settings) == FILTER_GAUSSIAN &&
          settings.blur <= kMaxFusedBlur;
+}
+
+bool uses_shadow_mips(const ShadowSettings& settings) {
+  return settings.shadow_mips && is_filterable(settings.technique) &&
+         filter_define(settings) != FILTER_SAT;
+}
+
+int filtered_map_levels(const ShadowSettings& settings, int width, int height) {
+  if (!uses_shadow_mips(settings)) return 1;
+  int levels = 1;
+  for (int size = std::max(width, height); size > 1; size /= 2) ++levels;
+  return levels;
 }
 
 bool uses_quantized_moments(const ShadowSettings& settings) {

@@ -21,6 +21,16 @@ int filter_define(const ShadowSettings& settings);
 // passes or the summed-area table.
 bool uses_fused_filter(const ShadowSettings& settings);
 
+// Whether the filtered maps carry a mip chain (--shadow-mips) that the
+// lighting pass reads trilinearly: a filterable technique filtered by the
+// Gaussian (fused or not) or not at all. The summed-area table is a
+// table of sums, which no mip of it would average.
+bool uses_shadow_mips(const ShadowSettings& settings);
+
+// Mip levels of a width x height filtered map: the full chain down to 1x1
+// with uses_shadow_mips(), else 1.
+int filtered_map_levels(const ShadowSettings& settings, int width, int height);
+
 // Whether the map holds the moments in the optimized quantization basis of
 // Peters & Klein 2015 (msm_quantize): always for msm16, and for msm summed
 // in the fixed-point summed-area table, where the basis spreads the

@@ -35,7 +35,12 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
   const bool evsm = t == Technique::Evsm2 || t == Technique::Evsm4;
   if (name == "evsm-positive") return evsm;
   if (name == "evsm-negative") return t == Technique::Evsm4;
-  if (name == "fused") return is_filterable(t) && shadow.filter == Filter::Gaussian;
+  if (name == "fused" || name == "shadow-mips") {
+    return is_filterable(t) && shadow.filter == Filter::Gaussian;
+  }
+  if (name == "shadow-anisotropy") {
+    return is_filterable(t) && shadow.filter == Filter::Gaussian && shadow.shadow_mips;
+  }
   if (name == "vsm-min-variance") return t == Technique::Vsm || evsm;
   // 32-bit float moments are biased by msm-alpha; 16-bit ones and those
   // summed in the fixed-point summed-area table by msm16-alpha.
