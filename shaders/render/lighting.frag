@@ -557,6 +557,21 @@ vec3 incident_light(int i, vec3 world, out vec3 to_light) {
   return radiance * cone / distance2;
 }
 
+// Whether some point of light i's source lies above the horizon of the
+// surface at `world` with normal n: within the source's radius of the
+// tangent plane at its centre (a spot light's square: half its diagonal;
+// a point light's sphere: its radius; the sun's disc: its angular radius).
+// With a point source it is the plain n . l > 0.
+bool source_above_horizon(GpuLight light, vec3 world, vec3 n) {
+  float width = shadow_views[light.views.x].source_width;
+  if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
+    // source_width is 2 tan(angular radius) for the sun.
+    return dot(n, -light.direction_cos_outer.xyz) > -sin(atan(0.5 * width));
+  }
+  float radius = int(light.position_type.w) == LIGHT_POINT ? 0.5 * width : 0.70710678 * width;
+  return dot(n, light.position_type.xyz - world) > -radius;
+}
+
 // What this sub-frame's point of light i's source sends a receiver at
 // `world` with normal n, up to a constant (--accumulate, shadow view): the
 // weight of its shadow in the ratio of irradiances the traced reference
@@ -633,11 +648,16 @@ void main() {
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {
-    // The technique decides everywhere, also on surfaces turned away from
-    // the light's centre: an area light's source can still reach them over
-    // their horizon, and the traced reference judges them by the part of
-    // the source above it.
+    // Where no point of the source is above the surface's horizon no light
+    // arrives, occluders or not: 0, and alpha 0 (not judged, as the traced
+    // reference marks it). Elsewhere the technique decides, also on
+    // surfaces turned away from the light's centre, which an area light's
+    // source still reaches over their horizon.
     int i = frame.options.z;
+    if (!source_above_horizon(lights[i], world, n)) {
+      out_color = vec4(0.0);
+      return;
+    }
     float lit = shadow_factor(i, world, n, view == VIEW_SHADOW_REFERENCE, rotation, footprint);
     out_color = shadow_params.accumulate_weighted != 0
                     ? vec4(lit, vec2(lit, 1.0) * accumulate_source_weight(lights[i], world, n), 1.0)
