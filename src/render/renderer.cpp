@@ -241,11 +241,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_block.accumulate_weighted = shadow.accumulate > 1 && render.view == View::Shadow ? 1 : 0;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_LIGHTS_UBO, lights_ubo_.id());
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_UBO, shadow_ubo_.id());
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_VIEWS_UBO, views_ubo_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, poisson_.id());
+  bind_frame_blocks();
 
   const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
   if (shadows) {
@@ -328,6 +324,14 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   }
 }
 
+void Renderer::bind_frame_blocks() {
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_LIGHTS_UBO, lights_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_UBO, shadow_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_VIEWS_UBO, views_ubo_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, poisson_.id());
+}
+
 void Renderer::bind_reference_weights(const ShadowSettings& shadow) {
   // The kernel the filter applies, as 1D weights for the reference's
   // brute-force average of depth tests.
@@ -353,11 +357,7 @@ void Renderer::shade(View view) {
   last_frame_.options.y = view_define(view);
   last_frame_.options.w = ambient_occlusion ? 1 : 0;
   frame_ubo_.update(&last_frame_, sizeof last_frame_);
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_FRAME_UBO, frame_ubo_.id());
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_LIGHTS_UBO, lights_ubo_.id());
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_UBO, shadow_ubo_.id());
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_SHADOW_VIEWS_UBO, views_ubo_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, poisson_.id());
+  bind_frame_blocks();
   if (view == View::ShadowReference) bind_reference_weights(last_shadow_);
   lighting_pass_.execute(gbuffer_pass_, last_shadows_ ? &shadow_pass_.depth_maps() : nullptr,
                          last_filtered_, last_shadow_, ambient_occlusion ? last_ao_ : 0,

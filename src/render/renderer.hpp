@@ -157,6 +157,9 @@ class Renderer {
   gl::Buffer reference_weights_;
   gl::Buffer poisson_;  // the PCF/PCSS sample set (std430 vec2 array)
   // The reference's kernel weights for the shadow-reference view.
+  // Binds the frame's uniform blocks and the sample set the lighting pass
+  // reads (render() fills them; shade() reuses them).
+  void bind_frame_blocks();
   void bind_reference_weights(const ShadowSettings& shadow);
   // Fits clip every triangle of the scene, so each light's views and the
   // camera's depth range are kept and refitted only when what they depend
