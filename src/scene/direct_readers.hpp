@@ -3,7 +3,7 @@
 // meshes come in: Wavefront OBJ and binary PLY. They stream the file
 // through a fixed buffer and write straight into the final vertex and
 // index arrays, sized from a first count, so a million-triangle model
-// reads in a fraction of assimp's time and memory (README, "Models").
+// reads in a fraction of assimp's time and memory (docs/scenes.md, "Models").
 // They read geometry only: a file that uses anything else (OBJ materials,
 // lines, curves, PLY properties or elements beyond positions, normals,
 // texture coordinates, colours and faces) is left to assimp.

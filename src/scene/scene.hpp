@@ -30,7 +30,7 @@ enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
 
 // glTF's alphaMode. A deferred renderer draws no translucency: Blend
 // surfaces are drawn as Mask at a cutoff of 0.5, in the G-buffer and in
-// every shadow pass (documented in the README, "Scenes").
+// every shadow pass (documented in docs/scenes.md, "Scenes").
 enum class AlphaMode { Opaque, Mask, Blend };
 
 struct Material {
