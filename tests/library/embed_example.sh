@@ -23,8 +23,11 @@ CPP
 export PKG_CONFIG_PATH="$(dirname "$(find "$work/prefix" -name penumbra-shadows.pc)")"
 ${launcher} c++ -std=c++20 "$work/lookup.cpp" -o "$work/lookup" \
   $(pkg-config --cflags --libs penumbra-shadows)
-"$work/lookup" | grep -q "float penumbra_shadow(int light, vec3 world_position, vec3 world_normal)"
-cmp <("$work/lookup") "$work/prefix/share/penumbra/penumbra_shadows.glsl"
+# (Into a file first: `lookup | grep -q` fails at random under pipefail when
+# grep exits before the program has written everything.)
+"$work/lookup" >"$work/lookup.glsl"
+grep -q "float penumbra_shadow(int light, vec3 world_position, vec3 world_normal)" "$work/lookup.glsl"
+cmp "$work/lookup.glsl" "$work/prefix/share/penumbra/penumbra_shadows.glsl"
 
 embed=$work/build/embed
 common=(--headless --width 320 --height 180 --map-size 512 --view shadow)
