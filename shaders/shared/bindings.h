@@ -37,13 +37,13 @@
 #define PENUMBRA_SHADOW_BLOCK_BINDING 7
 #endif
 #ifndef PENUMBRA_UNIT_SHADOW_DEPTH
-#define PENUMBRA_UNIT_SHADOW_DEPTH 13     // z-bar depth maps, one layer per shadow view
+#define PENUMBRA_UNIT_SHADOW_DEPTH 13  // z-bar depth maps, one layer per shadow view
 #endif
 #ifndef PENUMBRA_UNIT_SHADOW_FILTERED
 #define PENUMBRA_UNIT_SHADOW_FILTERED 14  // the technique's filtered representation
 #endif
 #ifndef PENUMBRA_UNIT_SHADOW_COMPARE
-#define PENUMBRA_UNIT_SHADOW_COMPARE 15   // the depth maps through a comparison sampler
+#define PENUMBRA_UNIT_SHADOW_COMPARE 15  // the depth maps through a comparison sampler
 #endif
 
 // Image units (compute)

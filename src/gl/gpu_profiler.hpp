@@ -32,10 +32,18 @@ enum class GpuPass {
 };
 
 inline constexpr std::array<std::string_view, static_cast<std::size_t>(GpuPass::Count)>
-    kGpuPassNames{"shadow depth", "resolve",  "resolve+filter (fused)",
-                  "filter H",     "filter V", "SAT rows",
-                  "SAT columns",  "mips",     "G-buffer",
-                  "SSAO",         "lighting", "accumulate",
+    kGpuPassNames{"shadow depth",
+                  "resolve",
+                  "resolve+filter (fused)",
+                  "filter H",
+                  "filter V",
+                  "SAT rows",
+                  "SAT columns",
+                  "mips",
+                  "G-buffer",
+                  "SSAO",
+                  "lighting",
+                  "accumulate",
                   "copy (yardstick)"};
 
 // Milliseconds per pass (0 for passes that did not run), and the frame's

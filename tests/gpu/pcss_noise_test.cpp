@@ -4,10 +4,10 @@
 // what it removes (sampling noise, and pixel-sized error at silhouettes and
 // terminators), and the latter alone inside smooth penumbrae: the grain.
 #include <algorithm>
-#include <initializer_list>
-#include <vector>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
+#include <vector>
 
 #include "gpu_fixture.hpp"
 #include "reference/traced_reference.hpp"

@@ -148,9 +148,8 @@ TEST(EmbedExample, LitImageDarkerInEachLightsShadow) {
   const penumbra::Image image = penumbra::read_png(kWork + "/images/final.png");
   const TestLight spot = spot_light(), sun = sun_light();
   const glm::mat4 view_projection =
-      glm::perspective(glm::radians(embed::kCameraFovDegrees),
-                       static_cast<float>(kWidth) / kHeight, embed::kCameraNear,
-                       embed::kCameraFar) *
+      glm::perspective(glm::radians(embed::kCameraFovDegrees), static_cast<float>(kWidth) / kHeight,
+                       embed::kCameraNear, embed::kCameraFar) *
       glm::lookAt(embed::kCameraPosition, embed::kCameraTarget, glm::vec3(0.0f, 1.0f, 0.0f));
   // Mean green of the ground points in [-3, 3]^2 with these expectations.
   auto mean = [&](Expect from_spot, Expect from_sun) {
