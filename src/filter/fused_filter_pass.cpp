@@ -19,17 +19,6 @@ GLuint groups(int size, int tile) {
   return static_cast<GLuint>((size + tile - 1) / tile);
 }
 
-int channels_of(GLenum format) {
-  switch (format) {
-    case GL_R32F:
-      return 1;
-    case GL_RG32F:
-      return 2;
-    default:
-      return 4;
-  }
-}
-
 }  // namespace
 
 FusedFilterPass::FusedFilterPass() {
@@ -49,7 +38,7 @@ int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes) {
 
 TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width, int height,
                                             int shared_bytes) {
-  const int rows = tile_rows(radius, channels_of(format), shared_bytes);
+  const int rows = tile_rows(radius, channel_count(format), shared_bytes);
   if (rows == 0 || width <= 0 || height <= 0) return {};
   const double tiles = static_cast<double>(groups(width, kTileX)) * groups(height, rows);
   const double texels_read = tiles * (kTileX + 2.0 * radius) * (rows + 2.0 * radius);
@@ -63,7 +52,7 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
   }
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);
-  const int rows = tile_rows(radius, channels_of(format), shared_bytes_);
+  const int rows = tile_rows(radius, channel_count(format), shared_bytes_);
   if (rows == 0) throw RuntimeError("the fused filter's tile does not fit in shared memory");
   const bool quantized = uses_quantized_moments(settings);
   const auto key = std::make_tuple(technique, quantized, radius, rows);

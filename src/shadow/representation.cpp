@@ -126,6 +126,19 @@ GLenum integer_format_with_channels_of(GLenum format) {
   }
 }
 
+int channel_count(GLenum format) {
+  switch (format) {
+    case GL_R32F:
+    case GL_R32UI:
+      return 1;
+    case GL_RG32F:
+    case GL_RG32UI:
+      return 2;
+    default:
+      return 4;
+  }
+}
+
 int bytes_per_texel(GLenum format) {
   switch (format) {
     case GL_R32F:

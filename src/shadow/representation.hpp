@@ -59,6 +59,9 @@ std::string image_format_qualifier(GLenum format);
 // tables of the representation).
 GLenum integer_format_with_channels_of(GLenum format);
 
+// Channels of a sized colour format used here (1, 2 or 4).
+int channel_count(GLenum format);
+
 // Bytes per texel of a sized internal format used here.
 int bytes_per_texel(GLenum format);
 

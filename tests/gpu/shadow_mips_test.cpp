@@ -21,17 +21,6 @@ namespace {
 
 using testing::GpuTest;
 
-int channels_of(GLenum format) {
-  switch (format) {
-    case GL_R32F:
-      return 1;
-    case GL_RG32F:
-      return 2;
-    default:
-      return 4;
-  }
-}
-
 GLenum pixel_format_of(int channels) {
   return channels == 1 ? GL_RED : channels == 2 ? GL_RG : GL_RGBA;
 }
@@ -49,7 +38,7 @@ std::vector<float> read_level(const gl::Texture& t, int level, int width, int he
 // the level below, within `tolerance` (times the largest of the four where
 // that exceeds 1), and returns how many levels it has.
 int expect_box_chain(const gl::Texture& t, double tolerance) {
-  const int channels = channels_of(t.format());
+  const int channels = channel_count(t.format());
   int w = t.width(), h = t.height();
   std::vector<float> finer = read_level(t, 0, w, h, channels);
   for (int level = 1; level < t.levels(); ++level) {
@@ -105,7 +94,7 @@ TEST_F(ShadowMipsTest, EachLevelIsTheMeanOfTheTwoByTwoTexelsBelow) {
                                     .layers = 3,
                                     .levels = levels,
                                     .label = "test mip chain"});
-      const int channels = channels_of(format);
+      const int channels = channel_count(format);
       std::vector<float> data(static_cast<std::size_t>(width) * height * 3 * channels);
       for (float& v : data) v = u(rng);
       glTextureSubImage3D(t.id(), 0, 0, 0, 0, width, height, 3, pixel_format_of(channels), GL_FLOAT,
