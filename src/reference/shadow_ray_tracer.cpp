@@ -131,15 +131,10 @@ class FacetPackets {
   static constexpr int kWidth = 16;
 
   // `normals` and `lifts`: where each receiver's triangle normal and the
-  // lift of its ray origin go, indexed as add() is given them; the
-  // triangles' corners and vertex normals, three per triangle.
-  FacetPackets(RTCScene scene, const std::vector<glm::vec3>& corner_positions,
-               const std::vector<glm::vec3>& corner_normals, glm::vec3* normals, glm::vec3* lifts)
-      : scene_(scene),
-        corner_positions_(corner_positions),
-        corner_normals_(corner_normals),
-        normals_(normals),
-        lifts_(lifts) {}
+  // lift of its ray origin go, indexed as add() is given them; `mesh`: the
+  // triangles' corners and vertex normals.
+  FacetPackets(RTCScene scene, const SmoothMesh& mesh, glm::vec3* normals, glm::vec3* lifts)
+      : scene_(scene), mesh_(mesh), normals_(normals), lifts_(lifts) {}
 
   void add(const glm::vec3& p, const glm::vec3& n, float reach, int index) {
     const int lane = size_;
@@ -184,22 +179,23 @@ class FacetPackets {
   // surface seen from its back) are turned to n's side.
   glm::vec3 terminator_lift(unsigned triangle, float u, float v, const glm::vec3& p,
                             const glm::vec3& n) const {
-    const std::size_t first = static_cast<std::size_t>(triangle) * 3;
-    if (first + 2 >= corner_normals_.size()) return glm::vec3(0.0f);
+    if (mesh_.positions == nullptr || mesh_.indices == nullptr) return glm::vec3(0.0f);
     const float weights[3] = {1.0f - u - v, u, v};
     glm::vec3 lift(0.0f);
-    for (int c = 0; c < 3; ++c) {
-      glm::vec3 corner_normal = corner_normals_[first + c];
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::uint32_t vertex = mesh_.indices[3 * static_cast<std::size_t>(triangle) + c];
+      const float* position = mesh_.positions + 3 * static_cast<std::size_t>(vertex);
+      glm::vec3 corner_normal = mesh_.normals[vertex];
       if (glm::dot(corner_normal, n) < 0.0f) corner_normal = -corner_normal;
-      const float below = glm::dot(corner_positions_[first + c] - p, corner_normal);
+      const float below =
+          glm::dot(glm::vec3(position[0], position[1], position[2]) - p, corner_normal);
       if (below > 0.0f) lift += weights[c] * below * corner_normal;
     }
     return lift;
   }
 
   RTCScene scene_;
-  const std::vector<glm::vec3>& corner_positions_;
-  const std::vector<glm::vec3>& corner_normals_;
+  const SmoothMesh& mesh_;
   glm::vec3* normals_;
   glm::vec3* lifts_;
   RTCRayHit16 hits_;
@@ -323,12 +319,17 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Mat
     const glm::vec3 a = glm::abs(v.position);
     max_coordinate_ = std::max({max_coordinate_, a.x, a.y, a.z});
   }
-  corner_positions_.reserve(mesh.indices.size());
-  corner_normals_.reserve(mesh.indices.size());
-  for (const std::uint32_t i : mesh.indices) {
-    corner_positions_.push_back(mesh.vertices[i].position);
-    corner_normals_.push_back(mesh.vertices[i].normal);
+  // The corners are Embree's own copies; only the normals are kept here.
+  if (!mesh.indices.empty()) {
+    RTCGeometry geometry = rtcGetGeometry(scene_, 0);
+    smooth_.positions =
+        static_cast<const float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+    smooth_.indices = static_cast<const std::uint32_t*>(
+        rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_INDEX, 0));
   }
+  vertex_normals_.reserve(mesh.vertices.size());
+  for (const Vertex& v : mesh.vertices) vertex_normals_.push_back(v.normal);
+  smooth_.normals = vertex_normals_.data();
 }
 
 float ShadowRayTracer::rounding_error(const glm::vec3& p, const glm::vec3& n) const {
@@ -525,8 +526,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
     std::vector<Receiver> receivers(w);
     std::vector<glm::vec3> facets(w), lifts(w);
     std::vector<double> total(w), lit(w);
-    FacetPackets facet_packets(scene_, corner_positions_, corner_normals_, facets.data(),
-                               lifts.data());
+    FacetPackets facet_packets(scene_, smooth_, facets.data(), lifts.data());
     OcclusionPackets packets(scene_, lit.data());
     for (int y = rows.begin(); y != rows.end(); ++y) {
       std::fill(total.begin(), total.end(), 0.0);

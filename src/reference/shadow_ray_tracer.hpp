@@ -69,6 +69,15 @@ struct TraceStats {
   std::int64_t rays = 0;  // shadow rays traced (source points below a tangent plane take none)
 };
 
+// A triangle mesh's corners (xyz floats per vertex, three indices per
+// triangle) and its vertex normals: the smooth surface the normals
+// describe, which the shadow rays start on.
+struct SmoothMesh {
+  const float* positions = nullptr;
+  const std::uint32_t* indices = nullptr;
+  const glm::vec3* normals = nullptr;
+};
+
 class ShadowRayTracer {
  public:
   // Builds Embree's BVH over the mesh. Throws RuntimeError if Embree fails.
@@ -108,9 +117,10 @@ class ShadowRayTracer {
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
   float max_coordinate_ = 0.0f;  // the largest |x|, |y| or |z| of a vertex
-  // The triangles' corners and vertex normals, for the shadow rays'
-  // origins on the smooth surface the normals describe (trace()).
-  std::vector<glm::vec3> corner_positions_, corner_normals_;
+  // The vertex normals, and with Embree's vertex and index buffers the
+  // smooth surface the shadow rays start on (trace()).
+  std::vector<glm::vec3> vertex_normals_;
+  SmoothMesh smooth_;
   std::unique_ptr<CasterCutouts> cutouts_;  // null: nothing to cut
 };
 
