@@ -20,6 +20,7 @@
 #include "../shadow/noise.glsl"
 #include "../shadow/penumbra.glsl"
 #include "../shadow/pcf.glsl"
+#include "../shadow/pcss.glsl"
 #include "../shadow/accumulate.glsl"
 #include "../shadow/backprojection.glsl"
 
@@ -159,45 +160,6 @@ float filtered_mean_depth(vec4 m) {
 }
 #endif
 
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS || SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION || \
-    (SHADOW_TECHNIQUE >= TECHNIQUE_VSM && SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS)
-// The blocker search of PCSS over the depth map: the 2x2 texels around each
-// point of the pixel's rotated Poisson set (four depths a fetch), spread
-// over the region the light's source covers at the near plane, each tested
-// against the receiver's plane at that texel. Only texels inside the cone
-// from the receiver to the source count as blockers (occluder_cone.glsl).
-// `widen` scales the search region (and the caller's cone should follow):
-// 1 for the disc of the source's area, sqrt(2) to cover a square source's
-// corners too. Returns (the blockers' count, their summed relative depth).
-vec2 cone_blocker_search(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
-                         vec2 rotation, int max_samples, float widen) {
-  GpuShadowView view = shadow_views[v];
-  vec2 size = vec2(textureSize(shadow_depth, 0).xy);
-  vec2 center = s.uv * size;
-  float d_receiver = linear_depth_of(view, s.depth);
-  float search = min(widen * blocker_search_width(view, d_receiver), float(MAX_PCF_WIDTH));
-  int search_samples = pcss_search_sample_count(search, max_samples);
-  // textureGather's order of the 2x2 texels, from the lower-left one.
-  const vec2 gathered[4] = vec2[](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(1.0, 0.0), vec2(0.0));
-  float blockers = 0.0, blocker_depth = 0.0;
-  for (int k = 0; k < search_samples; ++k) {
-    vec2 sample_point = center + rotated_poisson(k, rotation) * (0.5 * search);
-    vec2 lower_left = floor(sample_point - 0.5) + 0.5;  // centre of the lower-left texel
-    vec4 occluders = textureGather(shadow_depth, vec3((lower_left + 0.5) / size, float(v)));
-    for (int c = 0; c < 4; ++c) {
-      // Each texel against the receiver's plane at that texel.
-      vec2 offset = lower_left + gathered[c] - center;
-      ivec2 texel = clamp(ivec2(floor(lower_left + gathered[c])), ivec2(0), ivec2(size) - 1);
-      if (occluders[c] < z + dot(gradient, offset) &&
-          texel_occludes(view, texel, ivec2(size), occluders[c], cone)) {
-        blockers += 1.0;
-        blocker_depth += occluders[c];
-      }
-    }
-  }
-  return vec2(blockers, blocker_depth);
-}
-#endif
 
 #if SHADOW_TECHNIQUE >= TECHNIQUE_VSM && SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
 // Soft moment shadows test each texel of the depth map this close to the
@@ -290,8 +252,8 @@ float soft_moment_shadow(int v, ShadowLookup s, float z, GpuLight light, vec3 no
   const float square_corners = 1.41421356;
   OccluderCone wide = cone;
   wide.tan_half_angle *= square_corners * 0.88622693;  // equal-area disc -> circumscribed
-  if (cone_blocker_search(v, s, z, gradient, wide, rotation, shadow_params.pcss_blocker_samples,
-                          square_corners)
+  if (cone_blocker_search(shadow_depth, v, view, s, z, gradient, wide, rotation,
+                          shadow_params.pcss_blocker_samples, square_corners)
           .x == 0.0) {
     ivec2 size = textureSize(shadow_depth, 0).xy;
     ivec2 middle = ivec2(floor(center));
@@ -390,36 +352,15 @@ float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCo
 }
 #endif
 
+
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCSS || SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
-// PCSS (Fernando 2005): blocker search (cone_blocker_search()), penumbra
-// estimate, PCF over it, each with as many samples as its region's size in
-// texels asks for, up to the settings' counts. The search's region's shape
-// matters less than its spread, and the rotation dithers where a
-// penumbra's outer end stops finding blockers. The filter takes bilinear
-// compares at the pixel's shifted R2 set over the axis-aligned square of
-// the light's source (square_samples.glsl). Both patterns come from the
-// pixel's interleaved gradient noise (`rotation` is its angle), so
-// neighbouring pixels sample differently and a 3x3 neighbourhood averages
-// much of the noise away.
+// PCSS (shaders/shadow/pcss.glsl) with the settings' sample counts; its
+// noise is the value `rotation` was made from (main()).
 float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
                         vec2 rotation) {
-  GpuShadowView view = shadow_views[v];
-  float d_receiver = linear_depth_of(view, s.depth);
-  vec2 found = cone_blocker_search(v, s, z, gradient, cone, rotation,
-                                   shadow_params.pcss_blocker_samples, 1.0);
-  float blockers = found.x, blocker_depth = found.y;
-  if (blockers == 0.0) return 1.0;  // nothing between the receiver and the light
-  float d_blocker = linear_depth_of(view, blocker_depth / blockers);
-  float width = min(
-      penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver),
-      float(MAX_PCF_WIDTH));
-  if (width <= 0.0) return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
-  float kernel = pcss_kernel_width(width);
-  // The noise value `rotation` was made from (main()).
-  vec2 shift = square_sample_shift(interleaved_gradient_noise(floor(gl_FragCoord.xy)));
-  return shadow_pcf_bilinear(shadow_compare, v, s.uv, z, gradient, kernel,
-                             pcss_filter_sample_count(kernel, shadow_params.pcss_filter_samples),
-                             shift);
+  return shadow_pcss(shadow_depth, shadow_compare, v, shadow_views[v], s, z, gradient, cone,
+                     rotation, interleaved_gradient_noise(floor(gl_FragCoord.xy)),
+                     shadow_params.pcss_blocker_samples, shadow_params.pcss_filter_samples);
 }
 #endif
 
@@ -483,7 +424,8 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
   if (view.perspective != 0 && view.radial_depth == 0) {
-    return shadow_backprojection(shadow_depth, v, view, s, z, gradient, normal);
+    return shadow_backprojection(shadow_depth, v, view, s, z, gradient, normal,
+                                 ivec2(gl_FragCoord.xy));
   }
   // A point light's cube faces and the sun's cascades: PCSS.
   return pcss_lit_fraction(v, s, z, gradient, occluder_cone(light, view, s.position, 0.0),

@@ -58,9 +58,10 @@ uint backprojection_count_below(float x, float coords[BACKPROJECTION_SIDE]) {
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
 // gradient `gradient` per texel, world normal `normal`) in perspective
 // view `view` (layer `layer` of depth_maps), whose source is the square
-// view.source_width wide in the view's x-y plane at its eye.
+// view.source_width wide in the view's x-y plane at its eye. `pixel`
+// seeds the jitter of the source's grid of points.
 float shadow_backprojection(sampler2DArray depth_maps, int layer, GpuShadowView view,
-                            ShadowLookup s, float z, vec2 gradient, vec3 normal) {
+                            ShadowLookup s, float z, vec2 gradient, vec3 normal, ivec2 pixel) {
   ivec2 size = textureSize(depth_maps, 0).xy;
   float tan_per_texel = view.depth_range.z;
   float width = view.source_width;
@@ -72,7 +73,7 @@ float shadow_backprojection(sampler2DArray depth_maps, int layer, GpuShadowView 
 
   float xs[BACKPROJECTION_SIDE], ys[BACKPROJECTION_SIDE];
   for (int i = 0; i < BACKPROJECTION_SIDE; ++i) {
-    vec3 h = accumulate_hash(ivec2(gl_FragCoord.xy), 977 + i);
+    vec3 h = accumulate_hash(pixel, 977 + i);
     xs[i] = ((float(i) + h.x) / float(BACKPROJECTION_SIDE) - 0.5) * width;
     ys[i] = ((float(i) + h.y) / float(BACKPROJECTION_SIDE) - 0.5) * width;
   }

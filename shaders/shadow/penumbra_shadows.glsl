@@ -18,8 +18,8 @@
 // (view_select.glsl): a spot light's one view, a point light's cube face,
 // a directional light's cascade along the camera, blended into the next
 // near each cascade's end. The tests per technique are the shared ones
-// under shaders/shadow/ (hard.glsl, pcf.glsl, vsm.glsl, esm.glsl,
-// evsm.glsl, msm.glsl), with the biases of lookup.glsl.
+// under shaders/shadow/ (hard.glsl, pcf.glsl, pcss.glsl,
+// backprojection.glsl, vsm.glsl, esm.glsl, evsm.glsl, msm.glsl), with the biases of lookup.glsl.
 #pragma once
 
 #include "../shared/bindings.h"
@@ -33,6 +33,8 @@
 #include "msm.glsl"
 #include "noise.glsl"
 #include "pcf.glsl"
+#include "pcss.glsl"
+#include "backprojection.glsl"
 
 layout(std140, binding = PENUMBRA_SHADOW_BLOCK_BINDING) uniform PenumbraShadowBlock {
   GpuShadowBlock penumbra;
@@ -43,8 +45,10 @@ layout(binding = PENUMBRA_UNIT_SHADOW_COMPARE) uniform sampler2DArrayShadow penu
 layout(binding = PENUMBRA_UNIT_SHADOW_FILTERED) uniform sampler2DArray penumbra_filtered;
 
 // Fraction of the light that reaches the point according to shadow view v.
+// `pixel` seeds backprojection's jitter; `noise` in [0, 1) is the
+// pixel's noise value, `rotation` the angle 2 pi noise.
 float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec3 normal,
-                           vec2 rotation) {
+                           vec2 pixel, float noise, vec2 rotation) {
   GpuShadowView view = penumbra.views[v];
   GpuShadow params = penumbra.params;
   ShadowLookup s = shadow_lookup(view, world, normal, params.normal_offset);
@@ -63,6 +67,19 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
     OccluderCone cone = occluder_cone(light, view, s.position, PCF_MIN_CONE_TAN);
     return shadow_pcf(penumbra_depth, v, view, cone, s.uv, z, gradient, params.pcf_width,
                       params.pcf_samples, rotation);
+  }
+  if (technique == TECHNIQUE_PCSS || technique == TECHNIQUE_BACKPROJECTION) {
+    vec2 gradient = receiver_depth_gradient(view, s, normal, params.max_slope);
+    if (technique == TECHNIQUE_BACKPROJECTION && view.perspective != 0 && view.radial_depth == 0) {
+      return shadow_backprojection(penumbra_depth, v, view, s, z, gradient, normal,
+                                   ivec2(floor(pixel)));
+    }
+    // PCSS, and backprojection's fallback for a point light's cube faces
+    // and the sun's cascades: the cone the light's source really subtends
+    // (its width is the settings' light_size, or sun_angle for the sun).
+    OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
+    return shadow_pcss(penumbra_depth, penumbra_compare, v, view, s, z, gradient, cone, rotation,
+                       noise, params.pcss_blocker_samples, params.pcss_filter_samples);
   }
   if (!filterable) return 1.0;
   vec4 m = texture(penumbra_filtered, vec3(s.uv, float(v)));
@@ -92,13 +109,16 @@ float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, v
     return 1.0;
   }
   GpuLight light = penumbra.lights[light_index];
-  float angle = 6.28318530718 * interleaved_gradient_noise(floor(pixel));
+  float noise = interleaved_gradient_noise(floor(pixel));
+  float angle = 6.28318530718 * noise;
   vec2 rotation = vec2(cos(angle), sin(angle));
   float camera_depth = -(penumbra.camera_view * vec4(world, 1.0)).z;
   ViewSelection selected = select_shadow_view(light, world, camera_depth);
-  float lit = penumbra_view_shadow(technique, selected.view, light, world, normal, rotation);
+  float lit =
+      penumbra_view_shadow(technique, selected.view, light, world, normal, pixel, noise, rotation);
   if (selected.blend > 0.0) {
-    float next = penumbra_view_shadow(technique, selected.next, light, world, normal, rotation);
+    float next =
+        penumbra_view_shadow(technique, selected.next, light, world, normal, pixel, noise, rotation);
     lit = mix(lit, next, selected.blend);
   }
   return lit;
@@ -120,6 +140,14 @@ float penumbra_shadow_hard(int light, vec3 world_position, vec3 world_normal) {
 float penumbra_shadow_pcf(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_PCF, light, world_position, world_normal,
                                       gl_FragCoord.xy);
+}
+float penumbra_shadow_pcss(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_PCSS, light, world_position, world_normal,
+                                      gl_FragCoord.xy);
+}
+float penumbra_shadow_backprojection(int light, vec3 world_position, vec3 world_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_BACKPROJECTION, light, world_position,
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_vsm(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_VSM, light, world_position, world_normal,

@@ -60,10 +60,6 @@ ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
                         const CasterGeometry& casters, const ShadowSettings& settings) {
   validate(settings);
-  if (settings.technique == Technique::Pcss) {
-    throw UsageError(
-        "ShadowMaps: pcss is not in the shadow lookup yet (penumbra's renderer has it)");
-  }
   if (is_filterable(settings.technique) && settings.filter == Filter::Sat) {
     throw UsageError(
         "ShadowMaps: --filter sat is not in the shadow lookup yet (penumbra's renderer has it)");

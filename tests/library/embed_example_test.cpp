@@ -84,6 +84,7 @@ Expect expected_at(glm::vec3 p, const TestLight& light) {
 struct Tally {
   int shadowed = 0, lit = 0;
   int wrong_shadowed = 0, wrong_lit = 0;  // points that read lit, shadowed
+  int partial = 0;  // seen ground points the light reaches that read neither 0 nor 1
 };
 
 // Compares the shadow factor image (1 = lit) with the expectation at ground
@@ -97,14 +98,16 @@ Tally check(const penumbra::Image& image, const TestLight& light) {
   for (float x = -6.0f; x <= 6.0f; x += 0.125f) {
     for (float z = -6.0f; z <= 6.0f; z += 0.125f) {
       const glm::vec3 p(x, 0.0f, z);
-      const Expect expect = expected_at(p, light);
-      if (expect == Expect::Unsure) continue;
+      if (crosses_box(embed::kCameraPosition, p) || !light.reaches(p)) continue;
       const glm::vec4 clip = view_projection * glm::vec4(p, 1.0f);
       const glm::vec2 ndc = glm::vec2(clip) / clip.w;
       const int px = static_cast<int>((ndc.x * 0.5f + 0.5f) * kWidth);
       const int py = static_cast<int>((0.5f - ndc.y * 0.5f) * kHeight);
       if (px < 1 || py < 1 || px >= kWidth - 1 || py >= kHeight - 1) continue;
       const float lit = image.pixel(px, py)[0];
+      if (lit > 0.1f && lit < 0.9f) ++tally.partial;
+      const Expect expect = expected_at(p, light);
+      if (expect == Expect::Unsure) continue;
       if (expect == Expect::Shadowed) {
         ++tally.shadowed;
         if (lit > 0.25f) ++tally.wrong_shadowed;
@@ -118,7 +121,7 @@ Tally check(const penumbra::Image& image, const TestLight& light) {
 }
 
 TEST(EmbedExample, SpotShadowWhereComputedForEveryTechnique) {
-  for (const char* technique : {"hard", "pcf", "msm"}) {
+  for (const char* technique : {"hard", "pcf", "pcss", "backprojection", "msm"}) {
     SCOPED_TRACE(technique);
     const Tally t =
         check(penumbra::read_png(kWork + "/images/spot-" + technique + ".png"), spot_light());
@@ -130,7 +133,7 @@ TEST(EmbedExample, SpotShadowWhereComputedForEveryTechnique) {
 }
 
 TEST(EmbedExample, SunCascadeShadowWhereComputed) {
-  for (const char* technique : {"pcf", "vsm"}) {
+  for (const char* technique : {"pcf", "pcss", "vsm"}) {
     SCOPED_TRACE(technique);
     const Tally t =
         check(penumbra::read_png(kWork + "/images/sun-" + technique + ".png"), sun_light());
@@ -138,6 +141,22 @@ TEST(EmbedExample, SunCascadeShadowWhereComputed) {
     EXPECT_GE(t.lit, 100);
     EXPECT_LE(t.wrong_shadowed, t.shadowed / 20) << "of " << t.shadowed;
     EXPECT_LE(t.wrong_lit, t.lit / 50) << "of " << t.lit;
+  }
+}
+
+// The soft-shadow techniques see the spot light's source (ShadowSettings::
+// light_size): the box's shadow on the ground has a penumbra, points that
+// are neither lit nor shadowed; hard shadows have none.
+TEST(EmbedExample, SoftTechniquesDrawAPenumbra) {
+  const auto partial = [](const char* technique) {
+    return check(penumbra::read_png(kWork + "/images/spot-" + technique + ".png"), spot_light())
+        .partial;
+  };
+  const int hard = partial("hard");
+  EXPECT_LE(hard, 2);
+  for (const char* technique : {"pcss", "backprojection"}) {
+    SCOPED_TRACE(technique);
+    EXPECT_GE(partial(technique), 20) << "hard: " << hard;
   }
 }
 

@@ -1,0 +1,75 @@
+// Percentage-closer soft shadows (Fernando 2005) over a depth-map array:
+// the blocker search, the penumbra estimate from the blockers' mean depth,
+// and PCF over it. Shared by penumbra's lighting pass and the lookup an
+// engine includes (penumbra_shadows.glsl), so both shade alike.
+#pragma once
+
+#include "hard.glsl"
+#include "pcf.glsl"
+
+// The blocker search of PCSS over the depth map: the 2x2 texels around each
+// point of the pixel's rotated Poisson set (four depths a fetch), spread
+// over the region the light's source covers at the near plane, each tested
+// against the receiver's plane at that texel. Only texels inside the cone
+// from the receiver to the source count as blockers (occluder_cone.glsl).
+// `widen` scales the search region (and the caller's cone should follow):
+// 1 for the disc of the source's area, sqrt(2) to cover a square source's
+// corners too. Returns (the blockers' count, their summed relative depth).
+vec2 cone_blocker_search(sampler2DArray depth_maps, int v, GpuShadowView view, ShadowLookup s,
+                         float z, vec2 gradient, OccluderCone cone, vec2 rotation, int max_samples,
+                         float widen) {
+  vec2 size = vec2(textureSize(depth_maps, 0).xy);
+  vec2 center = s.uv * size;
+  float d_receiver = linear_depth_of(view, s.depth);
+  float search = min(widen * blocker_search_width(view, d_receiver), float(MAX_PCF_WIDTH));
+  int search_samples = pcss_search_sample_count(search, max_samples);
+  // textureGather's order of the 2x2 texels, from the lower-left one.
+  const vec2 gathered[4] = vec2[](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(1.0, 0.0), vec2(0.0));
+  float blockers = 0.0, blocker_depth = 0.0;
+  for (int k = 0; k < search_samples; ++k) {
+    vec2 sample_point = center + rotated_poisson(k, rotation) * (0.5 * search);
+    vec2 lower_left = floor(sample_point - 0.5) + 0.5;  // centre of the lower-left texel
+    vec4 occluders = textureGather(depth_maps, vec3((lower_left + 0.5) / size, float(v)));
+    for (int c = 0; c < 4; ++c) {
+      // Each texel against the receiver's plane at that texel.
+      vec2 offset = lower_left + gathered[c] - center;
+      ivec2 texel = clamp(ivec2(floor(lower_left + gathered[c])), ivec2(0), ivec2(size) - 1);
+      if (occluders[c] < z + dot(gradient, offset) &&
+          texel_occludes(view, texel, ivec2(size), occluders[c], cone)) {
+        blockers += 1.0;
+        blocker_depth += occluders[c];
+      }
+    }
+  }
+  return vec2(blockers, blocker_depth);
+}
+
+// PCSS: blocker search (cone_blocker_search()), penumbra estimate, PCF over
+// it, each with as many samples as its region's size in texels asks for,
+// up to blocker_samples and filter_samples. The search's region's shape
+// matters less than its spread, and the rotation dithers where a
+// penumbra's outer end stops finding blockers. The filter takes bilinear
+// compares at the pixel's shifted R2 set over the axis-aligned square of
+// the light's source (square_samples.glsl). Both patterns come from one
+// per-pixel noise value in [0, 1) (`rotation` is the angle 2 pi noise),
+// so neighbouring pixels sample differently and a 3x3 neighbourhood
+// averages much of the noise away. `cone`: the cone the light's source
+// really subtends (occluder_cone() with no minimum).
+float shadow_pcss(sampler2DArray depth_maps, sampler2DArrayShadow compare_maps, int v,
+                  GpuShadowView view, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
+                  vec2 rotation, float noise, int blocker_samples, int filter_samples) {
+  float d_receiver = linear_depth_of(view, s.depth);
+  vec2 found =
+      cone_blocker_search(depth_maps, v, view, s, z, gradient, cone, rotation, blocker_samples, 1.0);
+  float blockers = found.x, blocker_depth = found.y;
+  if (blockers == 0.0) return 1.0;  // nothing between the receiver and the light
+  float d_blocker = linear_depth_of(view, blocker_depth / blockers);
+  float width = min(
+      penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver),
+      float(MAX_PCF_WIDTH));
+  if (width <= 0.0) return shadow_hard(depth_maps, v, s.uv, z, 0.0);
+  float kernel = pcss_kernel_width(width);
+  vec2 shift = square_sample_shift(noise);
+  return shadow_pcf_bilinear(compare_maps, v, s.uv, z, gradient, kernel,
+                             pcss_filter_sample_count(kernel, filter_samples), shift);
+}
