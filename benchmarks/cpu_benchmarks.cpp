@@ -5,12 +5,12 @@
 
 #include <random>
 
+#include "penumbra/shadow/light_view.hpp"
+#include "penumbra/shadow/moment_math.hpp"
+#include "penumbra/shadow/poisson_disc.hpp"
 #include "reference/shadow_ray_tracer.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/mesh.hpp"
-#include "shadow/light_view.hpp"
-#include "shadow/moment_math.hpp"
-#include "shadow/poisson_disc.hpp"
 
 namespace penumbra {
 namespace {

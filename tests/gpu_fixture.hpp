@@ -3,7 +3,7 @@
 // test fails if the driver reported a GL error while it ran.
 #include <gtest/gtest.h>
 
-#include "gl/context.hpp"
+#include "penumbra/gl/context.hpp"
 
 namespace penumbra::testing {
 

@@ -6,4 +6,527 @@
 // engine's UI can offer them exactly as penumbra's own command line does.
 // validate(const ShadowSettings&) throws UsageError naming the parameter
 // out of range.
-#include "core/settings.hpp"
+//
+// The same tables are the one source of every front end's parameters
+// (penumbra's CLI, viewer, scene files and report): each has its name,
+// help, range and default here and nowhere else; the renderer's own
+// settings (SSAO, the reference, the image) live here beside them for that
+// reason.
+#include <array>
+#include <string_view>
+#include <utility>
+
+#include "penumbra/enum_names.hpp"
+#include "penumbra/shared/bindings.h"
+
+namespace penumbra {
+
+enum class Technique { None, Hard, Pcf, Pcss, Backprojection, Vsm, Esm, Msm, Msm16, Evsm2, Evsm4 };
+
+inline constexpr std::array<std::pair<Technique, std::string_view>, 11> kTechniqueNames{{
+    {Technique::None, "none"},
+    {Technique::Hard, "hard"},
+    {Technique::Pcf, "pcf"},
+    {Technique::Pcss, "pcss"},
+    {Technique::Backprojection, "backprojection"},
+    {Technique::Vsm, "vsm"},
+    {Technique::Esm, "esm"},
+    {Technique::Msm, "msm"},
+    {Technique::Msm16, "msm16"},
+    {Technique::Evsm2, "evsm2"},
+    {Technique::Evsm4, "evsm4"},
+}};
+
+// Techniques whose map is a filterable representation of depth (moments or
+// an exponential) rather than depth itself.
+constexpr bool is_filterable(Technique t) {
+  return t == Technique::Vsm || t == Technique::Esm || t == Technique::Msm ||
+         t == Technique::Msm16 || t == Technique::Evsm2 || t == Technique::Evsm4;
+}
+
+// Whether the technique's map can be summed in the 32-bit fixed-point
+// summed-area table: not the exponential ones, whose values span dozens of
+// orders of magnitude (validate() refuses them with --filter sat).
+constexpr bool supports_sat(Technique t) {
+  return is_filterable(t) && t != Technique::Esm && t != Technique::Evsm2 && t != Technique::Evsm4;
+}
+
+enum class Filter { Gaussian, Sat };
+
+inline constexpr std::array<std::pair<Filter, std::string_view>, 2> kFilterNames{{
+    {Filter::Gaussian, "gaussian"},
+    {Filter::Sat, "sat"},
+}};
+
+// Whether --soft applies: the moment techniques (vsm, msm, msm16) filtered
+// by the summed-area table, from which the penumbra-sized filter is read.
+constexpr bool supports_soft_shadows(Technique t, Filter f) {
+  return f == Filter::Sat && (t == Technique::Vsm || t == Technique::Msm || t == Technique::Msm16);
+}
+
+enum class View {
+  Final,
+  Shadow,
+  ShadowReference,
+  ShadowMap,
+  Moments,
+  MomentsFiltered,
+  Normals,
+  Albedo,
+  Ao,
+  Cascades
+};
+
+inline constexpr std::array<std::pair<View, std::string_view>, 10> kViewNames{{
+    {View::Final, "final"},
+    {View::Shadow, "shadow"},
+    {View::ShadowReference, "shadow-reference"},
+    {View::ShadowMap, "shadow-map"},
+    {View::Moments, "moments"},
+    {View::MomentsFiltered, "moments-filtered"},
+    {View::Normals, "normals"},
+    {View::Albedo, "albedo"},
+    {View::Ao, "ao"},
+    {View::Cascades, "cascades"},
+}};
+
+// Names of on/off switches on the command line.
+inline constexpr std::array<std::pair<bool, std::string_view>, 2> kOnOffNames{{
+    {true, "on"},
+    {false, "off"},
+}};
+
+// Views that show a light's map rather than the camera's image.
+constexpr bool is_map_view(View v) {
+  return v == View::ShadowMap || v == View::Moments || v == View::MomentsFiltered;
+}
+
+struct ShadowSettings {
+  Technique technique = Technique::Hard;
+  // Shadow-map width and height in texels.
+  int map_size = 2048;
+  // Constant depth bias, in shadow-map texels (the world size of a texel at
+  // the receiver, converted to each shadow view's own depth range, so the
+  // bias means the same at every scene scale).
+  float constant_bias = 0.5f;
+  // Slope-scaled bias: multiples of the receiver's depth change across one texel.
+  float slope_bias = 1.5f;
+  // Largest tan(angle to the light) the slope-scaled bias follows.
+  float max_slope = 10.0f;
+  // Filtered techniques (vsm, esm, msm, msm16): extra slope-scaled bias per
+  // texel of filter radius W, since a filter spreads a planar receiver's
+  // own depth over +-W texels of its slope. Without it, MSM darkens sloped
+  // lit surfaces under wide filters (measured on the default scene).
+  float filter_slope_bias = 0.25f;
+  // Normal offset: the lookup moves this many texels along the surface normal.
+  float normal_offset = 0.5f;
+  // Width of a spot light's source in world units (0: a point, hard
+  // shadows), for pcss, backprojection, --soft and the area-light reference; the diameter
+  // of a point light's spherical source.
+  float light_size = 0.5f;
+  // Angular diameter of a directional light's source in degrees (the sun
+  // is about 0.53), for the same.
+  float sun_angle = 1.0f;
+
+  // PCF: width of the square window in texels (0: the plain hard test),
+  // sampled with the first pcf_samples points of the Poisson set (1: the
+  // hardware's 2x2 bilinear compare).
+  float pcf_width = 4.0f;
+  int pcf_samples = 16;
+  // PCSS (Fernando 2005): the most samples of the blocker search (each
+  // gathers 2x2 texels) and of the PCF over the estimated penumbra (each a
+  // 2x2 bilinear compare); fewer where the region is narrow (one per 4
+  // texels searched, one per texel filtered).
+  int pcss_blocker_samples = 32;
+  int pcss_filter_samples = 64;
+  // Moment soft shadows (vsm, msm, msm16 with --filter sat): the filter
+  // width follows the estimated penumbra, at least the fixed --blur.
+  bool soft = false;
+  // msm/msm16 --soft: the blockers' depth from the mean and the occluded
+  // fraction, as vsm estimates it, instead of Peters' quadrature.
+  bool soft_two_moment_blockers = false;
+
+  // Filtering of the vsm, esm, msm and msm16 maps.
+  Filter filter = Filter::Gaussian;
+  // Filter radius W in texels: a Gaussian of 2W+1 taps (s = W/2), or a
+  // (2W+1)^2 box from the summed-area table. 0: no filtering.
+  int blur = 2;
+  // Gaussian filters of radius 1..kMaxFusedBlur: resolve and blur in one
+  // compute pass (Peters et al., HPG 2017) instead of a resolve and two
+  // blur passes. Same maps up to rounding; off measures the two-pass path.
+  bool fused = true;
+  // Mipmapped filtered maps (vsm, esm, evsm2/4, msm, msm16 with the
+  // Gaussian filter or none): after the filter, a 2x2 box chain down to
+  // 1x1, read with trilinear and anisotropic filtering over the pixel's
+  // footprint on the receiver, so distant receivers average the map over
+  // what the pixel covers instead of aliasing (MJP's EnableShadowMips).
+  bool shadow_mips = false;
+  // --shadow-mips: the largest ratio of a pixel's footprint's long side to
+  // its short side that the lookup follows with anisotropic filtering
+  // (clamped to the device's GL_MAX_TEXTURE_MAX_ANISOTROPY); 1: trilinear
+  // only, the footprint's long side choosing the level. CPU rasterizers
+  // (llvmpipe) filter trilinearly whatever this says (LightingPass).
+  int shadow_anisotropy = 16;
+  // ESM exponent c (Annen et al. 2008); the map stores exp(c (z - 1)).
+  float esm_c = 60.0f;
+  // EVSM exponents c+ and c- (Lauritzen & McCool 2008) of the warps
+  // exp(c+ u) and -exp(-c- u), u = 2 z-bar - 1 (shaders/shadow/evsm.glsl):
+  // Lauritzen's and MJP's defaults. evsm2 uses c+ only.
+  float evsm_positive = 40.0f;
+  float evsm_negative = 5.0f;
+  // MSM moment bias alpha for 32-bit float moments of u = 2 z-bar - 1
+  // (Peters & Klein 2015, Alg. 3), toward (0, 0.375, 0, 0.375) as in
+  // Peters' JCGT 2017 code. Smaller is sharper (compare's error against the
+  // filtered reference falls slightly down to 3e-7), but at filtered edges
+  // near the far end of the depth range (tests/gpu/moment_shader_test.cpp)
+  // float32 rounding then moves G by more than 0.05 (3e-7: up to 0.06 on
+  // the GPU, 0.17 with the solve in double; 5e-7: 0.0498); 1e-6 keeps it
+  // below 0.045.
+  float msm_alpha = 1e-6f;
+  // MSM moment bias alpha for 16-bit quantized moments, and for moments
+  // summed in the fixed-point summed-area table, toward (0, 0.628, 0, 0.628).
+  // 2e-5 measures better on the default scene but lets the float solve of
+  // 16-bit far-end edges jump by up to 1.
+  float msm16_alpha = 5e-5f;
+  // VSM minimum variance, in squared shadow-map texels (converted per view
+  // like the constant bias).
+  float vsm_min_variance = 1.0f;
+  // Light-bleeding reduction for vsm and msm: lit fractions below this
+  // amount become 0 and the rest is rescaled. 0: off.
+  float bleed_reduction = 0.0f;
+
+  // Accumulated soft shadows (render, compare, view): this many sub-frames, each
+  // with the shadow maps rendered from another point of the light's source
+  // (light_size, sun_angle), averaged. 1: one frame from the light's centre.
+  int accumulate = 1;
+  // Set for each sub-frame by render_subframe, not by the user: the
+  // sub-frame's index; its point of a spot light's square, in [0, 1]^2,
+  // within whose cell the hard test dithers each pixel's points
+  // (shaders/shadow/accumulate.glsl); and the source's outward normal at
+  // the point (spot, point lights), which weights the shadow view.
+  int subframe = 0;
+  float subframe_u = 0.5f;
+  float subframe_v = 0.5f;
+  std::array<float, 3> subframe_normal{0.0f, 0.0f, 0.0f};
+
+  // Directional lights: shadow cascades along the camera's view (1-4).
+  int cascades = 3;
+  // Split scheme of the cascades: the blend lambda log + (1 - lambda)
+  // uniform of Zhang et al.'s practical split scheme (2006).
+  float cascade_lambda = 0.75f;
+  // Fraction of each cascade, at its far end, over which it blends into the
+  // next one.
+  float cascade_blend = 0.1f;
+  // Point lights: widen each cube face's frustum beyond 90 degrees by the
+  // filter's reach plus a margin, in texels, so a filter near a face's edge
+  // reads the scene from its own face (no seams between faces).
+  bool guard_band = true;
+};
+
+// Screen-space ambient obscurance (seed 003, Task 6) over the G-buffer: k
+// points in the hemisphere of radius r around the normal, each counted as
+// unoccluded when the depth buffer does not hide it (within the depth bias),
+// or when it lies more than range * r behind the surface that hides it.
+struct SsaoSettings {
+  bool enabled = true;
+  // Samples per pixel, k.
+  int samples = 16;
+  // Hemisphere radius r in world units: the reach of the obscurance. About
+  // the size of the default scene's objects, so the ground darkens under
+  // the sphere floating 0.9 above it as well as at the feet of the others.
+  float radius = 1.0f;
+  // Depth bias in world units: a sample counts as hidden only when it lies
+  // more than this behind the surface seen in its direction. That surface's
+  // depth is taken on its tangent plane (exact for planes), so the bias only
+  // absorbs what a plane does not describe: the facets of tessellated curved
+  // surfaces, whose interpolated normals lean over them.
+  float bias = 0.02f;
+  // Range check, in multiples of r: a sample hidden by a surface more than
+  // range * r in front of it counts as unoccluded (seed 003 uses 5). That
+  // surface is then more than (range - 1) r from the shaded point, so 2 is
+  // the smallest range that never discards an occluder seen within r of it;
+  // larger ranges let objects floating in front of a surface darken it in a
+  // halo around their silhouettes (measured: a sphere 1.1 above the ground
+  // seen from 35 degrees darkens the ground to 0.51 at range 5 with
+  // r = 0.5, not at all at 2; the contact darkening at a box's foot is the
+  // same at both).
+  float range = 2.0f;
+  // Radius in AO texels of the depth- and normal-aware blur; 0: none. At 6
+  // no trace of the per-pixel rotation's pattern is left with 16 samples
+  // (at 4 its diagonal streaks remain on the ground of the default scene).
+  int blur = 6;
+  // Computes the AO at half the width and height, then upsamples it with
+  // depth and normal awareness.
+  bool half_resolution = false;
+};
+
+// The ray-traced reference (src/reference/): how it samples. The light's
+// size is the techniques' own: ShadowSettings::light_size (spot) or
+// sun_angle (directional).
+struct ReferenceSettings {
+  // Shadow rays per pixel towards an area light (a source size > 0), spread
+  // over the light by correlated multi-jittered sampling; a point light
+  // takes one ray.
+  int samples = 256;
+};
+
+struct RenderSettings {
+  int width = 1280;
+  int height = 720;
+  View view = View::Final;
+  // Which light the shadow and shadow-map views show.
+  int light_index = 0;
+};
+
+// The sections of every command's --help, in the order they are shown.
+// A parameter's group is part of its table entry below; one without a
+// group (Unset) is shown in its table's section (see add_params in
+// src/app/options.cpp), and tests/unit/cli_help_test.cpp lists it.
+enum class OptionGroup {
+  Unset,
+  Output,
+  SceneAndCamera,
+  Lights,
+  Technique,
+  Filter,
+  SoftShadows,
+  Bias,
+  Ssao,
+  Reference,
+  Measurement,
+  Other,
+};
+
+inline constexpr std::array<std::pair<OptionGroup, std::string_view>, 11> kOptionGroupNames{{
+    {OptionGroup::Output, "Output"},
+    {OptionGroup::SceneAndCamera, "Scene and camera"},
+    {OptionGroup::Lights, "Lights"},
+    {OptionGroup::Technique, "Technique"},
+    {OptionGroup::Filter, "Filter"},
+    {OptionGroup::SoftShadows, "Soft shadows"},
+    {OptionGroup::Bias, "Bias"},
+    {OptionGroup::Ssao, "SSAO"},
+    {OptionGroup::Reference, "Reference"},
+    {OptionGroup::Measurement, "Measurement"},
+    {OptionGroup::Other, "Other"},
+}};
+
+// A numeric parameter: flag name (without "--"), help, range, where it
+// lives, and its --help section. The default is the struct member's
+// initializer.
+template <class Settings, class T>
+struct NumericParam {
+  std::string_view name;
+  std::string_view help;
+  T min;
+  T max;
+  T Settings::*field;
+  OptionGroup group = OptionGroup::Unset;
+};
+
+// An on/off parameter given as "--name" or "--no-name": flag name (without
+// "--"), help, where it lives, and its --help section.
+template <class Settings>
+struct FlagParam {
+  std::string_view name;
+  std::string_view help;
+  bool Settings::*field;
+  OptionGroup group = OptionGroup::Unset;
+};
+
+inline constexpr int kMaxMapSize =
+    32768;  // the largest any GPU offers; each GPU's own limit is checked too
+inline constexpr int kMaxImageSize = 16384;
+
+// The ESM map stores exp(c (z - 1)) in 32-bit float: in (0, 1], so it
+// cannot overflow; c <= 87 keeps exp(-c) above the smallest normal float.
+inline constexpr float kEsmMaxC = 87.0f;
+// EVSM stores exp(c u)^2 for u in [-1, 1] in 32-bit float: exp(2 c) stays
+// below the largest float (exp(88.7)) with room for a filter's sums up to
+// c = 44; 42 as Lauritzen's and MJP's code clamp it.
+inline constexpr float kEvsmMaxExponent = 42.0f;
+inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
+// Widest Gaussian the fused resolve + filter pass takes: its tile's apron
+// then still fits the 32 KiB of shared memory every GL 4.5 device has.
+inline constexpr int kMaxFusedBlur = 16;
+inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
+
+inline constexpr std::array<NumericParam<ShadowSettings, float>, 17> kShadowFloatParams{{
+    {"constant-bias",
+     "constant depth bias, in shadow-map texels (a texel's world size at the receiver)", 0.0f,
+     64.0f, &ShadowSettings::constant_bias, OptionGroup::Bias},
+    {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
+     &ShadowSettings::slope_bias, OptionGroup::Bias},
+    {"max-slope", "largest slope tan(theta) the slope-scaled bias follows", 0.0f, 1000.0f,
+     &ShadowSettings::max_slope, OptionGroup::Bias},
+    {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
+     0.0f, 4.0f, &ShadowSettings::filter_slope_bias, OptionGroup::Bias},
+    {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
+     &ShadowSettings::normal_offset, OptionGroup::Bias},
+    {"light-size",
+     "width of a spot light's source in world units (0: a point), for pcss, backprojection, "
+     "--soft and "
+     "the area-light reference (a square facing the light's direction); a point light's "
+     "source is a sphere of this diameter",
+     0.0f, 100.0f, &ShadowSettings::light_size, OptionGroup::Lights},
+    {"sun-angle",
+     "angular diameter of a directional light's source in degrees (0: a point); the reference "
+     "traces the disc of directions this wide",
+     0.0f, 45.0f, &ShadowSettings::sun_angle, OptionGroup::Lights},
+    {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
+     &ShadowSettings::pcf_width, OptionGroup::Technique},
+    {"esm-c", "ESM exponent c, per unit of the shadow view's relative depth z-bar", 1.0f, kEsmMaxC,
+     &ShadowSettings::esm_c, OptionGroup::Technique},
+    {"evsm-positive", "EVSM positive exponent c+ of exp(c+ (2 z-bar - 1)) (evsm2, evsm4)", 1.0f,
+     kEvsmMaxExponent, &ShadowSettings::evsm_positive, OptionGroup::Technique},
+    {"evsm-negative", "EVSM negative exponent c- of -exp(-c- (2 z-bar - 1)) (evsm4)", 1.0f,
+     kEvsmMaxExponent, &ShadowSettings::evsm_negative, OptionGroup::Technique},
+    {"msm-alpha",
+     "MSM moment bias alpha for msm's 32-bit float moments of 2 z-bar - 1, toward (0, 0.375, 0, "
+     "0.375); below about 5e-7 float rounding shows near the far end of the depth range",
+     1e-8f, 0.5f, &ShadowSettings::msm_alpha, OptionGroup::Technique},
+    {"msm16-alpha",
+     "MSM moment bias alpha for msm16's 16-bit moments and for moments summed in the "
+     "summed-area table (msm and msm16 with --filter sat), toward (0, 0.628, 0, 0.628)",
+     1e-8f, 0.5f, &ShadowSettings::msm16_alpha, OptionGroup::Technique},
+    {"vsm-min-variance",
+     "VSM minimum variance, in squared shadow-map texels (EVSM: scaled by its warp's slope)", 0.0f,
+     4096.0f, &ShadowSettings::vsm_min_variance, OptionGroup::Technique},
+    {"bleed-reduction", "light-bleeding reduction for vsm, msm and evsm (0: off)", 0.0f, 0.99f,
+     &ShadowSettings::bleed_reduction, OptionGroup::Technique},
+    {"cascade-lambda",
+     "directional lights: cascade split scheme, lambda * logarithmic + (1 - lambda) * uniform "
+     "(Zhang et al. 2006)",
+     0.0f, 1.0f, &ShadowSettings::cascade_lambda, OptionGroup::Lights},
+    {"cascade-blend",
+     "directional lights: fraction of each cascade, at its far end, blended into the next", 0.0f,
+     0.5f, &ShadowSettings::cascade_blend, OptionGroup::Lights},
+}};
+
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 7> kShadowIntParams{{
+    {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
+     &ShadowSettings::map_size, OptionGroup::Technique},
+    {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
+     kMaxBlur, &ShadowSettings::blur, OptionGroup::Filter},
+    {"pcf-samples", "PCF samples from the Poisson set (1: hardware 2x2 compare)", 1,
+     kMaxShadowSamples, &ShadowSettings::pcf_samples, OptionGroup::Technique},
+    {"pcss-blocker-samples",
+     "PCSS blocker-search samples at most, each gathering 2x2 texels (one per 4 texels of the "
+     "search region)",
+     1, kMaxShadowSamples, &ShadowSettings::pcss_blocker_samples, OptionGroup::Technique},
+    {"pcss-filter-samples",
+     "PCSS filter samples at most, each a 2x2 bilinear compare (one per texel of the penumbra)", 1,
+     kMaxShadowSamples, &ShadowSettings::pcss_filter_samples, OptionGroup::Technique},
+    {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
+     &ShadowSettings::cascades, OptionGroup::Lights},
+    {"shadow-anisotropy",
+     "--shadow-mips: most anisotropic filtering along the pixel's footprint (up to the device's "
+     "limit; llvmpipe: 1); 1: trilinear only",
+     1, 16, &ShadowSettings::shadow_anisotropy, OptionGroup::Filter},
+}};
+
+inline constexpr int kMaxAccumulate = 4096;
+
+// render, compare and view take it (view refines while nothing changes), not
+// bench or report, so it is a table of its own.
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kAccumulateParams{{
+    {"accumulate",
+     "average this many sub-frames, each with the shadow maps rendered from another point of "
+     "the light's source (--light-size, --sun-angle; stratified, the same points every run); "
+     "1: off",
+     1, kMaxAccumulate, &ShadowSettings::accumulate, OptionGroup::SoftShadows},
+}};
+
+inline constexpr int kMaxSsaoSamples = 64;  // SSAO_MAX_SAMPLES in shaders/shared/bindings.h
+inline constexpr int kMaxSsaoBlur = 16;
+
+inline constexpr std::array<NumericParam<SsaoSettings, int>, 2> kSsaoIntParams{{
+    {"ssao-samples", "SSAO samples per pixel", 1, kMaxSsaoSamples, &SsaoSettings::samples,
+     OptionGroup::Ssao},
+    {"ssao-blur", "radius in AO texels of the depth- and normal-aware SSAO blur; 0: none", 0,
+     kMaxSsaoBlur, &SsaoSettings::blur, OptionGroup::Ssao},
+}};
+
+inline constexpr std::array<NumericParam<SsaoSettings, float>, 3> kSsaoFloatParams{{
+    {"ssao-radius", "SSAO hemisphere radius in world units", 1e-4f, 1000.0f, &SsaoSettings::radius,
+     OptionGroup::Ssao},
+    {"ssao-bias", "SSAO depth bias in world units", 0.0f, 100.0f, &SsaoSettings::bias,
+     OptionGroup::Ssao},
+    {"ssao-range",
+     "SSAO range check: occluders more than this many radii in front of a sample are ignored", 0.0f,
+     1000.0f, &SsaoSettings::range, OptionGroup::Ssao},
+}};
+
+inline constexpr std::array<FlagParam<ShadowSettings>, 2> kShadowFlagParams{{
+    {"soft",
+     "vsm/msm/msm16 with --filter sat: filter width follows the estimated penumbra (blocker "
+     "search from the moments), at least --blur",
+     &ShadowSettings::soft, OptionGroup::SoftShadows},
+    {"soft-two-moment-blockers",
+     "msm/msm16 --soft: estimate the blockers' depth from the mean depth and the occluded "
+     "fraction with the unoccluded texels at the receiver's depth (Yang et al. 2010, as vsm "
+     "does) instead of the four-moment quadrature of Peters et al. 2016; closer at the "
+     "bunny's foot, farther off in wide penumbrae",
+     &ShadowSettings::soft_two_moment_blockers, OptionGroup::SoftShadows},
+}};
+
+inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{
+    {"width", "image width in pixels", 1, kMaxImageSize, &RenderSettings::width,
+     OptionGroup::Output},
+    {"height", "image height in pixels", 1, kMaxImageSize, &RenderSettings::height,
+     OptionGroup::Output},
+    {"light-index", "which light the shadow and shadow-map views show (0 = first)", 0, 3,
+     &RenderSettings::light_index, OptionGroup::Lights},
+}};
+
+inline constexpr int kMaxReferenceSamples = 65536;
+
+inline constexpr std::array<NumericParam<ReferenceSettings, int>, 1> kReferenceIntParams{{
+    {"reference-samples",
+     "traced reference: shadow rays per pixel towards an area light (--light-size or "
+     "--sun-angle > 0)",
+     1, kMaxReferenceSamples, &ReferenceSettings::samples, OptionGroup::Reference},
+}};
+
+// An on/off parameter given as "--name" or "--no-name" like a FlagParam,
+// and also, as it once was, as "--name on|off".
+template <class Settings>
+struct SwitchParam {
+  std::string_view name;
+  std::string_view help;
+  bool Settings::*field;
+  OptionGroup group = OptionGroup::Unset;
+};
+
+inline constexpr std::array<SwitchParam<ShadowSettings>, 3> kShadowSwitchParams{{
+    {"guard-band",
+     "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
+     "filters near a face's edge read their own face (no seams)",
+     &ShadowSettings::guard_band, OptionGroup::Lights},
+    {"fused",
+     "filterable techniques with --filter gaussian and --blur 1..16: resolve and blur in one "
+     "compute pass; off (or a wider blur) runs the resolve, then the horizontal and vertical "
+     "blur passes",
+     &ShadowSettings::fused, OptionGroup::Filter},
+    {"shadow-mips",
+     "filterable techniques with --filter gaussian (or --blur 0): mip chain of the filtered map, "
+     "read trilinearly and anisotropically over the pixel's footprint (distant receivers do not "
+     "alias)",
+     &ShadowSettings::shadow_mips, OptionGroup::Filter},
+}};
+
+inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{
+    {"ssao", "screen-space ambient occlusion darkening the ambient light", &SsaoSettings::enabled,
+     OptionGroup::Ssao},
+    {"ssao-half-resolution",
+     "compute the AO at half width and height, then upsample it with depth and normal awareness",
+     &SsaoSettings::half_resolution, OptionGroup::Ssao},
+}};
+
+// Throws UsageError naming the first parameter outside its range.
+void validate(const ShadowSettings& settings);
+void validate(const RenderSettings& settings);
+void validate(const SsaoSettings& settings);
+void validate(const ReferenceSettings& settings);
+
+}  // namespace penumbra

@@ -12,8 +12,9 @@
 //   PENUMBRA_UNIT_SHADOW_DEPTH     texture unit, z-bar depth maps    (default 13)
 //   PENUMBRA_UNIT_SHADOW_FILTERED  texture unit, filtered maps       (default 14)
 //   PENUMBRA_UNIT_SHADOW_COMPARE   texture unit, comparison sampler  (default 15)
-// Relative include: installed beside this header as penumbra/shared/.
-#include "shared/gpu_types.h"
+// The struct's one declaration, compiled by the GLSL too (shaders/shared/,
+// installed as include/penumbra/shared/).
+#include "penumbra/shared/gpu_types.h"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-// Which of a light's shadow views (src/shadow/shadow_views.hpp) a point
+// Which of a light's shadow views (penumbra/shadow/shadow_views.hpp) a point
 // reads: a spot light's only view; the cube face of a point light that the
 // direction from the light falls in; the cascade of a directional light
 // that the point's camera depth falls in, blended into the next cascade

@@ -16,7 +16,7 @@ using mat4 = glm::mat4;
 
 // One shadow view: a 2D map that is one layer of the shadow-map arrays. A
 // spot light has one, a point light six (the faces of a cube), a
-// directional light one per cascade (see src/shadow/shadow_views.hpp).
+// directional light one per cascade (see include/penumbra/shadow/shadow_views.hpp).
 struct GpuShadowView {
   mat4 view;                     // world -> view space (the view looks down -z)
   mat4 view_projection;          // world -> clip space
@@ -64,7 +64,7 @@ struct GpuFrame {
   vec4 ambient;  // rgb: ambient light colour
 };
 
-// Shadow parameters (see ShadowSettings in src/core/settings.hpp for their
+// Shadow parameters (see ShadowSettings in include/penumbra/settings.hpp for their
 // meaning). Scalars only, four to a row, so std140 matches the C++ layout.
 struct GpuShadow {
   float constant_bias;  // texels
@@ -103,7 +103,7 @@ struct GpuShadow {
   int accumulate_weighted;
 };
 
-// Screen-space ambient occlusion (see SsaoSettings in src/core/settings.hpp).
+// Screen-space ambient occlusion (see SsaoSettings in include/penumbra/settings.hpp).
 struct GpuSsao {
   mat4 view;                // world -> camera view
   mat4 projection;          // camera view -> clip

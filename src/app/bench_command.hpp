@@ -5,7 +5,7 @@
 #include <string>
 
 #include "app/options.hpp"
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 

@@ -14,10 +14,10 @@
 #include "app/option_style.hpp"
 #include "app/suggestions.hpp"
 #include "core/display_name.hpp"
-#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/signal_cleanup.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

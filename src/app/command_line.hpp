@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

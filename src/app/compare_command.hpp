@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "app/option_style.hpp"
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 

@@ -5,7 +5,7 @@
 
 #include "app/option_style.hpp"
 #include "core/display_name.hpp"
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/mesh.hpp"
 
 namespace penumbra {

@@ -2,13 +2,13 @@
 // How every option is registered, so that each kind reads the same in
 // --help and in the completion script: a placeholder for its value (N, X,
 // NAME, LIST, FILE), its description, its choices or range, its default,
-// and its --help section (OptionGroup, from core/settings.hpp).
+// and its --help section (OptionGroup, from penumbra/settings.hpp).
 #include <CLI/CLI.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 

@@ -5,7 +5,7 @@
 
 #include "app/option_style.hpp"
 #include "app/suggestions.hpp"
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

@@ -1,12 +1,12 @@
 #pragma once
 // Registers the shared settings structs with CLI11, from the parameter
-// tables in core/settings.hpp: one name, one help text, one range, one
+// tables in penumbra/settings.hpp: one name, one help text, one range, one
 // default (the struct's) and one --help section per parameter.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 

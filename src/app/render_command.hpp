@@ -5,7 +5,7 @@
 
 #include "app/options.hpp"
 #include "app/scene_options.hpp"
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 

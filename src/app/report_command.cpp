@@ -10,10 +10,10 @@
 #include "app/light_choice.hpp"
 #include "app/option_style.hpp"
 #include "app/scene_source.hpp"
-#include "core/error.hpp"
-#include "gl/context.hpp"
 #include "io/image.hpp"
 #include "io/staged_folder.hpp"
+#include "penumbra/error.hpp"
+#include "penumbra/gl/context.hpp"
 #include "report/study.hpp"
 #include "scene/scene_file.hpp"
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "app/option_style.hpp"
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/scene_checks.hpp"
 
 namespace penumbra {

@@ -1,7 +1,7 @@
 #include "app/scene_source.hpp"
 
 #include "app/option_style.hpp"
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/scene_file.hpp"

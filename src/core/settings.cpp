@@ -1,9 +1,9 @@
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 #include <cmath>
 #include <sstream>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

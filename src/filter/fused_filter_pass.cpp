@@ -1,13 +1,13 @@
-#include "filter/fused_filter_pass.hpp"
+#include "penumbra/filter/fused_filter_pass.hpp"
 
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
-#include "filter/gaussian.hpp"
-#include "shadow/representation.hpp"
-#include "shared/bindings.h"
+#include "penumbra/error.hpp"
+#include "penumbra/filter/gaussian.hpp"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-#include "filter/gaussian.hpp"
+#include "penumbra/filter/gaussian.hpp"
 
 #include <cmath>
 

@@ -1,11 +1,11 @@
-#include "filter/gaussian_blur_pass.hpp"
+#include "penumbra/filter/gaussian_blur_pass.hpp"
 
 #include <string>
 
-#include "core/settings.hpp"
-#include "filter/gaussian.hpp"
-#include "shadow/representation.hpp"
-#include "shared/bindings.h"
+#include "penumbra/filter/gaussian.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shared/bindings.h"
 #include "shared/filter_tiles.h"
 
 namespace penumbra {

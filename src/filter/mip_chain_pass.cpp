@@ -1,9 +1,9 @@
-#include "filter/mip_chain_pass.hpp"
+#include "penumbra/filter/mip_chain_pass.hpp"
 
 #include <algorithm>
 
-#include "shadow/representation.hpp"
-#include "shared/bindings.h"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

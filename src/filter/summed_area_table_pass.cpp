@@ -1,11 +1,11 @@
-#include "filter/summed_area_table_pass.hpp"
+#include "penumbra/filter/summed_area_table_pass.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "gl/context.hpp"
-#include "shadow/representation.hpp"
-#include "shared/bindings.h"
+#include "penumbra/gl/context.hpp"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shared/bindings.h"
 #include "shared/filter_tiles.h"
 
 namespace penumbra {

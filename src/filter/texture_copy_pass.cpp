@@ -1,7 +1,7 @@
-#include "filter/texture_copy_pass.hpp"
+#include "penumbra/filter/texture_copy_pass.hpp"
 
-#include "shadow/representation.hpp"
-#include "shared/bindings.h"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

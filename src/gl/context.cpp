@@ -1,4 +1,4 @@
-#include "gl/context.hpp"
+#include "penumbra/gl/context.hpp"
 
 #include <epoxy/gl.h>
 #include <sys/resource.h>
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <vector>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra::gl {
 

@@ -1,4 +1,4 @@
-#include "gl/debug_output.hpp"
+#include "penumbra/gl/debug_output.hpp"
 
 #include <cstdio>
 

@@ -1,6 +1,6 @@
-#include "gl/gpu_profiler.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra::gl {
 

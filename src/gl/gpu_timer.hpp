@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "gl/handle.hpp"
+#include "penumbra/gl/handle.hpp"
 
 namespace penumbra::gl {
 

@@ -1,9 +1,9 @@
-#include "gl/program.hpp"
+#include "penumbra/gl/program.hpp"
 
 #include <vector>
 
-#include "core/error.hpp"
-#include "gl/resources.hpp"
+#include "penumbra/error.hpp"
+#include "penumbra/gl/resources.hpp"
 
 namespace penumbra::gl {
 

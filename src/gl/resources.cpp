@@ -1,10 +1,10 @@
-#include "gl/resources.hpp"
+#include "penumbra/gl/resources.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <string>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra::gl {
 

@@ -1,12 +1,12 @@
-#include "gl/shader_source.hpp"
+#include "penumbra/gl/shader_source.hpp"
 
 #include <filesystem>
 #include <regex>
 #include <set>
 #include <sstream>
 
-#include "core/error.hpp"
 #include "gl/embedded_shaders.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra::gl {
 

@@ -11,8 +11,8 @@
 #include <filesystem>
 
 #include "core/display_name.hpp"
-#include "core/error.hpp"
 #include "io/signal_cleanup.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

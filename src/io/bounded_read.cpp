@@ -8,7 +8,7 @@
 #include <cstring>
 
 #include "core/display_name.hpp"
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <new>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

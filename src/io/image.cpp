@@ -11,8 +11,8 @@
 #include <filesystem>
 
 #include "core/display_name.hpp"
-#include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "penumbra/error.hpp"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

@@ -4,8 +4,8 @@
 #include <system_error>
 
 #include "core/display_name.hpp"
-#include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

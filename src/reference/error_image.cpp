@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

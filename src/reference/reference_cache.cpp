@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/display_name.hpp"
-#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bounded_read.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

@@ -12,7 +12,7 @@
 #include <limits>
 #include <string>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "reference/light_sampling.hpp"
 #include "reference/source_point_sets.hpp"
 

@@ -19,13 +19,13 @@
 #include <memory>
 #include <vector>
 
-#include "core/settings.hpp"
 #include "io/image.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/light_view.hpp"
 #include "reference/caster_cutouts.hpp"
 #include "render/surface_points.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
-#include "shadow/light_view.hpp"
 
 // Embree's handle types (RTCDevice, RTCScene), so this header needs no
 // Embree include.

@@ -5,8 +5,8 @@
 #include <ctime>
 #include <optional>
 
-#include "core/error.hpp"
 #include "io/progress_bar.hpp"
+#include "penumbra/error.hpp"
 #include "reference/reference_cache.hpp"
 
 namespace penumbra {

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string>
 
-#include "core/settings.hpp"
 #include "io/image.hpp"
+#include "penumbra/settings.hpp"
 #include "reference/shadow_ray_tracer.hpp"
 #include "render/renderer.hpp"
 

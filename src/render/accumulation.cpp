@@ -3,9 +3,9 @@
 #include <cmath>
 #include <vector>
 
+#include "penumbra/shadow/light_view.hpp"
 #include "reference/light_sampling.hpp"
 #include "render/accumulator.hpp"
-#include "shadow/light_view.hpp"
 
 namespace penumbra {
 

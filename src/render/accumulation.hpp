@@ -17,9 +17,9 @@
 
 #include <vector>
 
-#include "core/settings.hpp"
-#include "gl/gpu_profiler.hpp"
 #include "io/image.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
+#include "penumbra/settings.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 

@@ -4,7 +4,7 @@
 #include <string_view>
 #include <vector>
 
-#include "shared/bindings.h"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 namespace {

@@ -4,8 +4,8 @@
 // sub-frames and read the result once; the viewer adds one per frame
 // while nothing changes and shows the result as it refines. One RGBA32F
 // sum and one resolved texture of the view's size; no read-back.
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
 #include "render/renderer.hpp"
 
 namespace penumbra {

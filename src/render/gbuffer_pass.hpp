@@ -1,7 +1,7 @@
 #pragma once
 // The G-buffer: depth, normal + shininess, albedo, specular colour.
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
 #include "render/gpu_scene.hpp"
 
 namespace penumbra {

@@ -7,7 +7,7 @@
 #include <tuple>
 #include <vector>
 
-#include "shared/bindings.h"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

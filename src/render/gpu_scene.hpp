@@ -3,7 +3,7 @@
 // with one call per texture.
 #include <vector>
 
-#include "gl/resources.hpp"
+#include "penumbra/gl/resources.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 

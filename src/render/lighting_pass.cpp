@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <string>
 
-#include "gl/context.hpp"
-#include "shadow/representation.hpp"
-#include "shared/bindings.h"
+#include "penumbra/gl/context.hpp"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

@@ -2,17 +2,17 @@
 
 #include <algorithm>
 
-#include "filter/fused_filter_pass.hpp"
-#include "filter/gaussian_blur_pass.hpp"
-#include "filter/mip_chain_pass.hpp"
-#include "filter/summed_area_table_pass.hpp"
-#include "gl/context.hpp"
+#include "penumbra/filter/fused_filter_pass.hpp"
+#include "penumbra/filter/gaussian_blur_pass.hpp"
+#include "penumbra/filter/mip_chain_pass.hpp"
+#include "penumbra/filter/summed_area_table_pass.hpp"
+#include "penumbra/gl/context.hpp"
+#include "penumbra/shadow/moment_resolve_pass.hpp"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shadow/shadow_map_pass.hpp"
+#include "penumbra/shared/bindings.h"
 #include "render/accumulation.hpp"
 #include "render/accumulator.hpp"
-#include "shadow/moment_resolve_pass.hpp"
-#include "shadow/representation.hpp"
-#include "shadow/shadow_map_pass.hpp"
-#include "shared/bindings.h"
 
 namespace penumbra {
 

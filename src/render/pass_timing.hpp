@@ -7,11 +7,11 @@
 #include <string_view>
 #include <vector>
 
-#include "core/settings.hpp"
-#include "filter/texture_copy_pass.hpp"
-#include "gl/gpu_profiler.hpp"
+#include "penumbra/filter/texture_copy_pass.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/texel_traffic.hpp"
 #include "render/renderer.hpp"
-#include "shadow/texel_traffic.hpp"
 
 namespace penumbra {
 

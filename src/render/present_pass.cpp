@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "shared/bindings.h"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

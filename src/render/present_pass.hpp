@@ -1,8 +1,8 @@
 #pragma once
 // Draws a view's texture into a window's framebuffer, encoded as the PNG
 // writer encodes it, fitted into a rectangle with its aspect ratio kept.
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
 #include "render/renderer.hpp"
 
 namespace penumbra {

@@ -8,15 +8,15 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/error.hpp"
-#include "filter/gaussian.hpp"
+#include "penumbra/error.hpp"
+#include "penumbra/filter/gaussian.hpp"
+#include "penumbra/shadow/moment_math.hpp"
+#include "penumbra/shadow/poisson_disc.hpp"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shadow/shadow_block_data.hpp"
+#include "penumbra/shared/bindings.h"
+#include "penumbra/shared/gpu_types.h"
 #include "render/depth_position_error.hpp"
-#include "shadow/moment_math.hpp"
-#include "shadow/poisson_disc.hpp"
-#include "shadow/representation.hpp"
-#include "shadow/shadow_block_data.hpp"
-#include "shared/bindings.h"
-#include "shared/gpu_types.h"
 
 namespace penumbra {
 

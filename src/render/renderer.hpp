@@ -6,14 +6,20 @@
 #include <optional>
 #include <vector>
 
-#include "core/settings.hpp"
-#include "filter/fused_filter_pass.hpp"
-#include "filter/gaussian_blur_pass.hpp"
-#include "filter/mip_chain_pass.hpp"
-#include "filter/summed_area_table_pass.hpp"
-#include "gl/gpu_profiler.hpp"
-#include "gl/resources.hpp"
 #include "io/image.hpp"
+#include "penumbra/filter/fused_filter_pass.hpp"
+#include "penumbra/filter/gaussian_blur_pass.hpp"
+#include "penumbra/filter/mip_chain_pass.hpp"
+#include "penumbra/filter/summed_area_table_pass.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/light_view.hpp"
+#include "penumbra/shadow/moment_resolve_pass.hpp"
+#include "penumbra/shadow/shadow_map_pass.hpp"
+#include "penumbra/shadow/shadow_views.hpp"
+#include "penumbra/shared/bindings.h"
+#include "penumbra/shared/gpu_types.h"
 #include "render/gbuffer_pass.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/lighting_pass.hpp"
@@ -23,12 +29,6 @@
 #include "render/view_tiling_pass.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
-#include "shadow/light_view.hpp"
-#include "shadow/moment_resolve_pass.hpp"
-#include "shadow/shadow_map_pass.hpp"
-#include "shadow/shadow_views.hpp"
-#include "shared/bindings.h"
-#include "shared/gpu_types.h"
 
 namespace penumbra {
 

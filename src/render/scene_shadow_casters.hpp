@@ -3,7 +3,7 @@
 // layer (ShadowMapPass), opaque surfaces and cut-outs (alpha-tested or
 // single-sided, whose fragments may be discarded) each with a program of
 // their own, so opaque ones keep early depth testing.
-#include "gl/program.hpp"
+#include "penumbra/gl/program.hpp"
 #include "render/gpu_scene.hpp"
 
 namespace penumbra {

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "penumbra/shared/bindings.h"
+#include "penumbra/shared/gpu_types.h"
 #include "render/ssao_kernel.hpp"
-#include "shared/bindings.h"
-#include "shared/gpu_types.h"
 
 namespace penumbra {
 

@@ -6,9 +6,9 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "core/settings.hpp"
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/settings.hpp"
 #include "render/gbuffer_pass.hpp"
 
 namespace penumbra {

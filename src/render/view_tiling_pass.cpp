@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <string>
 
-#include "core/error.hpp"
-#include "shared/bindings.h"
+#include "penumbra/error.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

@@ -3,8 +3,8 @@
 // shadow-map array tiled into one 2D texture (shaders/render/tile_views.comp),
 // three to a row: a point light's six cube faces in two rows (+x -x +y, -y
 // +z -z), a directional light's cascades nearest first.
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
 
 namespace penumbra {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

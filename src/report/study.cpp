@@ -10,10 +10,12 @@
 
 #include "app/command_line.hpp"
 #include "app/light_choice.hpp"
-#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/progress_bar.hpp"
+#include "penumbra/error.hpp"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shadow/shadow_map_pass.hpp"
 #include "reference/error_image.hpp"
 #include "reference/reference_cache.hpp"
 #include "reference/shadow_metrics.hpp"
@@ -28,8 +30,6 @@
 #include "report/svg_plot.hpp"
 #include "report/verdict.hpp"
 #include "scene/gltf_scene.hpp"
-#include "shadow/representation.hpp"
-#include "shadow/shadow_map_pass.hpp"
 
 namespace penumbra {
 
@@ -1197,7 +1197,8 @@ class Study {
         "The bytes each pass over the " + std::to_string(size) +
         "^2 shadow-map array reads and "
         "writes per texel, counted from its formats, tiles and aprons, every texel a workgroup "
-        "loads taken as a read from memory (src/shadow/texel_traffic.hpp). On a GPU the filters "
+        "loads taken as a read from memory (include/penumbra/shadow/texel_traffic.hpp). On a GPU "
+        "the filters "
         "are memory-bound, so these bytes set their cost. The depth-testing techniques (hard, "
         "pcf, pcss) run no pass over the map after the depth pass.");
     page.plot(svg_stacked_bars(bars), data);

@@ -6,7 +6,7 @@
 // images.
 #include <string>
 
-#include "gl/context.hpp"
+#include "penumbra/gl/context.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

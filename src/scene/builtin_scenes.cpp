@@ -4,7 +4,7 @@
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/model.hpp"
 
 namespace penumbra {

@@ -4,8 +4,8 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
-#include "core/error.hpp"
 #include "io/bounded_read.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 

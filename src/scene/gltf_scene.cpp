@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
+#include "penumbra/shared/bindings.h"
 #include "scene/builtin_scenes.hpp"
 #include "scene/gltf_extensions.hpp"
 #include "scene/mesh.hpp"
 #include "scene/model.hpp"
-#include "shared/bindings.h"
 
 namespace penumbra {
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/display_name.hpp"
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/model.hpp"
 
 namespace penumbra {

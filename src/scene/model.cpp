@@ -26,7 +26,7 @@
 #include <type_traits>
 
 #include "core/child_process.hpp"
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/direct_readers.hpp"
 #include "scene/gltf_lights.hpp"
 #include "scene/smooth_normals.hpp"

@@ -11,8 +11,8 @@
 #include <sstream>
 #include <vector>
 
-#include "core/error.hpp"
 #include "io/buffered_file.hpp"
+#include "penumbra/error.hpp"
 #include "scene/direct_readers.hpp"
 #include "scene/face_triangulation.hpp"
 

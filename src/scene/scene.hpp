@@ -11,7 +11,7 @@
 #include <utility>
 
 #include <vector>
-#include "core/enum_names.hpp"
+#include "penumbra/enum_names.hpp"
 #include "penumbra/light.hpp"
 
 namespace penumbra {

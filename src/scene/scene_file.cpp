@@ -7,8 +7,8 @@
 #include <set>
 #include <sstream>
 
-#include "core/error.hpp"
 #include "io/bounded_read.hpp"
+#include "penumbra/error.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/model.hpp"

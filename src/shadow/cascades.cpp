@@ -1,4 +1,4 @@
-#include "shadow/cascades.hpp"
+#include "penumbra/shadow/cascades.hpp"
 
 #include <algorithm>
 #include <array>

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "shared/bindings.h"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

@@ -15,10 +15,10 @@
 #include <span>
 #include <vector>
 
-#include "core/settings.hpp"
 #include "penumbra/light.hpp"
 #include "penumbra/position_span.hpp"
-#include "shadow/light_view.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/light_view.hpp"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-#include "shadow/moment_math.hpp"
+#include "penumbra/shadow/moment_math.hpp"
 
 #include <algorithm>
 #include <cmath>

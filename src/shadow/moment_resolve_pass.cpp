@@ -1,9 +1,9 @@
-#include "shadow/moment_resolve_pass.hpp"
+#include "penumbra/shadow/moment_resolve_pass.hpp"
 
 #include <string>
 
-#include "shadow/representation.hpp"
-#include "shared/bindings.h"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

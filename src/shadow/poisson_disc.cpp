@@ -1,4 +1,4 @@
-#include "shadow/poisson_disc.hpp"
+#include "penumbra/shadow/poisson_disc.hpp"
 
 #include <cstdint>
 #include <limits>

@@ -1,9 +1,9 @@
-#include "shadow/representation.hpp"
+#include "penumbra/shadow/representation.hpp"
 
 #include <algorithm>
 
-#include "core/error.hpp"
-#include "shared/bindings.h"
+#include "penumbra/error.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 

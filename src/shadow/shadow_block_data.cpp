@@ -1,11 +1,11 @@
-#include "shadow/shadow_block_data.hpp"
+#include "penumbra/shadow/shadow_block_data.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 
-#include "filter/summed_area_table_pass.hpp"
-#include "shadow/representation.hpp"
+#include "penumbra/filter/summed_area_table_pass.hpp"
+#include "penumbra/shadow/representation.hpp"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-#include "shadow/shadow_map_pass.hpp"
+#include "penumbra/shadow/shadow_map_pass.hpp"
 
 #include <string>
 

@@ -10,19 +10,19 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
-#include "filter/fused_filter_pass.hpp"
-#include "filter/gaussian_blur_pass.hpp"
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
-#include "gl/shader_source.hpp"
+#include "penumbra/error.hpp"
+#include "penumbra/filter/fused_filter_pass.hpp"
+#include "penumbra/filter/gaussian_blur_pass.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/gl/shader_source.hpp"
+#include "penumbra/shadow/moment_resolve_pass.hpp"
+#include "penumbra/shadow/poisson_disc.hpp"
+#include "penumbra/shadow/representation.hpp"
+#include "penumbra/shadow/shadow_block_data.hpp"
+#include "penumbra/shadow/shadow_map_pass.hpp"
+#include "penumbra/shadow/shadow_views.hpp"
 #include "penumbra/version.hpp"
-#include "shadow/moment_resolve_pass.hpp"
-#include "shadow/poisson_disc.hpp"
-#include "shadow/representation.hpp"
-#include "shadow/shadow_block_data.hpp"
-#include "shadow/shadow_map_pass.hpp"
-#include "shadow/shadow_views.hpp"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-#include "shadow/shadow_views.hpp"
+#include "penumbra/shadow/shadow_views.hpp"
 
 #include "shadow/cube_views.hpp"
 

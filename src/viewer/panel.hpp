@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/gpu_profiler.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
 #include "viewer/viewer_state.hpp"
 
 namespace penumbra {

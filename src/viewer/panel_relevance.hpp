@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

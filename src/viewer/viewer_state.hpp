@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/settings.hpp"
-#include "gl/gpu_profiler.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
+#include "penumbra/settings.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
@@ -38,7 +38,7 @@ ViewerState make_viewer_state(std::string scene_argument, Scene loaded, const Sc
 // does not offer.
 bool is_window_owned(const NumericParam<RenderSettings, int>& param);
 
-// Sets a numeric parameter of the tables in core/settings.hpp by its flag
+// Sets a numeric parameter of the tables in penumbra/settings.hpp by its flag
 // name, clamped to its range (light-index also to the scene's lights).
 // Returns false for an unknown or window-owned name.
 bool set_number(ViewerState& state, std::string_view name, double value);

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/debug_output.hpp"
+#include "penumbra/gl/debug_output.hpp"
 #include "viewer/mouse_controls.hpp"
 
 namespace penumbra {

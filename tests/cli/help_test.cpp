@@ -15,7 +15,7 @@
 #include "app/cli.hpp"
 #include "app/option_style.hpp"
 #include "cli/cli_run.hpp"
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 namespace {

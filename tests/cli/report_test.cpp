@@ -21,8 +21,8 @@
 #include <sstream>
 #include <string>
 
-#include "core/settings.hpp"
 #include "io/image.hpp"
+#include "penumbra/settings.hpp"
 #include "reference/error_image.hpp"
 #include "render/pass_timing.hpp"
 

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/direct_readers.hpp"
 
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/scene_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -3,9 +3,9 @@
 #include <vector>
 
 #include "gl/embedded_shaders.hpp"
-#include "gl/program.hpp"
 #include "gpu_fixture.hpp"
-#include "shared/bindings.h"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 namespace {

@@ -9,12 +9,12 @@
 #include <span>
 #include <vector>
 
-#include "filter/gaussian.hpp"
-#include "filter/gaussian_blur_pass.hpp"
-#include "filter/summed_area_table_pass.hpp"
-#include "gl/program.hpp"
 #include "gpu_fixture.hpp"
-#include "shared/bindings.h"
+#include "penumbra/filter/gaussian.hpp"
+#include "penumbra/filter/gaussian_blur_pass.hpp"
+#include "penumbra/filter/summed_area_table_pass.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 namespace {

@@ -10,13 +10,13 @@
 #include <random>
 #include <vector>
 
-#include "filter/fused_filter_pass.hpp"
-#include "filter/gaussian_blur_pass.hpp"
 #include "gpu_fixture.hpp"
+#include "penumbra/filter/fused_filter_pass.hpp"
+#include "penumbra/filter/gaussian_blur_pass.hpp"
+#include "penumbra/shadow/moment_resolve_pass.hpp"
+#include "penumbra/shadow/representation.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
-#include "shadow/moment_resolve_pass.hpp"
-#include "shadow/representation.hpp"
 
 namespace penumbra {
 namespace {

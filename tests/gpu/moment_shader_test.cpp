@@ -8,11 +8,11 @@
 #include <span>
 #include <vector>
 
-#include "core/settings.hpp"
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
 #include "gpu_fixture.hpp"
-#include "shadow/moment_math.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/moment_math.hpp"
 
 namespace penumbra {
 namespace {

@@ -10,11 +10,11 @@
 #include <random>
 #include <vector>
 
-#include "filter/mip_chain_pass.hpp"
 #include "gpu_fixture.hpp"
+#include "penumbra/filter/mip_chain_pass.hpp"
+#include "penumbra/shadow/representation.hpp"
 #include "reference/traced_reference.hpp"
 #include "render/renderer.hpp"
-#include "shadow/representation.hpp"
 
 namespace penumbra {
 namespace {

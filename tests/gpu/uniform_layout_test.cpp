@@ -3,10 +3,10 @@
 #include <cstddef>
 #include <string>
 
-#include "gl/program.hpp"
 #include "gpu_fixture.hpp"
-#include "shared/bindings.h"
-#include "shared/gpu_types.h"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/shared/bindings.h"
+#include "penumbra/shared/gpu_types.h"
 
 namespace penumbra {
 namespace {

@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "gpu_fixture.hpp"
+#include "penumbra/shadow/shadow_views.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
-#include "shadow/shadow_views.hpp"
 
 namespace penumbra {
 namespace {

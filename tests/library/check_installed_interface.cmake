@@ -31,7 +31,7 @@ foreach(forbidden CLI11 assimp embree TBB tbb glfw imgui nlohmann tinyexr stb Th
     message(FATAL_ERROR "penumbra-shadows.pc mentions ${forbidden}")
   endif()
 endforeach()
-# Only the public include root: no src/ or generic paths like core/error.hpp.
+# Only the public include root: no src/ or generic paths like gl/resources.hpp.
 string(REGEX MATCH "INTERFACE_INCLUDE_DIRECTORIES \"([^\"]*)\"" _ "${exported}")
 if(NOT CMAKE_MATCH_1 STREQUAL "\${_IMPORT_PREFIX}/include")
   message(FATAL_ERROR "penumbra::shadows include directories: ${CMAKE_MATCH_1}")

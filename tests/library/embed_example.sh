@@ -28,6 +28,16 @@ ${launcher} c++ -std=c++20 "$work/lookup.cpp" -o "$work/lookup" \
 "$work/lookup" >"$work/lookup.glsl"
 grep -q "float penumbra_shadow(int light, vec3 world_position, vec3 world_normal)" "$work/lookup.glsl"
 cmp "$work/lookup.glsl" "$work/prefix/share/penumbra/penumbra_shadows.glsl"
+# Every installed header, both levels, compiles on its own against the
+# prefix alone: none needs a private header of the source tree or another
+# header included before it.
+headers=$(cd "$work/prefix/include" && find penumbra -name '*.hpp' -o -name '*.h' | sort)
+[ "$(echo "$headers" | wc -l)" -ge 30 ] || { echo "too few installed headers: $headers"; exit 1; }
+for header in $headers; do
+  echo "#include <$header>" >"$work/header.cpp"
+  c++ -std=c++20 -fsyntax-only "$work/header.cpp" $(pkg-config --cflags penumbra-shadows) ||
+    { echo "installed $header does not compile on its own"; exit 1; }
+done
 
 embed=$work/build/embed
 common=(--headless --width 320 --height 180 --map-size 512 --view shadow)

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "penumbra/shadow/cascades.hpp"
 #include "scene/mesh.hpp"
-#include "shadow/cascades.hpp"
 
 namespace penumbra {
 namespace {

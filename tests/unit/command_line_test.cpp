@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "app/render_command.hpp"
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/builtin_scenes.hpp"
 
 namespace penumbra {

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace {
 

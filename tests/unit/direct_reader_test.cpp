@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
 #include "model_files.hpp"
+#include "penumbra/error.hpp"
 #include "scene/model.hpp"
 
 namespace penumbra {

@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <glm/gtc/constants.hpp>
 
-#include "core/error.hpp"
 #include "gltf_files.hpp"
 #include "model_files.hpp"
+#include "penumbra/error.hpp"
 #include "reference/caster_cutouts.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/gltf_lights.hpp"

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/mesh.hpp"
 

@@ -1,4 +1,4 @@
-#include "shadow/light_view.hpp"
+#include "penumbra/shadow/light_view.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/error.hpp"
 #include "model_files.hpp"
+#include "penumbra/error.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/mesh.hpp"
 #include "scene/model.hpp"

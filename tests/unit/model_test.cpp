@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
 #include "model_files.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 namespace {

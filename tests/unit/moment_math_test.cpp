@@ -1,4 +1,4 @@
-#include "shadow/moment_math.hpp"
+#include "penumbra/shadow/moment_math.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "core/settings.hpp"
-#include "filter/gaussian.hpp"
+#include "penumbra/filter/gaussian.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 namespace {

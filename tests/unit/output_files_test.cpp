@@ -8,9 +8,9 @@
 #include <fstream>
 
 #include "core/display_name.hpp"
-#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bounded_read.hpp"
+#include "penumbra/error.hpp"
 #include "scene/scene_checks.hpp"
 
 namespace penumbra {

@@ -6,8 +6,8 @@
 #include <penumbra/position_span.hpp>
 #include <vector>
 
+#include "penumbra/shadow/light_view.hpp"
 #include "scene/mesh.hpp"
-#include "shadow/light_view.hpp"
 
 namespace penumbra {
 namespace {

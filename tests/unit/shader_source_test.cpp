@@ -1,8 +1,8 @@
-#include "gl/shader_source.hpp"
+#include "penumbra/gl/shader_source.hpp"
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra::gl {
 namespace {

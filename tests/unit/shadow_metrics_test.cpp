@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "core/error.hpp"
+#include "penumbra/error.hpp"
 
 namespace penumbra {
 namespace {

@@ -2,12 +2,12 @@
 // bench` counts them: from the passes' formats, tiles and aprons.
 #include <gtest/gtest.h>
 
-#include "filter/gaussian_blur_pass.hpp"
-#include "filter/summed_area_table_pass.hpp"
-#include "filter/texture_copy_pass.hpp"
+#include "penumbra/filter/gaussian_blur_pass.hpp"
+#include "penumbra/filter/summed_area_table_pass.hpp"
+#include "penumbra/filter/texture_copy_pass.hpp"
+#include "penumbra/shadow/moment_resolve_pass.hpp"
 #include "render/device_bandwidth.hpp"
 #include "render/pass_timing.hpp"
-#include "shadow/moment_resolve_pass.hpp"
 #include "shared/filter_tiles.h"
 
 namespace penumbra {

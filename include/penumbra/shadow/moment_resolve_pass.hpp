@@ -3,10 +3,10 @@
 // representation (see representation.hpp), every layer (shadow view) at once.
 #include <map>
 
-#include "core/settings.hpp"
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
-#include "shadow/texel_traffic.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/texel_traffic.hpp"
 
 namespace penumbra {
 

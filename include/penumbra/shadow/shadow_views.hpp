@@ -7,11 +7,11 @@
 #include <span>
 #include <vector>
 
-#include "core/settings.hpp"
 #include "penumbra/light.hpp"
 #include "penumbra/position_span.hpp"
-#include "shadow/cascades.hpp"
-#include "shadow/light_view.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/cascades.hpp"
+#include "penumbra/shadow/light_view.hpp"
 
 namespace penumbra {
 

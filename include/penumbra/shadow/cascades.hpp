@@ -17,7 +17,7 @@
 
 #include "penumbra/light.hpp"
 #include "penumbra/position_span.hpp"
-#include "shadow/light_view.hpp"
+#include "penumbra/shadow/light_view.hpp"
 
 namespace penumbra {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/settings.hpp"
+#include "penumbra/settings.hpp"
 
 namespace penumbra {
 

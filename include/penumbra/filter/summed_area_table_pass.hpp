@@ -10,11 +10,11 @@
 #include <string_view>
 #include <tuple>
 
-#include "core/settings.hpp"
-#include "gl/gpu_profiler.hpp"
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
-#include "shadow/texel_traffic.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/texel_traffic.hpp"
 
 namespace penumbra {
 

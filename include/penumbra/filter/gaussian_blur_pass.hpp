@@ -6,10 +6,10 @@
 #include <map>
 #include <tuple>
 
-#include "gl/gpu_profiler.hpp"
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
-#include "shadow/texel_traffic.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/shadow/texel_traffic.hpp"
 
 namespace penumbra {
 

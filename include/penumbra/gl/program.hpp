@@ -2,8 +2,8 @@
 // A linked GLSL program built from embedded shader files.
 #include <string>
 
-#include "gl/handle.hpp"
-#include "gl/shader_source.hpp"
+#include "penumbra/gl/handle.hpp"
+#include "penumbra/gl/shader_source.hpp"
 
 namespace penumbra::gl {
 

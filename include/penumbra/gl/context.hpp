@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "gl/debug_output.hpp"
+#include "penumbra/gl/debug_output.hpp"
 
 namespace penumbra::gl {
 

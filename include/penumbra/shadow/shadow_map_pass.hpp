@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "gl/resources.hpp"
+#include "penumbra/gl/resources.hpp"
 
 namespace penumbra {
 

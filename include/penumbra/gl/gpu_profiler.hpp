@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "gl/handle.hpp"
+#include "penumbra/gl/handle.hpp"
 
 namespace penumbra::gl {
 

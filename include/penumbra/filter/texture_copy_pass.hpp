@@ -5,9 +5,9 @@
 // Copies every layer of a 2D array.
 #include <map>
 
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
-#include "shadow/texel_traffic.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/shadow/texel_traffic.hpp"
 
 namespace penumbra {
 

@@ -7,9 +7,9 @@
 
 #include <map>
 
-#include "gl/program.hpp"
-#include "gl/resources.hpp"
-#include "shadow/texel_traffic.hpp"
+#include "penumbra/gl/program.hpp"
+#include "penumbra/gl/resources.hpp"
+#include "penumbra/shadow/texel_traffic.hpp"
 
 namespace penumbra {
 

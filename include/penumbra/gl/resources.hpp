@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "gl/handle.hpp"
+#include "penumbra/gl/handle.hpp"
 
 namespace penumbra::gl {
 

@@ -3,11 +3,11 @@
 // their fitted views and the settings: one conversion for penumbra's
 // renderer and for ShadowMaps alike, so both look shadows up from the same
 // numbers.
-#include "core/settings.hpp"
 #include "penumbra/light.hpp"
-#include "shadow/light_view.hpp"
-#include "shadow/shadow_views.hpp"
-#include "shared/gpu_types.h"
+#include "penumbra/settings.hpp"
+#include "penumbra/shadow/light_view.hpp"
+#include "penumbra/shadow/shadow_views.hpp"
+#include "penumbra/shared/gpu_types.h"
 
 namespace penumbra {
 
