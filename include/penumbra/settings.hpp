@@ -258,6 +258,8 @@ struct SsaoSettings {
   // Computes the AO at half the width and height, then upsamples it with
   // depth and normal awareness.
   bool half_resolution = false;
+
+  bool operator==(const SsaoSettings&) const = default;
 };
 
 // The ray-traced reference (src/reference/): how it samples. The light's

@@ -70,8 +70,10 @@ class Renderer {
 
   // Renders one frame. Throws UsageError for settings the GPU cannot honour
   // (a shadow map larger than its texture limit, a light index out of range).
-  // SSAO runs for the final and ao views only. With a profiler, each pass
-  // is timed (the caller begins and ends the frame).
+  // SSAO runs for the final and ao views only. The G-buffer and the AO of
+  // the last frame are reused when the camera, the image size (and the
+  // SSAO settings) are the same. With a profiler, each pass is drawn and
+  // timed (the caller begins and ends the frame).
   void render(const RenderSettings& render, const ShadowSettings& shadow,
               const SsaoSettings& ssao = {}, gl::GpuProfiler* profiler = nullptr);
 
@@ -179,6 +181,18 @@ class Renderer {
   ShadowSettings last_shadow_;
   glm::mat4 last_view_projection_{1.0f};
   bool gbuffer_current_ = false;
+  // What the G-buffer and the AO texture hold: the camera and size they
+  // were rendered for, and the SSAO settings of the AO (none: stale). A
+  // frame for the same camera and size reuses them (the geometry never
+  // changes): an --accumulate sub-frame or another setting of the report
+  // redraws only the shadow maps and the lighting.
+  struct SurfaceKey {
+    glm::mat4 view{1.0f}, projection{1.0f};
+    int width = 0, height = 0;
+    bool operator==(const SurfaceKey&) const = default;
+  };
+  std::optional<SurfaceKey> gbuffer_for_;
+  std::optional<SsaoSettings> ao_for_;
   // What the last render()'s lighting pass read, for shade().
   gpu::GpuFrame last_frame_{};
   GLuint last_filtered_ = 0;
