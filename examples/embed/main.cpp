@@ -3,7 +3,8 @@
 // sun with cascades, the technique switched at run time.
 //
 //   embed --headless -o out.png [--technique pcf,vsm,msm] [--lights spot|sun|both]
-//         [--view final|shadow] [--width N] [--height N] [--map-size N]
+//         [--filter gaussian|sat] [--view final|shadow] [--width N] [--height N]
+//         [--map-size N]
 //
 // Several techniques render one after another with the same ShadowMaps
 // and the same shader (the block says which technique the maps hold), to
@@ -31,6 +32,7 @@ struct Options {
   bool headless = false;
   std::string output;
   std::vector<penumbra::Technique> techniques{penumbra::Technique::Pcf};
+  penumbra::Filter filter = penumbra::ShadowSettings{}.filter;
   bool spot = true, sun = true;
   bool shadow_view = false;
   int width = 640, height = 360, map_size = 1024;
@@ -75,6 +77,11 @@ Options parse(int argc, char** argv) {
         o.techniques.push_back(*t);
         at = comma + 1;
       }
+    } else if (flag == "--filter") {
+      // How vsm, esm, evsm and msm filter their maps.
+      const auto f = penumbra::parse_enum<penumbra::Filter>(penumbra::kFilterNames, value);
+      if (!f) usage_error("--filter " + value + ": unknown filter");
+      o.filter = *f;
     } else if (flag == "--lights") {
       if (value != "spot" && value != "sun" && value != "both") {
         usage_error("--lights " + value + ": expected spot, sun or both");
@@ -158,6 +165,7 @@ int main(int argc, char** argv) {
     penumbra::ShadowMaps shadows;
     penumbra::ShadowSettings settings;
     settings.map_size = options.map_size;
+    settings.filter = options.filter;
     for (const penumbra::Technique technique : options.techniques) {
       settings.technique = technique;
       // Fit the views to the camera and the casters (the mesh's own

@@ -12,6 +12,7 @@
 //   PENUMBRA_UNIT_SHADOW_DEPTH     texture unit, z-bar depth maps    (default 13)
 //   PENUMBRA_UNIT_SHADOW_FILTERED  texture unit, filtered maps       (default 14)
 //   PENUMBRA_UNIT_SHADOW_COMPARE   texture unit, comparison sampler  (default 15)
+//   PENUMBRA_UNIT_SHADOW_SAT       texture unit, summed-area tables  (default 12)
 // The struct's one declaration, compiled by the GLSL too (shaders/shared/,
 // installed as include/penumbra/shared/).
 #include "penumbra/shared/gpu_types.h"
@@ -38,5 +39,6 @@ inline constexpr unsigned kShadowBlockBinding = PENUMBRA_SHADOW_BLOCK_BINDING;
 inline constexpr unsigned kShadowDepthUnit = PENUMBRA_UNIT_SHADOW_DEPTH;
 inline constexpr unsigned kShadowFilteredUnit = PENUMBRA_UNIT_SHADOW_FILTERED;
 inline constexpr unsigned kShadowCompareUnit = PENUMBRA_UNIT_SHADOW_COMPARE;
+inline constexpr unsigned kShadowSatUnit = PENUMBRA_UNIT_SHADOW_SAT;
 
 }  // namespace penumbra

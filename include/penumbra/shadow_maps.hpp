@@ -8,7 +8,7 @@
 //   - owns the maps: a depth-texture array, one layer per view, into which
 //     the engine draws its casters through a callback (render), and the
 //     technique's representation (VSM/ESM/EVSM/MSM moments) filtered by a
-//     Gaussian;
+//     Gaussian or summed into summed-area tables (settings.filter);
 //   - binds them, with one uniform block, for the lookup in the engine's
 //     own lighting shader (bind, shadow_lookup_glsl(): penumbra_shadow()).
 // The engine owns its context, framebuffers, meshes, camera and lighting;
@@ -87,8 +87,10 @@ class ShadowMaps {
   // PENUMBRA_SHADOW_BLOCK_BINDING), the depth maps (units
   // PENUMBRA_UNIT_SHADOW_DEPTH, nearest, and PENUMBRA_UNIT_SHADOW_COMPARE,
   // with a comparison sampler), the filtered maps (unit
-  // PENUMBRA_UNIT_SHADOW_FILTERED, bilinear) and PCF's sample set (storage
-  // buffer BINDING_POISSON_SSBO, 2). Valid after render().
+  // PENUMBRA_UNIT_SHADOW_FILTERED, bilinear), the summed-area tables (unit
+  // PENUMBRA_UNIT_SHADOW_SAT; texture 0 without --filter sat) and PCF's
+  // sample set (storage buffer BINDING_POISSON_SSBO, 2). Valid after
+  // render().
   void bind() const;
 
   // The block as last uploaded, the views' count, and the textures (GL
@@ -96,7 +98,9 @@ class ShadowMaps {
   [[nodiscard]] const ShadowBlock& block() const;
   [[nodiscard]] int view_count() const;
   [[nodiscard]] GLuint depth_maps() const;
-  [[nodiscard]] GLuint filtered_maps() const;  // 0 for hard and pcf
+  // The filtered maps, or with --filter sat the summed-area tables (an
+  // unsigned-integer array); 0 for the techniques that read depth maps.
+  [[nodiscard]] GLuint filtered_maps() const;
 
  private:
   struct Impl;

@@ -16,6 +16,7 @@
 #include "../shadow/esm.glsl"
 #include "../shadow/evsm.glsl"
 #include "../shadow/msm.glsl"
+#include "../shadow/filtered.glsl"
 #include "../filter/sat.glsl"
 #include "../shadow/noise.glsl"
 #include "../shadow/penumbra.glsl"
@@ -119,44 +120,13 @@ vec4 filtered_map(int v, vec2 uv, vec2 duv_dx, vec2 duv_dy) {
 #endif
 }
 
-// The filterable techniques' test of a receiver at relative depth z
-// against filtered map values m: the lit fraction, before light-bleeding
-// reduction. texel_depth: a texel's size at the receiver in z-bar units
-// (VSM's minimum variance is given in squared texels).
+// The technique's tests of filtered map values (shaders/shadow/filtered.glsl).
 float filtered_lit_fraction(vec4 m, float z, float texel_depth) {
-#if SHADOW_TECHNIQUE == TECHNIQUE_VSM
-  float min_variance = shadow_params.vsm_min_variance * texel_depth * texel_depth;
-  return shadow_vsm(m.xy, z, min_variance, 0.0);
-#elif SHADOW_TECHNIQUE == TECHNIQUE_ESM
-  return shadow_esm(m.x, z, shadow_params.esm_c);
-#elif SHADOW_TECHNIQUE == TECHNIQUE_EVSM2
-  float min_variance = shadow_params.vsm_min_variance * texel_depth * texel_depth;
-  return shadow_evsm2(m.xy, z, shadow_params.evsm_positive, min_variance);
-#elif SHADOW_TECHNIQUE == TECHNIQUE_EVSM4
-  float min_variance = shadow_params.vsm_min_variance * texel_depth * texel_depth;
-  return shadow_evsm4(m, z, shadow_params.evsm_positive, shadow_params.evsm_negative,
-                      min_variance);
-#elif MSM_QUANTIZED
-  return 1.0 - msm_intensity16(msm_dequantize(m), z, shadow_params.msm_alpha);
-#else
-  return 1.0 - msm_intensity32(m, z, shadow_params.msm_alpha);
-#endif
+  return filtered_lit_fraction_of(SHADOW_TECHNIQUE, MSM_QUANTIZED != 0, shadow_params, m, z,
+                                  texel_depth);
 }
-
-// The mean occluder depth E[z] of filtered map values (MSM stores the
-// moments of u = 2 z - 1: E[z] = (E[u] + 1) / 2).
 float filtered_mean_depth(vec4 m) {
-#if SHADOW_TECHNIQUE == TECHNIQUE_ESM
-  return log(max(m.x, 1e-37)) / shadow_params.esm_c + 1.0;
-#elif SHADOW_TECHNIQUE == TECHNIQUE_VSM
-  return m.x;
-#elif SHADOW_TECHNIQUE == TECHNIQUE_EVSM2 || SHADOW_TECHNIQUE == TECHNIQUE_EVSM4
-  return evsm_unwarp(max(m.x, 1e-37), shadow_params.evsm_positive);
-#elif MSM_QUANTIZED
-  return msm_unit_depth(msm_dequantize(m).x);
-#else
-  return msm_unit_depth(m.x);
-#endif
+  return filtered_mean_depth_of(SHADOW_TECHNIQUE, MSM_QUANTIZED != 0, shadow_params, m);
 }
 #endif
 

@@ -19,7 +19,8 @@
 // a directional light's cascade along the camera, blended into the next
 // near each cascade's end. The tests per technique are the shared ones
 // under shaders/shadow/ (hard.glsl, pcf.glsl, pcss.glsl,
-// backprojection.glsl, vsm.glsl, esm.glsl, evsm.glsl, msm.glsl), with the biases of lookup.glsl.
+// backprojection.glsl, filtered.glsl with vsm.glsl, esm.glsl, evsm.glsl,
+// msm.glsl; filter/sat.glsl), with the biases of lookup.glsl.
 #pragma once
 
 #include "../shared/bindings.h"
@@ -31,6 +32,8 @@
 #include "esm.glsl"
 #include "evsm.glsl"
 #include "msm.glsl"
+#include "filtered.glsl"
+#include "../filter/sat.glsl"
 #include "noise.glsl"
 #include "pcf.glsl"
 #include "pcss.glsl"
@@ -43,6 +46,8 @@ layout(std140, binding = PENUMBRA_SHADOW_BLOCK_BINDING) uniform PenumbraShadowBl
 layout(binding = PENUMBRA_UNIT_SHADOW_DEPTH) uniform sampler2DArray penumbra_depth;
 layout(binding = PENUMBRA_UNIT_SHADOW_COMPARE) uniform sampler2DArrayShadow penumbra_compare;
 layout(binding = PENUMBRA_UNIT_SHADOW_FILTERED) uniform sampler2DArray penumbra_filtered;
+// With --filter sat: the representation's summed-area tables.
+layout(binding = PENUMBRA_UNIT_SHADOW_SAT) uniform usampler2DArray penumbra_sat;
 
 // Fraction of the light that reaches the point according to shadow view v.
 // `pixel` seeds backprojection's jitter; `noise` in [0, 1) is the
@@ -82,22 +87,17 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
                        noise, params.pcss_blocker_samples, params.pcss_filter_samples);
   }
   if (!filterable) return 1.0;
-  vec4 m = texture(penumbra_filtered, vec3(s.uv, float(v)));
-  // VSM's minimum variance is given in squared texels.
-  float min_variance = params.vsm_min_variance * s.texel_depth * s.texel_depth;
-  float lit = 1.0;
-  if (technique == TECHNIQUE_ESM) return shadow_esm(m.x, z, params.esm_c);
-  if (technique == TECHNIQUE_VSM) lit = shadow_vsm(m.xy, z, min_variance, 0.0);
-  if (technique == TECHNIQUE_EVSM2) {
-    lit = shadow_evsm2(m.xy, z, params.evsm_positive, min_variance);
+  vec4 m;
+  if (params.filter_type == FILTER_SAT) {
+    // The (2W + 1)^2 box centred on the lookup point: half-width W + 1/2.
+    m = sat_rectangle_average(penumbra_sat, v, s.uv * vec2(textureSize(penumbra_sat, 0).xy),
+                              vec2(float(params.blur_radius) + 0.5), params.sat_scale);
+  } else {
+    m = texture(penumbra_filtered, vec3(s.uv, float(v)));
   }
-  if (technique == TECHNIQUE_EVSM4) {
-    lit = shadow_evsm4(m, z, params.evsm_positive, params.evsm_negative, min_variance);
-  }
-  if (technique == TECHNIQUE_MSM) lit = 1.0 - msm_intensity32(m, z, params.msm_alpha);
-  if (technique == TECHNIQUE_MSM16) {
-    lit = 1.0 - msm_intensity16(msm_dequantize(m), z, params.msm_alpha);
-  }
+  float lit = filtered_lit_fraction_of(technique, penumbra.counts.w != 0, params, m, z,
+                                       s.texel_depth);
+  if (technique == TECHNIQUE_ESM) return lit;
   return reduce_light_bleeding(lit, params.bleed_reduction);
 }
 

@@ -45,6 +45,9 @@
 #ifndef PENUMBRA_UNIT_SHADOW_COMPARE
 #define PENUMBRA_UNIT_SHADOW_COMPARE 15  // the depth maps through a comparison sampler
 #endif
+#ifndef PENUMBRA_UNIT_SHADOW_SAT
+#define PENUMBRA_UNIT_SHADOW_SAT 12  // the summed-area tables (--filter sat; unsigned integers)
+#endif
 
 // Image units (compute)
 #define IMAGE_OUTPUT 0

@@ -92,8 +92,8 @@ struct GpuShadow {
   int accumulate_frame;
   float evsm_positive;  // EVSM exponents c+ and c- (shaders/shadow/evsm.glsl)
   float evsm_negative;
-  float evsm_unused0;  // pads the EVSM row to 16 bytes
-  float evsm_unused1;
+  int filter_type;      // FILTER_* of the representation (FILTER_SAT: summed-area tables)
+  float row_unused;     // pads the row to 16 bytes
   // The source's outward normal at the sub-frame's point (spot: the light's
   // direction; point: the sphere's normal); 1 when the shadow view writes
   // (lit, lit * weight, weight) for the Accumulator to weigh.

@@ -68,6 +68,7 @@ gpu::GpuShadow gpu_shadow_params(const ShadowSettings& shadow) {
   // Only the filterable techniques filter; the others (and their reference) test single texels.
   block.blur_radius = is_filterable(shadow.technique) ? shadow.blur : 0;
   block.sat_scale = static_cast<float>(sat_fixed_point_scale());
+  block.filter_type = filter_define(shadow);
   block.filter_slope_bias = shadow.filter_slope_bias;
   block.pcf_width = shadow.pcf_width;
   block.pcf_samples = shadow.pcf_samples;

@@ -13,6 +13,7 @@
 #include "penumbra/error.hpp"
 #include "penumbra/filter/fused_filter_pass.hpp"
 #include "penumbra/filter/gaussian_blur_pass.hpp"
+#include "penumbra/filter/summed_area_table_pass.hpp"
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
 #include "penumbra/gl/shader_source.hpp"
@@ -33,6 +34,7 @@ struct ShadowMaps::Impl {
   MomentResolvePass resolve_pass;
   GaussianBlurPass blur_pass;
   FusedFilterPass fused_pass;
+  SummedAreaTablePass sat_pass;
   gl::Buffer block_buffer{sizeof(ShadowBlock), nullptr, true, "penumbra shadow block"};
   gl::Buffer poisson = gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
                                         "penumbra poisson samples");
@@ -60,9 +62,9 @@ ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
                         const CasterGeometry& casters, const ShadowSettings& settings) {
   validate(settings);
-  if (is_filterable(settings.technique) && settings.filter == Filter::Sat) {
+  if (settings.soft && filter_define(settings) == FILTER_SAT) {
     throw UsageError(
-        "ShadowMaps: --filter sat is not in the shadow lookup yet (penumbra's renderer has it)");
+        "ShadowMaps: --soft is not in the shadow lookup yet (penumbra's renderer has it)");
   }
   if (settings.accumulate > 1) throw UsageError("ShadowMaps: accumulate is the renderer's");
   if (lights.size() > static_cast<std::size_t>(kMaxLights)) {
@@ -143,6 +145,9 @@ void ShadowMaps::render(const DrawCasters& draw) {
       if (filter_define(s) == FILTER_GAUSSIAN) {
         m.blur_pass.execute(m.resolve_pass.representation(), s.blur);
         m.filtered = m.blur_pass.output().id();
+      } else if (filter_define(s) == FILTER_SAT) {
+        m.sat_pass.execute(m.resolve_pass.representation());
+        m.filtered = m.sat_pass.table().id();
       }
     }
   }
@@ -161,10 +166,15 @@ void ShadowMaps::bind() const {
   glBindSampler(kShadowDepthUnit, m.nearest.id());
   glBindTextureUnit(kShadowCompareUnit, depth);
   glBindSampler(kShadowCompareUnit, m.compare.id());
-  // Hard and PCF read no filtered map: the depth maps stand in, so the
-  // sampler2DArray the lookup declares is never left unbound.
-  glBindTextureUnit(kShadowFilteredUnit, m.filtered != 0 ? m.filtered : depth);
-  glBindSampler(kShadowFilteredUnit, m.filtered != 0 ? m.bilinear.id() : m.nearest.id());
+  // The techniques that read no filtered map (or the summed-area tables
+  // instead) have the depth maps stand in, so the sampler2DArray the
+  // lookup declares is never left unbound.
+  const bool sat = m.block.params.filter_type == FILTER_SAT;
+  const bool filtered = m.filtered != 0 && !sat;
+  glBindTextureUnit(kShadowFilteredUnit, filtered ? m.filtered : depth);
+  glBindSampler(kShadowFilteredUnit, filtered ? m.bilinear.id() : m.nearest.id());
+  // The tables are read texel by texel (texelFetch: no sampler applies).
+  glBindTextureUnit(kShadowSatUnit, sat ? m.filtered : 0);
 }
 
 const ShadowBlock& ShadowMaps::block() const {

@@ -75,6 +75,8 @@ TEST_F(GpuTest, ShadowBlockMatchesItsCppMirror) {
             GLint(offsetof(gpu::GpuShadowBlock, params)));
   EXPECT_EQ(driver_offset(p, "penumbra.params.pcf_samples"),
             GLint(offsetof(gpu::GpuShadowBlock, params) + offsetof(gpu::GpuShadow, pcf_samples)));
+  EXPECT_EQ(driver_offset(p, "penumbra.params.filter_type"),
+            GLint(offsetof(gpu::GpuShadowBlock, params) + offsetof(gpu::GpuShadow, filter_type)));
   EXPECT_OFFSET(p, "penumbra", GpuShadowBlock, camera_view);
   EXPECT_OFFSET(p, "penumbra", GpuShadowBlock, counts);
   EXPECT_EQ(driver_offset(p, "penumbra.lights[0].position_type"),

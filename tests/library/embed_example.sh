@@ -43,5 +43,7 @@ embed=$work/build/embed
 common=(--headless --width 320 --height 180 --map-size 512 --view shadow)
 "$embed" "${common[@]}" --lights spot --technique hard,pcf,pcss,backprojection,msm -o "$work/images/spot.png"
 "$embed" "${common[@]}" --lights sun --technique pcf,pcss,vsm -o "$work/images/sun.png"
+"$embed" "${common[@]}" --lights spot --filter sat --technique vsm,msm,msm16 \
+  -o "$work/images/spot-sat.png"
 "$embed" --headless --width 320 --height 180 --map-size 512 --technique msm \
   -o "$work/images/final.png"

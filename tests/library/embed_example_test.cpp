@@ -132,6 +132,20 @@ TEST(EmbedExample, SpotShadowWhereComputedForEveryTechnique) {
   }
 }
 
+// The moment techniques filtered through summed-area tables (--filter
+// sat): msm's moments quantized for the table, as the block says.
+TEST(EmbedExample, SummedAreaTableShadowWhereComputed) {
+  for (const char* technique : {"vsm", "msm", "msm16"}) {
+    SCOPED_TRACE(technique);
+    const Tally t =
+        check(penumbra::read_png(kWork + "/images/spot-sat-" + technique + ".png"), spot_light());
+    EXPECT_GE(t.shadowed, 20);
+    EXPECT_GE(t.lit, 100);
+    EXPECT_LE(t.wrong_shadowed, t.shadowed / 20) << "of " << t.shadowed;
+    EXPECT_LE(t.wrong_lit, t.lit / 50) << "of " << t.lit;
+  }
+}
+
 TEST(EmbedExample, SunCascadeShadowWhereComputed) {
   for (const char* technique : {"pcf", "pcss", "vsm"}) {
     SCOPED_TRACE(technique);
