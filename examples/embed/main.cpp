@@ -3,7 +3,7 @@
 // sun with cascades, the technique switched at run time.
 //
 //   embed --headless -o out.png [--technique pcf,vsm,msm] [--lights spot|sun|both]
-//         [--filter gaussian|sat] [--view final|shadow] [--width N] [--height N]
+//         [--filter gaussian|sat [--soft]] [--view final|shadow] [--width N] [--height N]
 //         [--map-size N]
 //
 // Several techniques render one after another with the same ShadowMaps
@@ -33,6 +33,7 @@ struct Options {
   std::string output;
   std::vector<penumbra::Technique> techniques{penumbra::Technique::Pcf};
   penumbra::Filter filter = penumbra::ShadowSettings{}.filter;
+  bool soft = false;  // moment soft shadows (vsm, msm, msm16 with --filter sat)
   bool spot = true, sun = true;
   bool shadow_view = false;
   int width = 640, height = 360, map_size = 1024;
@@ -58,8 +59,8 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string_view flag = argv[i];
-    if (flag == "--headless") {
-      o.headless = true;
+    if (flag == "--headless" || flag == "--soft") {
+      (flag == "--soft" ? o.soft : o.headless) = true;
       continue;
     }
     if (i + 1 >= argc) usage_error(std::string(flag) + ": expected a value (or unknown flag)");
@@ -166,6 +167,7 @@ int main(int argc, char** argv) {
     penumbra::ShadowSettings settings;
     settings.map_size = options.map_size;
     settings.filter = options.filter;
+    settings.soft = options.soft;
     for (const penumbra::Technique technique : options.techniques) {
       settings.technique = technique;
       // Fit the views to the camera and the casters (the mesh's own

@@ -69,8 +69,8 @@ class ShadowMaps {
   // light 6, a spot light 1; kMaxShadowViews in all) and fills the block.
   // A light is refitted only when its inputs change (a spot or point light
   // not when the camera moves). Throws UsageError for settings out of
-  // range (validate()), too many lights or views, or what the lookup
-  // lacks (--filter sat, and accumulate: they are the renderer's for now).
+  // range (validate()), too many lights or views, or accumulate (the
+  // renderer's: it renders the maps once per point of the light's source).
   void update(std::span<const Light> lights, const CameraFrustum& camera,
               const CasterGeometry& casters, const ShadowSettings& settings);
 

@@ -34,6 +34,7 @@
 #include "msm.glsl"
 #include "filtered.glsl"
 #include "../filter/sat.glsl"
+#include "soft_moments.glsl"
 #include "noise.glsl"
 #include "pcf.glsl"
 #include "pcss.glsl"
@@ -87,6 +88,14 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
                        noise, params.pcss_blocker_samples, params.pcss_filter_samples);
   }
   if (!filterable) return 1.0;
+  bool quantized = penumbra.counts.w != 0;
+  float lit;
+  if (params.filter_type == FILTER_SAT && params.soft_moments != 0) {
+    lit = shadow_soft_moments(penumbra_sat, penumbra_depth, technique, quantized, params, v, view,
+                              s, z, light, normal, rotation);
+    if (technique == TECHNIQUE_ESM) return lit;
+    return reduce_light_bleeding(lit, params.bleed_reduction);
+  }
   vec4 m;
   if (params.filter_type == FILTER_SAT) {
     // The (2W + 1)^2 box centred on the lookup point: half-width W + 1/2.
@@ -95,8 +104,7 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
   } else {
     m = texture(penumbra_filtered, vec3(s.uv, float(v)));
   }
-  float lit = filtered_lit_fraction_of(technique, penumbra.counts.w != 0, params, m, z,
-                                       s.texel_depth);
+  lit = filtered_lit_fraction_of(technique, quantized, params, m, z, s.texel_depth);
   if (technique == TECHNIQUE_ESM) return lit;
   return reduce_light_bleeding(lit, params.bleed_reduction);
 }

@@ -69,6 +69,7 @@ gpu::GpuShadow gpu_shadow_params(const ShadowSettings& shadow) {
   block.blur_radius = is_filterable(shadow.technique) ? shadow.blur : 0;
   block.sat_scale = static_cast<float>(sat_fixed_point_scale());
   block.filter_type = filter_define(shadow);
+  block.soft_moments = shadow.soft && block.filter_type == FILTER_SAT ? 1 : 0;
   block.filter_slope_bias = shadow.filter_slope_bias;
   block.pcf_width = shadow.pcf_width;
   block.pcf_samples = shadow.pcf_samples;

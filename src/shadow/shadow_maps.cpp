@@ -62,10 +62,6 @@ ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
                         const CasterGeometry& casters, const ShadowSettings& settings) {
   validate(settings);
-  if (settings.soft && filter_define(settings) == FILTER_SAT) {
-    throw UsageError(
-        "ShadowMaps: --soft is not in the shadow lookup yet (penumbra's renderer has it)");
-  }
   if (settings.accumulate > 1) throw UsageError("ShadowMaps: accumulate is the renderer's");
   if (lights.size() > static_cast<std::size_t>(kMaxLights)) {
     throw UsageError("ShadowMaps: " + std::to_string(lights.size()) + " lights; at most " +

@@ -45,5 +45,7 @@ common=(--headless --width 320 --height 180 --map-size 512 --view shadow)
 "$embed" "${common[@]}" --lights sun --technique pcf,pcss,vsm -o "$work/images/sun.png"
 "$embed" "${common[@]}" --lights spot --filter sat --technique vsm,msm,msm16 \
   -o "$work/images/spot-sat.png"
+"$embed" "${common[@]}" --lights spot --filter sat --soft --technique vsm,msm \
+  -o "$work/images/spot-soft.png"
 "$embed" --headless --width 320 --height 180 --map-size 512 --technique msm \
   -o "$work/images/final.png"

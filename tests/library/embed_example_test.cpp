@@ -133,12 +133,13 @@ TEST(EmbedExample, SpotShadowWhereComputedForEveryTechnique) {
 }
 
 // The moment techniques filtered through summed-area tables (--filter
-// sat): msm's moments quantized for the table, as the block says.
+// sat): msm's moments quantized for the table, as the block says; and
+// with --soft, the filter sized by the penumbra.
 TEST(EmbedExample, SummedAreaTableShadowWhereComputed) {
-  for (const char* technique : {"vsm", "msm", "msm16"}) {
-    SCOPED_TRACE(technique);
+  for (const char* image : {"sat-vsm", "sat-msm", "sat-msm16", "soft-vsm", "soft-msm"}) {
+    SCOPED_TRACE(image);
     const Tally t =
-        check(penumbra::read_png(kWork + "/images/spot-sat-" + technique + ".png"), spot_light());
+        check(penumbra::read_png(kWork + "/images/spot-" + image + ".png"), spot_light());
     EXPECT_GE(t.shadowed, 20);
     EXPECT_GE(t.lit, 100);
     EXPECT_LE(t.wrong_shadowed, t.shadowed / 20) << "of " << t.shadowed;
@@ -168,7 +169,7 @@ TEST(EmbedExample, SoftTechniquesDrawAPenumbra) {
   };
   const int hard = partial("hard");
   EXPECT_LE(hard, 2);
-  for (const char* technique : {"pcss", "backprojection"}) {
+  for (const char* technique : {"pcss", "backprojection", "soft-msm"}) {
     SCOPED_TRACE(technique);
     EXPECT_GE(partial(technique), 20) << "hard: " << hard;
   }
