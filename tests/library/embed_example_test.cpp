@@ -120,15 +120,21 @@ Tally check(const penumbra::Image& image, const TestLight& light) {
   return tally;
 }
 
+// images/<image>.png has the shadow of `light` where the test computes
+// it: at least 20 shadowed and 100 lit points, at most 5 % of the shadowed
+// ones read lit and 2 % of the lit ones shadowed.
+void expect_shadow_where_computed(const std::string& image, const TestLight& light) {
+  SCOPED_TRACE(image);
+  const Tally t = check(penumbra::read_png(kWork + "/images/" + image + ".png"), light);
+  EXPECT_GE(t.shadowed, 20);
+  EXPECT_GE(t.lit, 100);
+  EXPECT_LE(t.wrong_shadowed, t.shadowed / 20) << "of " << t.shadowed;
+  EXPECT_LE(t.wrong_lit, t.lit / 50) << "of " << t.lit;
+}
+
 TEST(EmbedExample, SpotShadowWhereComputedForEveryTechnique) {
   for (const char* technique : {"hard", "pcf", "pcss", "backprojection", "msm"}) {
-    SCOPED_TRACE(technique);
-    const Tally t =
-        check(penumbra::read_png(kWork + "/images/spot-" + technique + ".png"), spot_light());
-    EXPECT_GE(t.shadowed, 20);
-    EXPECT_GE(t.lit, 100);
-    EXPECT_LE(t.wrong_shadowed, t.shadowed / 20) << "of " << t.shadowed;
-    EXPECT_LE(t.wrong_lit, t.lit / 50) << "of " << t.lit;
+    expect_shadow_where_computed(std::string("spot-") + technique, spot_light());
   }
 }
 
@@ -137,25 +143,13 @@ TEST(EmbedExample, SpotShadowWhereComputedForEveryTechnique) {
 // with --soft, the filter sized by the penumbra.
 TEST(EmbedExample, SummedAreaTableShadowWhereComputed) {
   for (const char* image : {"sat-vsm", "sat-msm", "sat-msm16", "soft-vsm", "soft-msm"}) {
-    SCOPED_TRACE(image);
-    const Tally t =
-        check(penumbra::read_png(kWork + "/images/spot-" + image + ".png"), spot_light());
-    EXPECT_GE(t.shadowed, 20);
-    EXPECT_GE(t.lit, 100);
-    EXPECT_LE(t.wrong_shadowed, t.shadowed / 20) << "of " << t.shadowed;
-    EXPECT_LE(t.wrong_lit, t.lit / 50) << "of " << t.lit;
+    expect_shadow_where_computed(std::string("spot-") + image, spot_light());
   }
 }
 
 TEST(EmbedExample, SunCascadeShadowWhereComputed) {
   for (const char* technique : {"pcf", "pcss", "vsm"}) {
-    SCOPED_TRACE(technique);
-    const Tally t =
-        check(penumbra::read_png(kWork + "/images/sun-" + technique + ".png"), sun_light());
-    EXPECT_GE(t.shadowed, 20);
-    EXPECT_GE(t.lit, 100);
-    EXPECT_LE(t.wrong_shadowed, t.shadowed / 20) << "of " << t.shadowed;
-    EXPECT_LE(t.wrong_lit, t.lit / 50) << "of " << t.lit;
+    expect_shadow_where_computed(std::string("sun-") + technique, sun_light());
   }
 }
 
