@@ -126,8 +126,9 @@ void print_run(const PassTimes& run, int frames, bool timer) {
   if (run.shadow.accumulate > 1) {
     const int n = run.shadow.accumulate;
     std::printf(
-        "  a converged image (%d sub-frames): %.3f ms by the timers, %.3f by the wall clock\n", n,
-        n * spread_of(run.total.timer_ms).median, n * spread_of(run.total.wall_ms).median);
+        "  a converged image (%d sub-frames, the camera's passes once): %.3f ms by the timers, "
+        "%.3f by the wall clock\n",
+        n, converged_image_ms(run, true), converged_image_ms(run, false));
   }
   const CopyRatios ratios = copy_ratios(run, timer);
   for (const auto& [name, ratio] : ratios.values) {
@@ -150,10 +151,10 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
   }
   j["frames"] = frames;
   // With --accumulate N each frame is one sub-frame; N of them make the
-  // converged image.
+  // converged image, which draws the camera's passes once.
   j["accumulate"] = s.accumulate;
-  j["converged_image_ms"] = s.accumulate * spread_of(run.total.timer_ms).median;
-  j["converged_image_wall_ms"] = s.accumulate * spread_of(run.total.wall_ms).median;
+  j["converged_image_ms"] = converged_image_ms(run, true);
+  j["converged_image_wall_ms"] = converged_image_ms(run, false);
   auto samples_json = [](const Samples& samples) {
     const Spread t = spread_of(samples.timer_ms), w = spread_of(samples.wall_ms);
     return nlohmann::json{{"median_ms", t.median}, {"min_ms", t.min},

@@ -67,6 +67,16 @@ double median_ms(const Samples& samples, bool timer_clock) {
   return spread_of(timer_clock ? samples.timer_ms : samples.wall_ms).median;
 }
 
+double converged_image_ms(const PassTimes& run, bool timer_clock) {
+  double camera = 0.0;
+  for (const gl::GpuPass pass : {gl::GpuPass::GBuffer, gl::GpuPass::AmbientOcclusion}) {
+    const auto p = static_cast<std::size_t>(pass);
+    if (run.ran[p]) camera += median_ms(run.passes[p], timer_clock);
+  }
+  const double frame = median_ms(run.total, timer_clock);
+  return camera + std::max(run.shadow.accumulate, 1) * (frame - camera);
+}
+
 double achieved_gb_per_second(const PassTimes& run, std::size_t pass, bool timer_clock) {
   const double ms = median_ms(run.passes[pass], timer_clock);
   if (!run.traffic[pass] || !(ms > 0.0)) return 0.0;

@@ -53,6 +53,11 @@ struct PassTimes {
 // A pass's median time on one clock, and the bandwidth that is: the
 // pass's bytes over its time (0 where either is unknown).
 double median_ms(const Samples& samples, bool timer_clock);
+// What the image of run.shadow.accumulate sub-frames (one frame each)
+// costs as render, compare and report make it: the camera's G-buffer and
+// ambient occlusion once (the renderer reuses them for the same camera),
+// the shadow maps, filters and lighting once per sub-frame.
+double converged_image_ms(const PassTimes& run, bool timer_clock);
 double achieved_gb_per_second(const PassTimes& run, std::size_t pass, bool timer_clock);
 
 // Renders warmup + frames frames, each followed by the bandwidth yardstick
