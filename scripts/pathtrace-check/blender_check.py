@@ -24,12 +24,18 @@ def to_blender(v):
     return Vector((v[0], -v[2], v[1]))
 
 
+def shape_scale(shape):
+    scale = shape.get("scale", 1.0)
+    return list(scale) if isinstance(scale, list) else [scale] * 3
+
+
 def shape_matrix(shape):
-    # shape_transform: T * Rz * Ry * Rx (a scale of 1).
+    # shape_transform: T * Rz * Ry * Rx * S.
     rx, ry, rz = (math.radians(a) for a in shape.get("rotation", [0, 0, 0]))
     m = Matrix.Translation(Vector(shape.get("position", [0, 0, 0])))
     m = m @ Matrix.Rotation(rz, 4, "Z") @ Matrix.Rotation(ry, 4, "Y") @ Matrix.Rotation(rx, 4, "X")
-    return m
+    sx, sy, sz = shape_scale(shape)
+    return m @ Matrix.Diagonal(Vector((sx, sy, sz, 1.0)))
 
 
 def plane(shape):
@@ -87,7 +93,61 @@ def sphere(shape):
     return verts, tris, normals
 
 
-BUILDERS = {"plane": plane, "box": box, "sphere": sphere}
+CREASE_DEGREES = 80.0  # kCreaseDegrees, src/scene/model.cpp
+
+
+def model(shape):
+    # An OBJ's triangles (polygons as fans) with penumbra's vertex normals
+    # (src/scene/smooth_normals.hpp): per corner, the area-weighted mean of
+    # the normals of the triangles at its position within the crease angle
+    # of its own triangle's. Normals are computed in the file's frame; the
+    # caller rotates them (a uniform scale keeps their directions).
+    verts, tris = [], []
+    with open(shape["path"]) as f:
+        for line in f:
+            parts = line.split()
+            if not parts:
+                continue
+            if parts[0] == "v":
+                verts.append(tuple(float(x) for x in parts[1:4]))
+            elif parts[0] == "f":
+                ids = [int(p.split("/")[0]) for p in parts[1:]]
+                ids = [i - 1 if i > 0 else len(verts) + i for i in ids]
+                for k in range(1, len(ids) - 1):
+                    tris.append((ids[0], ids[k], ids[k + 1]))
+    face_normals = []  # area-weighted (the cross product's length is twice the area)
+    for a, b, c in tris:
+        e1 = Vector(verts[b]) - Vector(verts[a])
+        e2 = Vector(verts[c]) - Vector(verts[a])
+        face_normals.append(e1.cross(e2))
+    around = {}
+    for t, tri in enumerate(tris):
+        for i in tri:
+            around.setdefault(verts[i], []).append(t)
+    cos_crease = math.cos(math.radians(CREASE_DEGREES))
+    # Corners with the same position and normal share a vertex.
+    out_verts, out_normals, out_tris, index = [], [], [], {}
+    for t, tri in enumerate(tris):
+        own = face_normals[t].normalized() if face_normals[t].length > 0 else Vector((0, 1, 0))
+        corner_ids = []
+        for i in tri:
+            n = Vector((0.0, 0.0, 0.0))
+            for u in around[verts[i]]:
+                m = face_normals[u]
+                if m.length > 0 and m.normalized().dot(own) >= cos_crease:
+                    n += m
+            n = tuple(n.normalized() if n.length > 0 else own)
+            key = (verts[i], n)
+            if key not in index:
+                index[key] = len(out_verts)
+                out_verts.append(verts[i])
+                out_normals.append(n)
+            corner_ids.append(index[key])
+        out_tris.append(tuple(corner_ids))
+    return out_verts, out_tris, out_normals
+
+
+BUILDERS = {"plane": plane, "box": box, "sphere": sphere, "model": model}
 
 
 def add_object(name, shape, material):
@@ -99,11 +159,12 @@ def add_object(name, shape, material):
     mesh = bpy.data.meshes.new(name)
     mesh.from_pydata(world, [], tris)
     if normals is not None:
-        rot = m.to_3x3()
+        rot = m.to_3x3().inverted().transposed()  # the normal matrix
         for p in mesh.polygons:
             p.use_smooth = True
         mesh.use_auto_smooth = True
-        mesh.normals_split_custom_set_from_vertices([to_blender(rot @ Vector(n)) for n in normals])
+        mesh.normals_split_custom_set_from_vertices(
+            [to_blender((rot @ Vector(n)).normalized()) for n in normals])
     mesh.materials.append(material)
     obj = bpy.data.objects.new(name, mesh)
     bpy.context.scene.collection.objects.link(obj)
