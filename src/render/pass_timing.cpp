@@ -96,6 +96,9 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
   std::optional<Accumulator> accumulator;
   if (accumulating) accumulator.emplace();
   for (int frame = 0; frame < warmup + frames; ++frame) {
+    // Every frame times every pass, the camera's included (render() would
+    // reuse them for the same camera).
+    renderer.forget_surfaces();
     profiler.begin_frame();
     if (accumulating) {
       render_subframe(renderer, lights, render, shadow, {}, frame % shadow.accumulate, &profiler);

@@ -303,10 +303,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   gbuffer_current_ = !is_map_view(render.view);
   if (gbuffer_current_) {
     last_view_projection_ = frame.projection * frame.view;
-    // A timed frame (bench, the viewer) draws every pass it times.
     const SurfaceKey surfaces{frame.view, frame.projection, render.width, render.height};
-    const bool reuse = profiler == nullptr;
-    if (!reuse || gbuffer_for_ != surfaces) {
+    if (gbuffer_for_ != surfaces) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::GBuffer);
       gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
       gbuffer_for_ = surfaces;
@@ -314,7 +312,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     }
     GLuint ao = 0;
     if (ambient_occlusion) {
-      if (!reuse || ao_for_ != ssao) {
+      if (ao_for_ != ssao) {
         gl::GpuPassScope timed(profiler, gl::GpuPass::AmbientOcclusion);
         ssao_pass_.execute(gbuffer_pass_, frame.view, frame.projection, ssao);
         ao_for_ = ssao;

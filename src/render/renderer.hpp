@@ -72,10 +72,16 @@ class Renderer {
   // (a shadow map larger than its texture limit, a light index out of range).
   // SSAO runs for the final and ao views only. The G-buffer and the AO of
   // the last frame are reused when the camera, the image size (and the
-  // SSAO settings) are the same. With a profiler, each pass is drawn and
-  // timed (the caller begins and ends the frame).
+  // SSAO settings) are the same. With a profiler, each pass drawn is timed
+  // (the caller begins and ends the frame).
   void render(const RenderSettings& render, const ShadowSettings& shadow,
               const SsaoSettings& ssao = {}, gl::GpuProfiler* profiler = nullptr);
+  // The next render() draws the G-buffer and the AO anew, whatever it
+  // reused before: for timing every pass of a frame.
+  void forget_surfaces() {
+    gbuffer_for_.reset();
+    ao_for_.reset();
+  }
 
   // Shades the last render()'s camera view again as `view`, from the
   // shadow maps, the filter's output and the G-buffer it left, without

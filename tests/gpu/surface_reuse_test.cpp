@@ -4,7 +4,10 @@
 // here must equal the same frame from a fresh renderer.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include "gpu_fixture.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
 
@@ -84,6 +87,36 @@ TEST_F(GpuTest, OtherSsaoSettingsComputeTheAmbientOcclusionAgain) {
   renderer.render(frame(View::Shadow), small_maps());
   renderer.render(frame(View::Final), small_maps());
   EXPECT_EQ(renderer.read_view().rgba, fresh(scene.camera, frame(View::Final)).rgba);
+}
+
+// Which of the camera's passes a timed frame drew.
+struct CameraPasses {
+  bool gbuffer = false, ssao = false;
+};
+
+CameraPasses timed_frame(Renderer& renderer) {
+  gl::GpuProfiler profiler(1, /*serialize=*/true);
+  profiler.begin_frame();
+  renderer.render(frame(View::Final), small_maps(), {}, &profiler);
+  profiler.end_frame();
+  const std::optional<gl::GpuFrameTimes> times = profiler.read(true);
+  if (!times) return {};
+  return {times->ran[static_cast<std::size_t>(gl::GpuPass::GBuffer)],
+          times->ran[static_cast<std::size_t>(gl::GpuPass::AmbientOcclusion)]};
+}
+
+// A timed frame that reuses the surfaces times no G-buffer or SSAO pass
+// (the viewer's sub-frames of --accumulate); after forget_surfaces() it
+// draws and times them (bench times every pass of every frame).
+TEST_F(GpuTest, ForgettingTheSurfacesDrawsThemAgain) {
+  Renderer renderer(*builtin_scene("default"));
+  const CameraPasses first = timed_frame(renderer);
+  EXPECT_TRUE(first.gbuffer && first.ssao);
+  const CameraPasses reused = timed_frame(renderer);
+  EXPECT_FALSE(reused.gbuffer || reused.ssao);
+  renderer.forget_surfaces();
+  const CameraPasses again = timed_frame(renderer);
+  EXPECT_TRUE(again.gbuffer && again.ssao);
 }
 
 }  // namespace
