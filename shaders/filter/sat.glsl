@@ -75,3 +75,10 @@ vec4 sat_rectangle_average(usampler2DArray sat, int layer, vec2 center, vec2 hal
   float area_y = length_y.x + float(between.y) * length_y.y + length_y.z;
   return sum / (scale * area_x * area_y);
 }
+
+// Average over the square of radius r around the point `center` (texel
+// units): half-width r + 1/2, so that an integer r is the (2r + 1)^2 box of
+// the fixed filter; a fractional r widens it continuously.
+vec4 sat_square_average(usampler2DArray sat, int v, vec2 center, float r, float scale) {
+  return sat_rectangle_average(sat, v, center, vec2(r + 0.5), scale);
+}

@@ -111,9 +111,8 @@ vec4 filtered_map(int v, vec2 uv, vec2 duv_dx, vec2 duv_dy) {
 #if SHADOW_FILTER == FILTER_SAT
   // The (2W + 1)^2 box, centred on the lookup point itself rather than on
   // the texel it falls in: half-width W + 1/2 texels.
-  return sat_rectangle_average(shadow_sat, v, uv * vec2(textureSize(shadow_sat, 0).xy),
-                               vec2(float(shadow_params.blur_radius) + 0.5),
-                               shadow_params.sat_scale);
+  return sat_square_average(shadow_sat, v, uv * vec2(textureSize(shadow_sat, 0).xy),
+                            float(shadow_params.blur_radius), shadow_params.sat_scale);
 #elif SHADOW_MIPS
   return textureGrad(shadow_filtered, vec3(uv, float(v)), duv_dx, duv_dy);
 #else
@@ -130,7 +129,6 @@ float filtered_mean_depth(vec4 m) {
   return filtered_mean_depth_of(SHADOW_TECHNIQUE, MSM_QUANTIZED != 0, shadow_params, m);
 }
 #endif
-
 
 #if SHADOW_TECHNIQUE >= TECHNIQUE_VSM && SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
 // Moment soft shadows (shaders/shadow/soft_moments.glsl) of view v.
@@ -218,7 +216,6 @@ float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCo
                     rotation);
 }
 #endif
-
 
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCSS || SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
 // PCSS (shaders/shadow/pcss.glsl) with the settings' sample counts; its

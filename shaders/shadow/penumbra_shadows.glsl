@@ -89,24 +89,20 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
   }
   if (!filterable) return 1.0;
   bool quantized = penumbra.counts.w != 0;
+  bool sat = params.filter_type == FILTER_SAT;
   float lit;
-  if (params.filter_type == FILTER_SAT && params.soft_moments != 0) {
+  if (sat && params.soft_moments != 0) {
     lit = shadow_soft_moments(penumbra_sat, penumbra_depth, technique, quantized, params, v, view,
                               s, z, light, normal, rotation);
-    if (technique == TECHNIQUE_ESM) return lit;
-    return reduce_light_bleeding(lit, params.bleed_reduction);
-  }
-  vec4 m;
-  if (params.filter_type == FILTER_SAT) {
-    // The (2W + 1)^2 box centred on the lookup point: half-width W + 1/2.
-    m = sat_rectangle_average(penumbra_sat, v, s.uv * vec2(textureSize(penumbra_sat, 0).xy),
-                              vec2(float(params.blur_radius) + 0.5), params.sat_scale);
   } else {
-    m = texture(penumbra_filtered, vec3(s.uv, float(v)));
+    // The SAT's (2W + 1)^2 box centred on the lookup point, or the filtered map.
+    vec4 m = sat ? sat_square_average(penumbra_sat, v,
+                                      s.uv * vec2(textureSize(penumbra_sat, 0).xy),
+                                      float(params.blur_radius), params.sat_scale)
+                 : texture(penumbra_filtered, vec3(s.uv, float(v)));
+    lit = filtered_lit_fraction_of(technique, quantized, params, m, z, s.texel_depth);
   }
-  lit = filtered_lit_fraction_of(technique, quantized, params, m, z, s.texel_depth);
-  if (technique == TECHNIQUE_ESM) return lit;
-  return reduce_light_bleeding(lit, params.bleed_reduction);
+  return technique == TECHNIQUE_ESM ? lit : reduce_light_bleeding(lit, params.bleed_reduction);
 }
 
 // Fraction of light `light_index`'s light that reaches the point, for

@@ -12,13 +12,6 @@
 // receiver (texels) for blockers inside the light's cone.
 #define CONTACT_WINDOW_RADIUS 3
 
-// Average over the square of radius r around the point `center` (texel
-// units): half-width r + 1/2, so that an integer r is the (2r + 1)^2 box of
-// the fixed filter; a fractional r widens it continuously.
-vec4 sat_square_average(usampler2DArray sat, int v, vec2 center, float r, float scale) {
-  return sat_rectangle_average(sat, v, center, vec2(r + 0.5), scale);
-}
-
 // The blocker search over filtered map values m for a receiver at relative
 // depth z: (the blockers' mean relative depth, their fraction G).
 // msm with --soft-two-moment-blockers takes VSM's estimate, which measured

@@ -92,8 +92,8 @@ struct GpuShadow {
   int accumulate_frame;
   float evsm_positive;  // EVSM exponents c+ and c- (shaders/shadow/evsm.glsl)
   float evsm_negative;
-  int filter_type;      // FILTER_* of the representation (FILTER_SAT: summed-area tables)
-  int soft_moments;     // 1: --soft, penumbra-sized filters from the summed-area tables
+  int filter_type;   // FILTER_* of the representation (FILTER_SAT: summed-area tables)
+  int soft_moments;  // 1: --soft, penumbra-sized filters from the summed-area tables
   // The source's outward normal at the sub-frame's point (spot: the light's
   // direction; point: the sphere's normal); 1 when the shadow view writes
   // (lit, lit * weight, weight) for the Accumulator to weigh.
