@@ -59,8 +59,12 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string_view flag = argv[i];
-    if (flag == "--headless" || flag == "--soft") {
-      (flag == "--soft" ? o.soft : o.headless) = true;
+    if (flag == "--headless") {
+      o.headless = true;
+      continue;
+    }
+    if (flag == "--soft") {
+      o.soft = true;
       continue;
     }
     if (i + 1 >= argc) usage_error(std::string(flag) + ": expected a value (or unknown flag)");
