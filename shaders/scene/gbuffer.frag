@@ -4,9 +4,11 @@
 // opaque surfaces their early depth test, so they are drawn without).
 #include "../shared/bindings.h"
 #include "material.glsl"
+#include "smooth_surface.glsl"
 #include "surface.glsl"
 
 in vec3 v_normal;
+in vec3 v_world;
 in vec2 v_texcoord;
 in vec4 v_color;
 flat in uint v_material;
@@ -14,6 +16,7 @@ flat in uint v_material;
 layout(location = 0) out vec4 out_normal;    // xyz: world normal, w: shininess (0 = background)
 layout(location = 1) out vec4 out_albedo;    // rgb: albedo (stored sRGB-encoded)
 layout(location = 2) out vec4 out_specular;  // rgb: specular colour
+layout(location = 3) out vec4 out_facet;     // xyz: triangle normal, w: rise to the smooth surface
 
 void main() {
   Material m = materials[v_material];
@@ -26,4 +29,6 @@ void main() {
   out_normal = vec4(n, m.specular_shininess.w);
   out_albedo = vec4(base.rgb, 1.0);
   out_specular = vec4(m.specular_shininess.rgb, 1.0);
+  SmoothSurface surface = smooth_surface(v_world, n);
+  out_facet = vec4(surface.facet_normal, surface.height);
 }

@@ -15,6 +15,13 @@
 #define BINDING_MATERIALS_SSBO 0
 #define BINDING_FILTER_WEIGHTS_SSBO 1
 #define BINDING_POISSON_SSBO 2
+#define BINDING_SCENE_VERTICES_SSBO 3  // the scene's vertices (GpuScene), read by triangle
+#define BINDING_SCENE_INDICES_SSBO 4   // and its indices, three per triangle
+// The vertices' layout in that buffer, in floats (src/scene/mesh.hpp:
+// Vertex, whose offsets src/render/gpu_scene.cpp checks against these).
+#define SCENE_VERTEX_FLOATS 10
+#define SCENE_VERTEX_POSITION 0
+#define SCENE_VERTEX_NORMAL 3
 
 // Texture units
 #define UNIT_GBUFFER_DEPTH 0
@@ -23,6 +30,7 @@
 #define UNIT_GBUFFER_SPECULAR 3
 #define UNIT_AMBIENT_OCCLUSION 4  // the AO texture: read by the lighting pass and the SSAO blur
 #define UNIT_BASE_COLOR 5         // the scene's base-colour texture of the batch drawn
+#define UNIT_GBUFFER_FACET 6      // the G-buffer's triangle normal and smooth-surface height
 // The shadow maps of every light's views, one array layer per view:
 #define UNIT_SHADOW_DEPTH 8     // z-bar depth maps
 #define UNIT_SHADOW_FILTERED 9  // the filtered representations (or summed-area tables)
@@ -48,6 +56,9 @@
 #ifndef PENUMBRA_UNIT_SHADOW_SAT
 #define PENUMBRA_UNIT_SHADOW_SAT 12  // the summed-area tables (--filter sat; unsigned integers)
 #endif
+
+// Uniform locations
+#define LOCATION_FIRST_INDEX 0  // GpuScene::draw: the batch's first index, for gl_PrimitiveID
 
 // Image units (compute)
 #define IMAGE_OUTPUT 0

@@ -18,12 +18,15 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
     normal_ = make(GL_RGBA16F, "gbuffer normal");
     albedo_ = make(GL_SRGB8_ALPHA8, "gbuffer albedo");
     specular_ = make(GL_RGBA8, "gbuffer specular");
+    // Half floats: the rise is kept to its own 11 bits at any scene scale.
+    facet_ = make(GL_RGBA16F, "gbuffer facet");
     framebuffer_ = gl::Framebuffer("gbuffer");
     framebuffer_.attach_depth(depth_);
     framebuffer_.attach_color(0, normal_);
     framebuffer_.attach_color(1, albedo_);
     framebuffer_.attach_color(2, specular_);
-    framebuffer_.set_draw_buffers(3);
+    framebuffer_.attach_color(3, facet_);
+    framebuffer_.set_draw_buffers(4);
     framebuffer_.check_complete();
     width_ = width;
     height_ = height;
@@ -35,7 +38,7 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   glViewport(0, 0, width, height);
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   const float far_depth = 1.0f;
-  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, zero);
+  for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, zero);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -47,9 +50,9 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   // stored as if encoded and read back as albedo^2.2.
   glEnable(GL_FRAMEBUFFER_SRGB);
   program_.use();
-  scene.draw(SurfaceSet::Opaque);
+  scene.draw(SurfaceSet::Opaque, GpuScene::FirstIndex::ToUniform);
   cut_out_program_.use();
-  scene.draw(SurfaceSet::CutOut);
+  scene.draw(SurfaceSet::CutOut, GpuScene::FirstIndex::ToUniform);
   glDisable(GL_FRAMEBUFFER_SRGB);
   glPopDebugGroup();
 }

@@ -1,5 +1,7 @@
 #pragma once
-// The G-buffer: depth, normal + shininess, albedo, specular colour.
+// The G-buffer: depth, normal + shininess, albedo, specular colour, and
+// for the shadow lookups the triangle's normal and the rise to the smooth
+// surface of the vertex normals (shaders/scene/smooth_surface.glsl).
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
 #include "render/gpu_scene.hpp"
@@ -18,11 +20,12 @@ class GBufferPass {
   [[nodiscard]] const gl::Texture& normal() const { return normal_; }
   [[nodiscard]] const gl::Texture& albedo() const { return albedo_; }
   [[nodiscard]] const gl::Texture& specular() const { return specular_; }
+  [[nodiscard]] const gl::Texture& facet() const { return facet_; }
 
  private:
   gl::Program program_;          // opaque surfaces
   gl::Program cut_out_program_;  // alpha-tested and single-sided ones
-  gl::Texture depth_, normal_, albedo_, specular_;
+  gl::Texture depth_, normal_, albedo_, specular_, facet_;
   gl::Framebuffer framebuffer_;
   int width_ = 0, height_ = 0;
 };

@@ -11,6 +11,12 @@
 
 namespace penumbra {
 
+// The G-buffer pass reads vertices from the vertex buffer by these offsets
+// (shaders/scene/smooth_surface.glsl).
+static_assert(sizeof(Vertex) == SCENE_VERTEX_FLOATS * sizeof(float));
+static_assert(offsetof(Vertex, position) == SCENE_VERTEX_POSITION * sizeof(float));
+static_assert(offsetof(Vertex, normal) == SCENE_VERTEX_NORMAL * sizeof(float));
+
 namespace {
 
 GLenum gl_wrap(TextureWrap wrap) {
@@ -178,8 +184,10 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
   glVertexArrayAttribBinding(vao, 4, 0);
 }
 
-void GpuScene::draw(SurfaceSet set) const {
+void GpuScene::draw(SurfaceSet set, FirstIndex first_index) const {
   glBindVertexArray(vao_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_VERTICES_SSBO, vertices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INDICES_SSBO, indices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS_SSBO, materials_.id());
   for (const Batch& batch : batches_) {
     if (batch.index_count == 0) continue;
@@ -189,6 +197,9 @@ void GpuScene::draw(SurfaceSet set) const {
     }
     glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
     glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
+    if (first_index == FirstIndex::ToUniform) {
+      glUniform1ui(LOCATION_FIRST_INDEX, static_cast<GLuint>(batch.first_index));
+    }
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(batch.index_count), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(batch.first_index * sizeof(std::uint32_t)));
   }

@@ -35,9 +35,13 @@ class GpuScene {
  public:
   GpuScene(const Scene& scene, const TriangleMesh& mesh);
 
-  // Binds the vertex array, the materials and each batch's texture (unit
-  // UNIT_BASE_COLOR), and draws the triangles of the set.
-  void draw(SurfaceSet set = SurfaceSet::All) const;
+  // Binds the vertex array, the materials, the vertices and indices as
+  // storage buffers (for shaders that read their triangle's corners by
+  // gl_PrimitiveID) and each batch's texture (unit UNIT_BASE_COLOR), and
+  // draws the triangles of the set. With `first_index`, each batch's
+  // first index goes to the bound program's uniform LOCATION_FIRST_INDEX.
+  enum class FirstIndex { Ignored, ToUniform };
+  void draw(SurfaceSet set = SurfaceSet::All, FirstIndex first_index = FirstIndex::Ignored) const;
   [[nodiscard]] std::size_t triangle_count() const { return index_count_ / 3; }
 
  private:

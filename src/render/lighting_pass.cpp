@@ -62,7 +62,9 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
   glBindTextureUnit(UNIT_GBUFFER_ALBEDO, gbuffer.albedo().id());
   glBindTextureUnit(UNIT_GBUFFER_SPECULAR, gbuffer.specular().id());
   glBindTextureUnit(UNIT_AMBIENT_OCCLUSION, ambient_occlusion);
-  for (int unit = UNIT_GBUFFER_DEPTH; unit <= UNIT_AMBIENT_OCCLUSION; ++unit) {
+  glBindTextureUnit(UNIT_GBUFFER_FACET, gbuffer.facet().id());
+  for (int unit : {UNIT_GBUFFER_DEPTH, UNIT_GBUFFER_NORMAL, UNIT_GBUFFER_ALBEDO,
+                   UNIT_GBUFFER_SPECULAR, UNIT_AMBIENT_OCCLUSION, UNIT_GBUFFER_FACET}) {
     glBindSampler(static_cast<GLuint>(unit), nearest_.id());
   }
   // Without shadow maps (Technique::None) the shadow units are never read.

@@ -1,0 +1,139 @@
+// Shadow lookups from the smooth surface: a coarse smooth-shaded sphere
+// (an icosahedron split once, 80 flat triangles, vertex normals pointing
+// away from its centre) lit from the side. Each pixel's lookup starts on the
+// smooth surface the vertex normals describe and compares against its own
+// triangle's plane (shaders/scene/smooth_surface.glsl), as the traced
+// reference starts its rays there. Then the lit side needs no slope bias
+// or normal offset to keep clear of its own triangles: tested against its
+// interpolated normal's tangent plane instead, a flat triangle lies up to
+// a few texels in front of it near the terminator and shadows itself.
+// And where the light is below the triangle's own plane, though above the
+// interpolated normal's, no light arrives with or without occluders: the
+// shadow view leaves such pixels unjudged, as the reference does.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <utility>
+
+#include "gpu_fixture.hpp"
+#include "reference/traced_reference.hpp"
+#include "render/renderer.hpp"
+#include "scene/model.hpp"
+
+namespace penumbra {
+namespace {
+
+using testing::GpuTest;
+
+const glm::vec3 kCentre{0.0f, 1.2f, 0.0f};
+
+// The icosahedron split once, on the unit sphere: every vertex's normal is
+// its position, the smooth sphere's.
+std::shared_ptr<Model> coarse_sphere() {
+  const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+  std::vector<glm::vec3> points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                                   {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                                   {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<std::uint32_t, 3>> faces = {
+      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (glm::vec3& p : points) p = glm::normalize(p);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> middles;
+  auto middle = [&](std::uint32_t a, std::uint32_t b) {
+    const auto key = std::minmax(a, b);
+    auto it = middles.find(key);
+    if (it != middles.end()) return it->second;
+    points.push_back(glm::normalize(points[a] + points[b]));
+    return middles[key] = static_cast<std::uint32_t>(points.size() - 1);
+  };
+  auto model = std::make_shared<Model>();
+  model->materials.push_back(Material{"clay", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f});
+  for (const auto& f : faces) {
+    const std::uint32_t ab = middle(f[0], f[1]), bc = middle(f[1], f[2]), ca = middle(f[2], f[0]);
+    for (const std::array<std::uint32_t, 3>& split :
+         {std::array{f[0], ab, ca}, std::array{f[1], bc, ab}, std::array{f[2], ca, bc},
+          std::array{ab, bc, ca}}) {
+      model->mesh.indices.insert(model->mesh.indices.end(), split.begin(), split.end());
+    }
+  }
+  for (const glm::vec3& p : points) model->mesh.vertices.push_back(Vertex{p, p, 0});
+  model->bounds = model->mesh.bounds();
+  return model;
+}
+
+// The sphere over a plane, seen from the front, a spot light to its right
+// and a little above, so that the terminator runs down the sphere's middle.
+Scene sphere_scene() {
+  Scene scene;
+  scene.name = "coarse sphere";
+  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
+  Shape ground;
+  ground.kind = ShapeKind::Plane;
+  ground.size = {12.0f, 0.0f, 12.0f};
+  scene.shapes.push_back(ground);
+  Shape sphere;
+  sphere.kind = ShapeKind::Model;
+  sphere.model = coarse_sphere();
+  sphere.position = kCentre;
+  scene.shapes.push_back(sphere);
+  scene.camera.position = {0.0f, 1.5f, 4.5f};
+  scene.camera.target = kCentre;
+  scene.camera.fov_y_degrees = 30.0f;
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.position = {6.0f, 2.5f, 0.0f};
+  spot.direction = glm::normalize(kCentre - spot.position);
+  spot.cone_degrees = 25.0f;
+  spot.inner_cone_degrees = 20.0f;
+  scene.lights.push_back(spot);
+  return scene;
+}
+
+TEST_F(GpuTest, ShadowLookupsStartOnTheSmoothSurfaceOfACoarseMesh) {
+  Renderer renderer(sphere_scene());
+  RenderSettings rs;
+  rs.width = 160;
+  rs.height = 120;
+  rs.view = View::Shadow;
+  ShadowSettings shadow;  // hard shadows from a point
+  shadow.map_size = 1024;
+  shadow.light_size = 0.0f;
+  shadow.slope_bias = 0.0f;
+  shadow.normal_offset = 0.0f;
+  renderer.render(rs, shadow);
+  const Image image = renderer.read_view();
+  const TracedReference reference = traced_reference(renderer, rs, shadow, 1, "");
+  const SurfacePoints surfaces = renderer.read_surfaces();
+  int lit = 0, shadowed_by_itself = 0, terminator = 0, judged_differently = 0;
+  for (int y = 0; y < rs.height; ++y) {
+    for (int x = 0; x < rs.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * rs.width + x;
+      // The sphere only (the ground's pixels outside the spot's cone are
+      // not judged by the reference alone).
+      if (!surfaces.covered[i] || glm::length(surfaces.position[i] - kCentre) > 1.01f) continue;
+      if ((reference.image.pixel(x, y)[3] > 0.0f) != (image.pixel(x, y)[3] > 0.0f)) {
+        ++judged_differently;
+      }
+      if (reference.image.pixel(x, y)[3] == 0.0f) continue;
+      if (reference.image.pixel(x, y)[0] < 1.0f) continue;
+      ++lit;
+      const glm::vec3 to_light = glm::normalize(renderer.scene().lights[0].position - kCentre);
+      if (glm::dot(surfaces.normal[i], to_light) < 0.3f) ++terminator;
+      if (image.pixel(x, y)[0] < 0.5f) ++shadowed_by_itself;
+    }
+  }
+  std::printf(
+      "sphere pixels the reference lights: %d (%d near the terminator), %d shadowed; %d judged "
+      "differently\n",
+      lit, terminator, shadowed_by_itself, judged_differently);
+  ASSERT_GT(lit, 2000);
+  ASSERT_GT(terminator, 300);
+  EXPECT_LE(shadowed_by_itself, lit / 200);
+  EXPECT_LE(judged_differently, 10);
+}
+
+}  // namespace
+}  // namespace penumbra
