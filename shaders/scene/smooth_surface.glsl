@@ -12,7 +12,11 @@
 // map holds, unlike the interpolated normal's).
 //
 // The triangle's corners are read from the scene's buffers by
-// gl_PrimitiveID (GpuScene::draw binds them and sets first_index).
+// gl_PrimitiveID (GpuScene::draw binds them and sets first_index). Where
+// the buffers are too large to read (first_index is
+// SCENE_CORNERS_UNREADABLE) the point stays on its triangle, whose normal
+// then comes from the screen-space derivatives of the position: within
+// one triangle they are its plane's.
 layout(std430, binding = BINDING_SCENE_VERTICES_SSBO) readonly buffer SceneVerticesBlock {
   float scene_vertices[];  // SCENE_VERTEX_FLOATS per vertex (src/scene/mesh.hpp: Vertex)
 };
@@ -37,6 +41,12 @@ struct SmoothSurface {
 // the bunny (spot light, --accumulate 64) the full vector and its part
 // along n gave the same error.
 SmoothSurface smooth_surface(vec3 p, vec3 n) {
+  if (first_index == SCENE_CORNERS_UNREADABLE) {
+    vec3 d = cross(dFdx(p), dFdy(p));
+    float length2 = dot(d, d);
+    vec3 facet_normal = length2 > 0.0 ? d * inversesqrt(length2) : n;
+    return SmoothSurface(dot(facet_normal, n) < 0.0 ? -facet_normal : facet_normal, 0.0);
+  }
   uint first = first_index + 3u * uint(gl_PrimitiveID);
   uint corner_index[3] =
       uint[3](scene_indices[first], scene_indices[first + 1u], scene_indices[first + 2u]);

@@ -22,6 +22,10 @@
 #define SCENE_VERTEX_FLOATS 10
 #define SCENE_VERTEX_POSITION 0
 #define SCENE_VERTEX_NORMAL 3
+// The first index GpuScene::draw passes when the buffers are larger than
+// one storage block may be (MAX_SHADER_STORAGE_BLOCK_SIZE: 128 MiB on
+// Mesa): the corners cannot be read.
+#define SCENE_CORNERS_UNREADABLE 0xffffffffu
 
 // Texture units
 #define UNIT_GBUFFER_DEPTH 0

@@ -87,10 +87,21 @@ GpuMaterial gpu_material(const Material& m) {
           glm::vec4(t[0][1], t[1][1], t[2][1], static_cast<float>(flags))};
 }
 
-GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh)
+GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
+                   std::int64_t max_storage_block_bytes)
     : vertices_(gl::Buffer::from(std::span<const Vertex>(mesh.vertices), "scene vertices")),
       vao_("scene"),
       index_count_(mesh.indices.size()) {
+  if (max_storage_block_bytes < 0) {
+    GLint64 limit = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+    max_storage_block_bytes = limit;
+  }
+  const auto fits = [&](std::size_t bytes) {
+    return bytes <= static_cast<std::uint64_t>(max_storage_block_bytes);
+  };
+  corners_readable_ = fits(mesh.vertices.size() * sizeof(Vertex)) &&
+                      fits(mesh.indices.size() * sizeof(std::uint32_t));
   std::vector<GpuMaterial> materials;
   for (const Material& m : scene.materials) materials.push_back(gpu_material(m));
   if (materials.empty()) materials.push_back(gpu_material(Material{}));
@@ -198,7 +209,9 @@ void GpuScene::draw(SurfaceSet set, FirstIndex first_index) const {
     glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
     glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
     if (first_index == FirstIndex::ToUniform) {
-      glUniform1ui(LOCATION_FIRST_INDEX, static_cast<GLuint>(batch.first_index));
+      glUniform1ui(LOCATION_FIRST_INDEX, corners_readable_
+                                             ? static_cast<GLuint>(batch.first_index)
+                                             : static_cast<GLuint>(SCENE_CORNERS_UNREADABLE));
     }
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(batch.index_count), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(batch.first_index * sizeof(std::uint32_t)));

@@ -1,6 +1,7 @@
 #pragma once
 // A scene's triangles, materials and base-colour textures on the GPU, drawn
 // with one call per texture.
+#include <cstdint>
 #include <vector>
 
 #include "penumbra/gl/resources.hpp"
@@ -33,7 +34,9 @@ bool is_cut_out_material(const Material& m);
 
 class GpuScene {
  public:
-  GpuScene(const Scene& scene, const TriangleMesh& mesh);
+  // `max_storage_block_bytes`: the largest storage block the shaders may
+  // read (negative: the GPU's MAX_SHADER_STORAGE_BLOCK_SIZE).
+  GpuScene(const Scene& scene, const TriangleMesh& mesh, std::int64_t max_storage_block_bytes = -1);
 
   // Binds the vertex array, the materials, the vertices and indices as
   // storage buffers (for shaders that read their triangle's corners by
@@ -43,6 +46,10 @@ class GpuScene {
   enum class FirstIndex { Ignored, ToUniform };
   void draw(SurfaceSet set = SurfaceSet::All, FirstIndex first_index = FirstIndex::Ignored) const;
   [[nodiscard]] std::size_t triangle_count() const { return index_count_ / 3; }
+  // Whether the vertices and indices each fit in one storage block, so
+  // that shaders can read a triangle's corners (else draw() passes
+  // SCENE_CORNERS_UNREADABLE as the first index).
+  [[nodiscard]] bool corners_readable() const { return corners_readable_; }
 
  private:
   // Triangles whose materials share a texture and sampler, contiguous in
@@ -59,6 +66,7 @@ class GpuScene {
   gl::Buffer materials_;
   gl::VertexArray vao_;
   std::size_t index_count_ = 0;
+  bool corners_readable_ = true;
   std::vector<gl::Texture> textures_;  // [0]: 1x1 white, for untextured materials
   std::vector<gl::Sampler> samplers_;
   std::vector<Batch> batches_;
