@@ -50,9 +50,9 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   // stored as if encoded and read back as albedo^2.2.
   glEnable(GL_FRAMEBUFFER_SRGB);
   program_.use();
-  scene.draw(SurfaceSet::Opaque, GpuScene::FirstIndex::ToUniform);
+  scene.draw(SurfaceSet::Opaque, GpuScene::Corners::Read);
   cut_out_program_.use();
-  scene.draw(SurfaceSet::CutOut, GpuScene::FirstIndex::ToUniform);
+  scene.draw(SurfaceSet::CutOut, GpuScene::Corners::Read);
   glDisable(GL_FRAMEBUFFER_SRGB);
   glPopDebugGroup();
 }

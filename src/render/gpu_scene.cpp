@@ -195,10 +195,12 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
   glVertexArrayAttribBinding(vao, 4, 0);
 }
 
-void GpuScene::draw(SurfaceSet set, FirstIndex first_index) const {
+void GpuScene::draw(SurfaceSet set, Corners corners) const {
   glBindVertexArray(vao_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_VERTICES_SSBO, vertices_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INDICES_SSBO, indices_.id());
+  if (corners == Corners::Read) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_VERTICES_SSBO, vertices_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INDICES_SSBO, indices_.id());
+  }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS_SSBO, materials_.id());
   for (const Batch& batch : batches_) {
     if (batch.index_count == 0) continue;
@@ -208,7 +210,7 @@ void GpuScene::draw(SurfaceSet set, FirstIndex first_index) const {
     }
     glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
     glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
-    if (first_index == FirstIndex::ToUniform) {
+    if (corners == Corners::Read) {
       glUniform1ui(LOCATION_FIRST_INDEX, corners_readable_
                                              ? static_cast<GLuint>(batch.first_index)
                                              : static_cast<GLuint>(SCENE_CORNERS_UNREADABLE));

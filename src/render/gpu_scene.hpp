@@ -38,13 +38,14 @@ class GpuScene {
   // read (negative: the GPU's MAX_SHADER_STORAGE_BLOCK_SIZE).
   GpuScene(const Scene& scene, const TriangleMesh& mesh, std::int64_t max_storage_block_bytes = -1);
 
-  // Binds the vertex array, the materials, the vertices and indices as
-  // storage buffers (for shaders that read their triangle's corners by
-  // gl_PrimitiveID) and each batch's texture (unit UNIT_BASE_COLOR), and
-  // draws the triangles of the set. With `first_index`, each batch's
-  // first index goes to the bound program's uniform LOCATION_FIRST_INDEX.
-  enum class FirstIndex { Ignored, ToUniform };
-  void draw(SurfaceSet set = SurfaceSet::All, FirstIndex first_index = FirstIndex::Ignored) const;
+  // Binds the vertex array, the materials and each batch's texture (unit
+  // UNIT_BASE_COLOR), and draws the triangles of the set. With
+  // Corners::Read the bound program reads each triangle's corners by
+  // gl_PrimitiveID: the vertices and indices are bound as storage buffers
+  // too, and each batch's first index goes to its uniform
+  // LOCATION_FIRST_INDEX.
+  enum class Corners { Unread, Read };
+  void draw(SurfaceSet set = SurfaceSet::All, Corners corners = Corners::Unread) const;
   [[nodiscard]] std::size_t triangle_count() const { return index_count_ / 3; }
   // Whether the vertices and indices each fit in one storage block, so
   // that shaders can read a triangle's corners (else draw() passes

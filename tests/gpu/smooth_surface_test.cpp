@@ -111,6 +111,7 @@ TEST_F(GpuTest, ShadowLookupsStartOnTheSmoothSurfaceOfACoarseMesh) {
   const Image image = renderer.read_view();
   const TracedReference reference = traced_reference(renderer, rs, shadow, 1, "");
   const SurfacePoints surfaces = renderer.read_surfaces();
+  const glm::vec3 to_light = glm::normalize(renderer.scene().lights[0].position - kCentre);
   int lit = 0, shadowed_by_itself = 0, terminator = 0, judged_differently = 0;
   for (int y = 0; y < rs.height; ++y) {
     for (int x = 0; x < rs.width; ++x) {
@@ -124,7 +125,6 @@ TEST_F(GpuTest, ShadowLookupsStartOnTheSmoothSurfaceOfACoarseMesh) {
       if (reference.image.pixel(x, y)[3] == 0.0f) continue;
       if (reference.image.pixel(x, y)[0] < 1.0f) continue;
       ++lit;
-      const glm::vec3 to_light = glm::normalize(renderer.scene().lights[0].position - kCentre);
       if (glm::dot(surfaces.normal[i], to_light) < 0.3f) ++terminator;
       if (image.pixel(x, y)[0] < 0.5f) ++shadowed_by_itself;
     }
