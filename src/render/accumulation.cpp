@@ -3,8 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/light_sampling.hpp"
 #include "penumbra/shadow/light_view.hpp"
-#include "reference/light_sampling.hpp"
 #include "render/accumulator.hpp"
 
 namespace penumbra {

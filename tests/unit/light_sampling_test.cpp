@@ -1,7 +1,7 @@
 // Correlated multi-jittered sampling keeps its stratification (Kensler
 // 2013): one point per 1/N column in y for any N, and where N = m n, one
 // per cell of the m x n grid and one per 1/N column in x too.
-#include "reference/light_sampling.hpp"
+#include "core/light_sampling.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "reference/light_sampling.hpp"
+#include "core/light_sampling.hpp"
 
 #include <algorithm>
 #include <cmath>
