@@ -8,6 +8,7 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -28,6 +29,14 @@ void on_embree_error(void* /*user*/, RTCError /*code*/, const char* /*message*/)
 std::string embree_error(RTCDevice device, const std::string& what) {
   const RTCError code = rtcGetDeviceError(device);
   return "Embree: " + what + " failed (error " + std::to_string(static_cast<int>(code)) + ")";
+}
+
+// Embree's device configuration: PENUMBRA_EMBREE_CONFIG when set (for
+// example "isa=avx2" to run the kernels another CPU would; the tests force
+// each instruction set this way), else Embree's defaults.
+const char* embree_device_config() {
+  const char* config = std::getenv("PENUMBRA_EMBREE_CONFIG");
+  return config != nullptr && config[0] != '\0' ? config : nullptr;
 }
 
 // A unit-sphere frame around w (unit): two axes perpendicular to it.
@@ -292,7 +301,7 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Mat
   if (CasterCutouts cutouts(mesh, materials); cutouts.any()) {
     cutouts_ = std::make_unique<CasterCutouts>(mesh, materials);
   }
-  device_ = rtcNewDevice(nullptr);
+  device_ = rtcNewDevice(embree_device_config());
   if (device_ == nullptr) throw RuntimeError(embree_error(nullptr, "creating a device"));
   rtcSetDeviceErrorFunction(device_, on_embree_error, nullptr);
 
