@@ -341,8 +341,13 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
           ? "cached"
           : fixed(reference.seconds, 1) + " s, " +
                 fixed(rays_per_second(reference, reference.trace_seconds) * 1e-6, 1) + " M rays/s";
-  std::printf(", %s; %ld pixels compared (geometry the light reaches)\n\n", how.c_str(),
+  std::printf(", %s; %ld pixels compared (geometry the light reaches)", how.c_str(),
               reference.pixels);
+  if (reference.unjudged_pixels > 0) {
+    std::printf("; %lld not judged (surface point not finite or outside the scene)",
+                static_cast<long long>(reference.unjudged_pixels));
+  }
+  std::printf("\n\n");
   std::vector<Row> rows = {
       {{"technique", "filter", "W", "reference", "MAE", "RMSE", "max", "leak", "over-dark"}}};
   for (const Item& item : items) {
@@ -399,6 +404,9 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"reference",
        {{"rays_per_pixel", reference.rays},
         {"pixels", reference.pixels},
+        // Pixels seeing geometry whose surface point is not finite or lies
+        // outside the scene: not traced, not judged.
+        {"unjudged_pixels", reference.unjudged_pixels},
         {"cached", reference.cached},
         {"seconds", reference.seconds},
         // The tracer's speed (null when the reference came from the cache).
