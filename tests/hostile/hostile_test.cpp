@@ -253,6 +253,70 @@ TEST(Hostile, InterruptedFolderOutputLeavesNothing) {
   EXPECT_TRUE(fs::is_empty(dir)) << "left behind: " << fs::directory_iterator(dir)->path();
 }
 
+// 11b. A crash (a failed assert inside a library raises SIGABRT; a driver
+// may die of SIGSEGV, SIGBUS or SIGFPE) ends every long-running command
+// with one "internal error" line, no staged folder or file left, and the
+// signal itself as the exit status. The signal is sent from outside once
+// the command is under way, as a crash would come.
+TEST(Hostile, CrashSignalsEndInOneLineAndLeaveNothing) {
+  struct Case {
+    std::vector<std::string> args;  // "OUT" stands for the output path
+    int signal;
+    bool stages;  // whether it writes a staged folder to wait for
+  };
+  const std::vector<Case> cases = {
+      {{"report", "--quick", "-o", "OUT"}, SIGABRT, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGSEGV, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGBUS, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGFPE, true},
+      {{"compare", "--techniques", "hard,pcf,pcss,vsm,msm", "--width", "320", "--height", "180",
+        "--no-cache", "-o", "OUT", "--json", "OUT.json"},
+       SIGABRT,
+       true},
+      {{"bench", "--frames", "100000", "--width", "64", "--height", "36", "--json", "OUT.json"},
+       SIGABRT,
+       false},
+  };
+  for (const Case& c : cases) {
+    const std::string dir = fresh_dir("crash");
+    const std::string log = fresh_dir("crash_log") + "/stderr.txt";
+    std::vector<std::string> args = c.args;
+    for (std::string& a : args) {
+      if (a.rfind("OUT", 0) == 0) a = dir + "/out" + a.substr(3);
+    }
+    const int err = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(err, 0);
+    const pid_t penumbra = spawn(args, -1, err);
+    close(err);
+    auto staged_files = [&] {
+      for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.is_directory() && !fs::is_empty(entry.path())) return true;
+      }
+      return false;
+    };
+    const bool started =
+        c.stages ? eventually(staged_files, 120s) : (std::this_thread::sleep_for(3s), true);
+    kill(penumbra, c.signal);
+    int status = 0;
+    waitpid(penumbra, &status, 0);
+    const std::string what = args[0] + " with signal " + std::to_string(c.signal);
+    ASSERT_TRUE(started) << what << ": wrote nothing within 120 s";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == c.signal)
+        << what << ": status " << status;
+    EXPECT_TRUE(fs::is_empty(dir)) << what << " left " << fs::directory_iterator(dir)->path();
+    // Progress lines may come first; the error is one line, the last.
+    const std::string text = read_text(log);
+    const std::size_t last = text.rfind('\n', text.size() >= 2 ? text.size() - 2 : 0);
+    const std::string last_line = text.substr(last == std::string::npos ? 0 : last + 1);
+    EXPECT_TRUE(
+        one_error_line(last_line, "internal error (signal " + std::to_string(c.signal) + ": "))
+        << what << ":\n"
+        << text;
+    EXPECT_NE(last_line.find("please report it"), std::string::npos) << what << ":\n" << text;
+    EXPECT_EQ(text.find("penumbra: error"), text.rfind("penumbra: error")) << what << ":\n" << text;
+  }
+}
+
 // 12. Empty values are usage errors, not "not given".
 TEST(Hostile, EmptyValuesAreUsageErrors) {
   const std::string dir = fresh_dir("empty");
