@@ -184,6 +184,9 @@ std::vector<std::string> metrics_row(const Item& item, const char* reference,
 void add_compare_command_options(CLI::App& command, CompareArgs& args) {
   add_scene_source_options(command, args.scene, args.model, args.camera_index);
   add_light_choice_option(command, args.light);
+  // The camera and light flags `render` takes, so that the view a user
+  // rendered can be measured as it is.
+  add_scene_options(command, args.scene_options);
   add_list(command, "technique", args.techniques,
            "techniques to measure (all: every technique but none)", technique_names(),
            OptionGroup::Technique, "techniques");
@@ -396,6 +399,10 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"scene", scene.name},
       {"light_index", light_index},
       {"light_type", light_type_name(scene.lights[static_cast<std::size_t>(light_index)].type)},
+      {"camera",
+       {{"position", {scene.camera.position.x, scene.camera.position.y, scene.camera.position.z}},
+        {"target", {scene.camera.target.x, scene.camera.target.y, scene.camera.target.z}},
+        {"fov_y_degrees", scene.camera.fov_y_degrees}}},
       {"width", args.render.width},
       {"height", args.render.height},
       {"shadow_map_size", args.shadow.map_size},
@@ -444,6 +451,7 @@ int run_compare_command(CompareArgs& args) {
     throw UsageError("--light-index " + std::to_string(light_index) + ": scene '" + scene.name +
                      "' has " + std::to_string(scene.lights.size()) + " light(s)");
   }
+  apply_scene_options(args.scene_options, light_index, scene);
   const std::string cache_dir =
       !args.cache ? std::string() : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
 
