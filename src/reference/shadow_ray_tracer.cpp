@@ -349,7 +349,14 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Mat
     cutouts_ = std::make_unique<CasterCutouts>(mesh, materials);
   }
   device_ = rtcNewDevice(embree_device_config());
-  if (device_ == nullptr) throw RuntimeError(embree_error(nullptr, "creating a device"));
+  if (device_ == nullptr) {
+    const char* config = embree_device_config();
+    throw RuntimeError(embree_error(nullptr, config == nullptr
+                                                 ? std::string("creating a device")
+                                                 : std::string("creating a device "
+                                                               "with PENUMBRA_EMBREE_CONFIG=") +
+                                                       config));
+  }
   rtcSetDeviceErrorFunction(device_, on_embree_error, nullptr);
 
   scene_ = rtcNewScene(device_);
