@@ -317,6 +317,36 @@ TEST(Hostile, CrashSignalsEndInOneLineAndLeaveNothing) {
   }
 }
 
+// 11c. Coordinates at the edges of float's range: decimals too small for
+// a float read as zero (as assimp reads them), and finite coordinates near
+// 3.4e38, in OBJ or PLY, are one error naming the file rather than a blank
+// image.
+TEST(Hostile, ModelCoordinatesAtTheEdgesOfFloat) {
+  const std::string dir = fresh_dir("float_edges");
+  const std::string tiny = dir + "/tiny.obj";
+  write_text(tiny, "v 1e-50 0 0\nv 1 -2.5e-47 0\nv 0 1 1e-400\nf 1 2 3\n");
+  const Result read =
+      shell("timeout 60 PENUMBRA render --model " + tiny + kSmall + " -o " + dir + "/tiny.png");
+  EXPECT_EQ(read.status, 0) << read.err;
+  EXPECT_TRUE(fs::exists(dir + "/tiny.png"));
+
+  const std::string huge_obj = dir + "/huge.obj";
+  write_text(huge_obj, "v 0 0 0\nv 3.4e38 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string huge_ply = dir + "/huge.ply";
+  write_text(huge_ply,
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+             "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+             "end_header\n0 0 0\n3.4e38 0 0\n0 3.4e38 0\n3 0 1 2\n");
+  for (const std::string& model : {huge_obj, huge_ply}) {
+    const Result r =
+        shell("timeout 60 PENUMBRA render --model " + model + kSmall + " -o " + dir + "/huge.png");
+    EXPECT_EQ(r.status, 1) << model << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, model + ": coordinates span")) << r.err;
+    EXPECT_NE(r.err.find("too large to frame"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/huge.png"));
+  }
+}
+
 // 12. Empty values are usage errors, not "not given".
 TEST(Hostile, EmptyValuesAreUsageErrors) {
   const std::string dir = fresh_dir("empty");
