@@ -16,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include "gltf_files.hpp"
 #include "hostile/hostile_run.hpp"
 
 namespace penumbra::hostile {
@@ -344,6 +345,38 @@ TEST(Hostile, ModelCoordinatesAtTheEdgesOfFloat) {
     EXPECT_TRUE(one_error_line(r.err, model + ": coordinates span")) << r.err;
     EXPECT_NE(r.err.find("too large to frame"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir + "/huge.png"));
+  }
+}
+
+// 11d. A glTF camera glTF itself forbids (yfov <= 0, a negative
+// aspectRatio) or whose field of view penumbra cannot show (under 1 or
+// over 170 degrees) is one error naming the file, the camera and the
+// value, not a blank image.
+TEST(Hostile, DegenerateGltfCamerasAreErrors) {
+  const std::string dir = fresh_dir("gltf_cameras");
+  struct Case {
+    float yfov, aspect_ratio;
+    std::string culprit;
+  };
+  for (const Case& c : {Case{0.0f, 0.0f, "yfov 0 radians"}, Case{1e-6f, 0.0f, "yfov 1e-06"},
+                        Case{-0.5f, 0.0f, "yfov -0.5"}, Case{3.2f, 0.0f, "yfov 3.2"},
+                        Case{0.8f, -1.5f, "aspectRatio -1.5"}}) {
+    testing::GltfSpec spec;
+    spec.materials.push_back({});
+    spec.quads.push_back({{{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}}});
+    testing::GltfCameraSpec camera;
+    camera.position = {0.0f, 2.0f, 3.0f};
+    camera.target = {0.0f, 0.0f, 0.0f};
+    camera.yfov = c.yfov;
+    camera.aspect_ratio = c.aspect_ratio;
+    spec.cameras.push_back(camera);
+    const std::string path = testing::write_gltf("hostile-camera.gltf", spec);
+    const Result r =
+        shell("timeout 60 PENUMBRA render --scene " + path + kSmall + " -o " + dir + "/camera.png");
+    EXPECT_EQ(r.status, 1) << c.culprit << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, path + ": camera '")) << r.err;
+    EXPECT_NE(r.err.find(c.culprit), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/camera.png"));
   }
 }
 
