@@ -504,8 +504,9 @@ void read_cameras_and_lights(const aiScene& scene, Model& model) {
     // show a blank image, so such a camera is an error naming it.
     const std::string camera = "camera '" + out.name + "'";
     if (!out.orthographic && (!std::isfinite(in.mAspect) || in.mAspect < 0.0f)) {
-      fail(model.path,
-           camera + ": aspectRatio " + std::to_string(in.mAspect) + " is not a positive number");
+      std::ostringstream what;
+      what << camera << ": aspectRatio " << in.mAspect << " is not a positive number";
+      fail(model.path, what.str());
     }
     const float yfov = in.mAspect > 0.0f ? in.mHorizontalFOV / in.mAspect : in.mHorizontalFOV;
     if (!out.orthographic && !(glm::degrees(yfov) >= 1.0f && glm::degrees(yfov) <= 170.0f)) {
