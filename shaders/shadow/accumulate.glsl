@@ -160,15 +160,16 @@ float shadow_hard_dithered(sampler2DArray depth_maps, int layer, GpuShadowView v
   // each axis the next texel boundary is crossed at f = next and then
   // every `delta` (Amanatides and Woo).
   ivec2 texel = ivec2(floor(start));
-  ivec2 advance = ivec2(sign(reach));
   vec2 magnitude = abs(reach);
-  // (An axis the ray does not move along is never crossed: f = 2.)
-  vec2 delta = vec2(magnitude.x > 0.0 ? 1.0 / magnitude.x : 2.0,
-                    magnitude.y > 0.0 ? 1.0 / magnitude.y : 2.0);
+  // An axis the ray moves less than a millionth of a texel along is never
+  // crossed (f = 2), which also keeps 1 / magnitude finite.
+  bvec2 moving = greaterThan(magnitude, vec2(1e-6));
+  ivec2 advance = ivec2(sign(reach)) * ivec2(moving);
+  vec2 delta = 1.0 / max(magnitude, vec2(1e-6));
   vec2 inside = start - vec2(texel);  // [0, 1): where the start lies in its texel
   vec2 next = vec2(advance.x > 0 ? 1.0 - inside.x : inside.x,
                    advance.y > 0 ? 1.0 - inside.y : inside.y);
-  next = mix(next * delta, vec2(2.0), equal(advance, ivec2(0)));
+  next = mix(vec2(2.0), next * delta, moving);
   float ray_in = s.depth;  // the ray's z-bar where it enters the texel
   // A segment inside the map crosses at most size.x + size.y texels; one
   // that crosses more has left the map, past which nothing is known.
