@@ -380,6 +380,27 @@ TEST(Hostile, DegenerateGltfCamerasAreErrors) {
   }
 }
 
+// 11e. Whole numbers are decimal digits: hex (0x10), octal-looking (010
+// is ten, not eight), exponents (1e3) and fractions are read or refused
+// the same way for every integer option.
+TEST(Hostile, WholeNumbersAreDecimal) {
+  for (const std::string option : {"--accumulate", "--width", "--blur", "--camera-index"}) {
+    for (const std::string value : {"0x10", "1e3", "5.0", "' 5'"}) {
+      const Result r = shell("timeout 60 PENUMBRA render " + option + " " + value + " -o x.png");
+      EXPECT_EQ(r.status, 2) << option << " " << value << "\n" << r.err;
+      EXPECT_TRUE(one_error_line(r.err, option + ": ")) << r.err;
+      EXPECT_NE(r.err.find("is not a whole number in decimal digits"), std::string::npos) << r.err;
+    }
+  }
+  // 010 is ten: 10 sub-frames where CLI11 alone would run 8 (bench says).
+  const Result bench = shell(
+      "timeout 120 PENUMBRA bench --technique hard --accumulate 010 "
+      "--frames 1 --warmup 0" +
+      kSmall);
+  EXPECT_EQ(bench.status, 0) << bench.err;
+  EXPECT_NE(bench.out.find("10 sub-frames"), std::string::npos) << bench.out;
+}
+
 // 12. Empty values are usage errors, not "not given".
 TEST(Hostile, EmptyValuesAreUsageErrors) {
   const std::string dir = fresh_dir("empty");
