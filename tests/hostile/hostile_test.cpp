@@ -489,6 +489,14 @@ TEST(Hostile, MessagesAreOneCleanLine) {
       shell("timeout 20 PENUMBRA render --scene \"$(printf 'bad\\n\\033[31m.json')\" -o x.png");
   EXPECT_EQ(name.status, 1);
   EXPECT_TRUE(one_error_line(name.err, "'bad\\n\\x1b[31m.json'")) << name.err;
+  // The same name in front of a JSON path inside the file.
+  const std::string named = fresh_dir("control_name");
+  const Result path = shell("cd " + named +
+                            " && f=\"$(printf 'bad\\nname.json')\" && echo "
+                            "'{\"lights\": [{\"type\": \"nope\"}]}' > \"$f\" && timeout 20 "
+                            "PENUMBRA render --scene \"$f\" -o x.png");
+  EXPECT_EQ(path.status, 1) << path.err;
+  EXPECT_TRUE(one_error_line(path.err, "bad\\nname.json: /lights/0/type: ")) << path.err;
 
   const std::string dir = fresh_dir("cache_folder");
   const std::string compare =
