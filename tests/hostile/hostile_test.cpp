@@ -401,6 +401,29 @@ TEST(Hostile, WholeNumbersAreDecimal) {
   EXPECT_NE(bench.out.find("10 sub-frames"), std::string::npos) << bench.out;
 }
 
+// 11f. A glTF with thousands of lights: the lights penumbra cannot draw
+// are counted in one short warning, not listed by the thousand.
+TEST(Hostile, ManyGltfLightsAreOneShortWarning) {
+  testing::GltfSpec spec;
+  spec.materials.push_back({});
+  spec.quads.push_back({{{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}}});
+  for (int i = 0; i < 10000; ++i) {
+    testing::GltfLightSpec light;
+    light.name = "light" + std::to_string(i);
+    light.type = "point";
+    light.position = {0.0f, 2.0f + 1e-4f * static_cast<float>(i), 0.0f};
+    spec.lights.push_back(light);
+  }
+  const std::string path = testing::write_gltf("hostile-many-lights.gltf", spec);
+  const std::string dir = fresh_dir("many_lights");
+  const Result r =
+      shell("timeout 120 PENUMBRA render --scene " + path + kSmall + " -o " + dir + "/lights.png");
+  EXPECT_EQ(r.status, 0) << r.err.substr(0, 1000);
+  EXPECT_LT(r.err.size(), 1000u) << r.err.substr(0, 1000);
+  EXPECT_NE(r.err.find(" more"), std::string::npos) << r.err.substr(0, 1000);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err.substr(0, 1000);
+}
+
 // 12. Empty values are usage errors, not "not given".
 TEST(Hostile, EmptyValuesAreUsageErrors) {
   const std::string dir = fresh_dir("empty");
