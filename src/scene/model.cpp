@@ -227,6 +227,14 @@ class TextureReader {
         }
         image = std::move(raw);
       }
+    } else if (reference.empty() || reference.starts_with("data:")) {
+      // Assimp embeds base64 data URIs (above); it hands any other data:
+      // URI on as it is (or as an empty name), which is not a file beside
+      // the scene, so it is not looked for there.
+      name = model_path_ + ": a texture";
+      error =
+          "its image is a data: URI that is not base64 (or has no name), which penumbra "
+          "does not read";
     } else {
       // OBJ files written on Windows separate folders with backslashes.
       std::string relative = reference;
@@ -236,6 +244,11 @@ class TextureReader {
       std::error_code ec;
       if (!fs::is_regular_file(file, ec)) {
         error = fs::exists(file, ec) ? "is not a regular file" : "no such file";
+      } else if (fs::file_size(file, ec) > kMaxTextureFileBytes) {
+        // Refused unread: an image file that large would take the model
+        // reader's memory before it could be decoded (and refused).
+        error = "the file is larger than the " + std::to_string(kMaxTextureFileBytes >> 20) +
+                " MiB penumbra reads for a texture";
       } else {
         image = read_texture(file.string(), error);
       }

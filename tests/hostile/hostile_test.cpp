@@ -18,6 +18,7 @@
 
 #include "gltf_files.hpp"
 #include "hostile/hostile_run.hpp"
+#include "model_files.hpp"
 
 namespace penumbra::hostile {
 namespace {
@@ -414,6 +415,48 @@ TEST(Hostile, WholeNumbersAreDecimal) {
       kSmall);
   EXPECT_EQ(bench.status, 0) << bench.err;
   EXPECT_NE(bench.out.find("10 sub-frames"), std::string::npos) << bench.out;
+}
+
+// 11e2. Textures penumbra will not decode: a PNG whose header claims more
+// than 8192 texels a side, an image file of 8 GiB (sparse), a data: URI
+// that is not base64. Each is one warning naming it, the material keeps
+// its flat colour, and the scene draws.
+TEST(Hostile, OversizedTexturesAreWarningsNotFailures) {
+  // A PNG signature and an IHDR chunk of 11585 x 11585 RGBA: what
+  // stb_image reads for the size (the pixels never come).
+  std::string png = "\x89PNG\r\n\x1a\n";
+  png += std::string("\0\0\0\x0d", 4) + "IHDR";
+  png += std::string("\0\0\x2d\x41\0\0\x2d\x41\x08\x06\0\0\0", 13);
+  png += std::string("\0\0\0\0", 4);
+  testing::write_model_file("hostile-huge-texture.png", png);
+  const std::string sparse = testing::write_model_file("hostile-sparse-texture.png", "");
+  fs::resize_file(sparse, std::uintmax_t{8} << 30);
+  testing::GltfSpec spec;
+  for (const std::string image :
+       {"hostile-huge-texture.png", "hostile-sparse-texture.png", "data:image/png,notbase64"}) {
+    testing::GltfMaterialSpec material;
+    material.image = image;
+    material.base_color = {0.5f, 0.6f, 0.7f, 1.0f};
+    spec.materials.push_back(material);
+  }
+  for (int q = 0; q < 3; ++q) {
+    const float x = static_cast<float>(q) * 2.0f;
+    spec.quads.push_back({{{x - 1, 0, 1}, {x + 1, 0, 1}, {x + 1, 0, -1}, {x - 1, 0, -1}}, q});
+  }
+  const std::string path = testing::write_gltf("hostile-textures.gltf", spec);
+  const std::string dir = fresh_dir("textures");
+  const Result r = shell("timeout 120 PENUMBRA render --scene " + path + kSmall + " -o " + dir +
+                         "/textures.png");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/textures.png"));
+  for (const std::string said :
+       {"11585x11585 is larger than 8192 texels a side; using the material's flat colour",
+        "hostile-sparse-texture.png: the file is larger than the 512 MiB",
+        "data: URI that is not base64"}) {
+    EXPECT_NE(r.err.find(said), std::string::npos) << said << "\n" << r.err;
+  }
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 3) << r.err;
+  fs::remove(sparse);
 }
 
 // 11f. A glTF with thousands of lights: the lights penumbra cannot draw
