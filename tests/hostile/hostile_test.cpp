@@ -459,6 +459,34 @@ TEST(Hostile, OversizedTexturesAreWarningsNotFailures) {
   fs::remove(sparse);
 }
 
+// 11e3. A glTF whose JSON is malformed, holds NaN or overflows a double,
+// or a GLB without its JSON chunk: one error saying what is wrong, not
+// assimp's "no suitable reader found".
+TEST(Hostile, MalformedGltfIsSaidAsSuch) {
+  const std::string dir = fresh_dir("malformed_gltf");
+  struct Case {
+    std::string name, content, said;
+  };
+  for (const Case& c : {Case{"cut.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"scenes\": [",
+                             "not valid glTF JSON: parse error"},
+                        Case{"nan.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"x\": NaN}",
+                             "not valid glTF JSON: parse error"},
+                        Case{"huge.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"x\": 1e400}",
+                             "not valid glTF JSON: number overflow"},
+                        Case{"bad.glb", std::string("glTF\x02\0\0\0\x20\0\0\0garbagegarbage", 26),
+                             "the binary glTF has no JSON chunk"}}) {
+    const std::string path = dir + "/" + c.name;
+    write_text(path, c.content);
+    for (const std::string how : {"--scene", "--model"}) {
+      const Result r = shell("timeout 60 PENUMBRA render " + how + " " + path + kSmall + " -o " +
+                             dir + "/x.png");
+      EXPECT_EQ(r.status, 1) << c.name << "\n" << r.err;
+      EXPECT_TRUE(one_error_line(r.err, path + ": " + c.said)) << r.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir + "/x.png"));
+}
+
 // 11f. A glTF with thousands of lights: the lights penumbra cannot draw
 // are counted in one short warning, not listed by the thousand.
 TEST(Hostile, ManyGltfLightsAreOneShortWarning) {
