@@ -620,6 +620,12 @@ TEST(Hostile, MessagesAreOneCleanLine) {
   EXPECT_NE(folder.err.find("it is a folder"), std::string::npos) << folder.err;
   EXPECT_EQ(folder.err.find("Success"), std::string::npos) << folder.err;
 
+  // A cache folder Mesa cannot make: no shader-cache chatter on stderr.
+  const Result cache = shell("HOME=/proc XDG_CACHE_HOME=/proc/none timeout 60 PENUMBRA render" +
+                             kSmall + " -o " + fresh_dir("no_cache_home") + "/x.png");
+  EXPECT_EQ(cache.status, 0) << cache.err;
+  EXPECT_TRUE(cache.err.empty()) << cache.err;
+
   // Too little memory for the driver to load: one line, no loader chatter.
   const Result egl = shell("ulimit -v 150000; timeout 60 PENUMBRA render" + kSmall + " -o x.png");
   EXPECT_EQ(egl.status, 1);
