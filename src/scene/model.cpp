@@ -496,9 +496,25 @@ void read_cameras_and_lights(const aiScene& scene, Model& model) {
     out.camera.position = position;
     out.camera.target = position + forward / length;
     out.camera.up = glm::normalize(up);
+    out.orthographic = in.mOrthographicWidth > 0.0f;
     // Assimp 5.2 stores glTF's yfov times aspectRatio as the horizontal
     // field of view (and the aspect ratio, 0 when the file gives none).
+    // glTF requires yfov > 0 and aspectRatio > 0; a field of view outside
+    // the 1 to 170 degrees penumbra renders (--camera-fov's range) would
+    // show a blank image, so such a camera is an error naming it.
+    const std::string camera = "camera '" + out.name + "'";
+    if (!out.orthographic && (!std::isfinite(in.mAspect) || in.mAspect < 0.0f)) {
+      std::ostringstream what;
+      what << camera << ": aspectRatio " << in.mAspect << " is not a positive number";
+      fail(model.path, what.str());
+    }
     const float yfov = in.mAspect > 0.0f ? in.mHorizontalFOV / in.mAspect : in.mHorizontalFOV;
+    if (!out.orthographic && !(glm::degrees(yfov) >= 1.0f && glm::degrees(yfov) <= 170.0f)) {
+      std::ostringstream what;
+      what << camera << ": yfov " << yfov << " radians (" << glm::degrees(yfov)
+           << " degrees) is outside the 1 to 170 degrees penumbra renders";
+      fail(model.path, what.str());
+    }
     out.camera.fov_y_degrees = std::clamp(glm::degrees(yfov), 1.0f, 170.0f);
     if (std::isfinite(in.mClipPlaneNear) && in.mClipPlaneNear > 0.0f) {
       out.camera.near_plane = in.mClipPlaneNear;
@@ -506,7 +522,6 @@ void read_cameras_and_lights(const aiScene& scene, Model& model) {
     if (std::isfinite(in.mClipPlaneFar) && in.mClipPlaneFar > out.camera.near_plane) {
       out.camera.far_plane = in.mClipPlaneFar;
     }
-    out.orthographic = in.mOrthographicWidth > 0.0f;
     model.cameras.push_back(out);
   }
   for (unsigned i = 0; i < scene.mNumLights; ++i) {

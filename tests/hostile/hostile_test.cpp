@@ -16,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include "gltf_files.hpp"
 #include "hostile/hostile_run.hpp"
 
 namespace penumbra::hostile {
@@ -251,6 +252,132 @@ TEST(Hostile, InterruptedFolderOutputLeavesNothing) {
   ASSERT_TRUE(started) << "the report wrote nothing within 120 s";
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
   EXPECT_TRUE(fs::is_empty(dir)) << "left behind: " << fs::directory_iterator(dir)->path();
+}
+
+// 11b. A crash (a failed assert inside a library raises SIGABRT; a driver
+// may die of SIGSEGV, SIGBUS or SIGFPE) ends every long-running command
+// with one "internal error" line, no staged folder or file left, and the
+// signal itself as the exit status. The signal is sent from outside once
+// the command is under way, as a crash would come.
+TEST(Hostile, CrashSignalsEndInOneLineAndLeaveNothing) {
+  struct Case {
+    std::vector<std::string> args;  // "OUT" stands for the output path
+    int signal;
+    bool stages;  // whether it writes a staged folder to wait for
+  };
+  const std::vector<Case> cases = {
+      {{"report", "--quick", "-o", "OUT"}, SIGABRT, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGSEGV, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGBUS, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGFPE, true},
+      {{"compare", "--techniques", "hard,pcf,pcss,vsm,msm", "--width", "320", "--height", "180",
+        "--no-cache", "-o", "OUT", "--json", "OUT.json"},
+       SIGABRT,
+       true},
+      {{"bench", "--frames", "100000", "--width", "64", "--height", "36", "--json", "OUT.json"},
+       SIGABRT,
+       false},
+  };
+  for (const Case& c : cases) {
+    const std::string dir = fresh_dir("crash");
+    const std::string log = fresh_dir("crash_log") + "/stderr.txt";
+    std::vector<std::string> args = c.args;
+    for (std::string& a : args) {
+      if (a.rfind("OUT", 0) == 0) a = dir + "/out" + a.substr(3);
+    }
+    const int err = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(err, 0);
+    const pid_t penumbra = spawn(args, -1, err);
+    close(err);
+    auto staged_files = [&] {
+      for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.is_directory() && !fs::is_empty(entry.path())) return true;
+      }
+      return false;
+    };
+    const bool started =
+        c.stages ? eventually(staged_files, 120s) : (std::this_thread::sleep_for(3s), true);
+    kill(penumbra, c.signal);
+    int status = 0;
+    waitpid(penumbra, &status, 0);
+    const std::string what = args[0] + " with signal " + std::to_string(c.signal);
+    ASSERT_TRUE(started) << what << ": wrote nothing within 120 s";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == c.signal)
+        << what << ": status " << status;
+    EXPECT_TRUE(fs::is_empty(dir)) << what << " left " << fs::directory_iterator(dir)->path();
+    // Progress lines may come first; the error is one line, the last.
+    const std::string text = read_text(log);
+    const std::size_t last = text.rfind('\n', text.size() >= 2 ? text.size() - 2 : 0);
+    const std::string last_line = text.substr(last == std::string::npos ? 0 : last + 1);
+    EXPECT_TRUE(
+        one_error_line(last_line, "internal error (signal " + std::to_string(c.signal) + ": "))
+        << what << ":\n"
+        << text;
+    EXPECT_NE(last_line.find("please report it"), std::string::npos) << what << ":\n" << text;
+    EXPECT_EQ(text.find("penumbra: error"), text.rfind("penumbra: error")) << what << ":\n" << text;
+  }
+}
+
+// 11c. Coordinates at the edges of float's range: decimals too small for
+// a float read as zero (as assimp reads them), and finite coordinates near
+// 3.4e38, in OBJ or PLY, are one error naming the file rather than a blank
+// image.
+TEST(Hostile, ModelCoordinatesAtTheEdgesOfFloat) {
+  const std::string dir = fresh_dir("float_edges");
+  const std::string tiny = dir + "/tiny.obj";
+  write_text(tiny, "v 1e-50 0 0\nv 1 -2.5e-47 0\nv 0 1 1e-400\nf 1 2 3\n");
+  const Result read =
+      shell("timeout 60 PENUMBRA render --model " + tiny + kSmall + " -o " + dir + "/tiny.png");
+  EXPECT_EQ(read.status, 0) << read.err;
+  EXPECT_TRUE(fs::exists(dir + "/tiny.png"));
+
+  const std::string huge_obj = dir + "/huge.obj";
+  write_text(huge_obj, "v 0 0 0\nv 3.4e38 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string huge_ply = dir + "/huge.ply";
+  write_text(huge_ply,
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+             "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+             "end_header\n0 0 0\n3.4e38 0 0\n0 3.4e38 0\n3 0 1 2\n");
+  for (const std::string& model : {huge_obj, huge_ply}) {
+    const Result r =
+        shell("timeout 60 PENUMBRA render --model " + model + kSmall + " -o " + dir + "/huge.png");
+    EXPECT_EQ(r.status, 1) << model << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, model + ": coordinates span")) << r.err;
+    EXPECT_NE(r.err.find("too large to frame"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/huge.png"));
+  }
+}
+
+// 11d. A glTF camera glTF itself forbids (yfov <= 0, a negative
+// aspectRatio) or whose field of view penumbra cannot show (under 1 or
+// over 170 degrees) is one error naming the file, the camera and the
+// value, not a blank image.
+TEST(Hostile, DegenerateGltfCamerasAreErrors) {
+  const std::string dir = fresh_dir("gltf_cameras");
+  struct Case {
+    float yfov, aspect_ratio;
+    std::string culprit;
+  };
+  for (const Case& c : {Case{0.0f, 0.0f, "yfov 0 radians"}, Case{1e-6f, 0.0f, "yfov 1e-06"},
+                        Case{-0.5f, 0.0f, "yfov -0.5"}, Case{3.2f, 0.0f, "yfov 3.2"},
+                        Case{0.8f, -1.5f, "aspectRatio -1.5"}}) {
+    testing::GltfSpec spec;
+    spec.materials.push_back({});
+    spec.quads.push_back({{{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}}});
+    testing::GltfCameraSpec camera;
+    camera.position = {0.0f, 2.0f, 3.0f};
+    camera.target = {0.0f, 0.0f, 0.0f};
+    camera.yfov = c.yfov;
+    camera.aspect_ratio = c.aspect_ratio;
+    spec.cameras.push_back(camera);
+    const std::string path = testing::write_gltf("hostile-camera.gltf", spec);
+    const Result r =
+        shell("timeout 60 PENUMBRA render --scene " + path + kSmall + " -o " + dir + "/camera.png");
+    EXPECT_EQ(r.status, 1) << c.culprit << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, path + ": camera '")) << r.err;
+    EXPECT_NE(r.err.find(c.culprit), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/camera.png"));
+  }
 }
 
 // 12. Empty values are usage errors, not "not given".
