@@ -386,7 +386,9 @@ std::string svg_error_color_bar(float range, const std::string& what) {
     svg += "<text class=\"tick\" data-value=\"" + data_number(value) + "\" x=\"" + num(x) +
            "\" y=\"" + num(kBarY + kBarHeight + 15) + "\" text-anchor=\"middle\">" +
            html_escape((value > 0 ? "+" : "") + plot_number(value) +
-                       (i == 0 || i == 4 ? " or more" : "")) +
+                       (i == 0   ? " or less"
+                        : i == 4 ? " or more"
+                                 : "")) +
            "</text>\n";
   }
   svg += text(kBarX, kBarY + kBarHeight + 30, "blue: too dark", "");
