@@ -28,6 +28,7 @@
 #include "core/child_process.hpp"
 #include "penumbra/error.hpp"
 #include "scene/direct_readers.hpp"
+#include "scene/gltf_extensions.hpp"
 #include "scene/gltf_lights.hpp"
 #include "scene/smooth_normals.hpp"
 #include "scene/texture.hpp"
@@ -76,9 +77,17 @@ std::string one_line(std::string text) {
 
 // Assimp catches std::bad_alloc and reports it as its error text; it is
 // rethrown, so the reader reports the memory limit.
+bool has_extension(const std::string& path, const char* extension);
+
 [[noreturn]] void fail_import(const std::string& path, const Assimp::Importer& importer) {
   const std::string error = one_line(importer.GetErrorString());
   if (error.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
+  // Assimp says "no suitable reader found" for a glTF whose JSON (or GLB
+  // header) it cannot parse: say what is wrong with it instead.
+  if (error.find("No suitable reader") != std::string::npos &&
+      (has_extension(path, ".gltf") || has_extension(path, ".glb"))) {
+    read_gltf_extensions(path);  // throws "<path>: not valid glTF JSON: ..."
+  }
   fail(path, "cannot read the model: " + error);
 }
 
@@ -227,6 +236,14 @@ class TextureReader {
         }
         image = std::move(raw);
       }
+    } else if (reference.empty() || reference.starts_with("data:")) {
+      // Assimp embeds base64 data URIs (above); it hands any other data:
+      // URI on as it is (or as an empty name), which is not a file beside
+      // the scene, so it is not looked for there.
+      name = model_path_ + ": a texture";
+      error =
+          "its image is a data: URI that is not base64 (or has no name), which penumbra "
+          "does not read";
     } else {
       // OBJ files written on Windows separate folders with backslashes.
       std::string relative = reference;
@@ -236,6 +253,11 @@ class TextureReader {
       std::error_code ec;
       if (!fs::is_regular_file(file, ec)) {
         error = fs::exists(file, ec) ? "is not a regular file" : "no such file";
+      } else if (fs::file_size(file, ec) > kMaxTextureFileBytes) {
+        // Refused unread: an image file that large would take the model
+        // reader's memory before it could be decoded (and refused).
+        error = "the file is larger than the " + std::to_string(kMaxTextureFileBytes >> 20) +
+                " MiB penumbra reads for a texture";
       } else {
         image = read_texture(file.string(), error);
       }
