@@ -24,7 +24,7 @@ struct HtmlFigure {
   // What the image links to: the image itself unless set (a crop links to
   // the full image it was cut from).
   std::string link;
-  // "crop": shown at its own size instead of the grid's column width.
+  // "crop": a close-up, always shown at its own size.
   std::string css_class;
   std::vector<std::pair<std::string, std::string>> data;  // data-* attributes
   std::vector<HtmlOverlay> overlays;
@@ -50,8 +50,14 @@ class HtmlPage {
   void section(const std::string& id, const std::string& title);
   void heading(const std::string& text, int level = 2);
   void paragraph(const std::string& text);  // plain text, escaped
+  // The same, ending in a link: "text <a href="href">link_text</a>."
+  void paragraph(const std::string& text, const std::string& link_text, const std::string& href);
   // Figures in a wrapping grid; with group > 1, every `group` figures in a
   // row of their own that the grid never breaks (a map before and after).
+  // Images are shown at their own size, never enlarged (a 320x180 frame
+  // blown up to a column's width is blurred); an image taller than most
+  // of the grid's (a square map among 16:9 frames) is shown at their
+  // height, so every row of the grid is as tall as its images.
   void figures(const std::vector<HtmlFigure>& figures, std::size_t group = 1);
   // A table of plain-text cells; the first row is the header. Columns empty
   // in every row below the header are left out.
@@ -59,7 +65,12 @@ class HtmlPage {
   // An inline <svg> plot, with the data it draws in a table under a
   // <details> that opens on a click (and in print).
   void plot(const std::string& svg, const std::vector<std::vector<std::string>>& data);
-  // The verdict, shown first on the page whenever it is set.
+  // A notice shown above everything else (what kind of run made the page).
+  void banner(const std::string& text);
+  // An inline <svg> drawn as it is (a colour bar), no data table.
+  void graphic(const std::string& svg);
+  // The verdict, shown first on the page (after the banner) whenever it is
+  // set.
   void verdict(const std::string& title, const std::string& intro,
                const std::vector<VerdictLine>& lines);
 
@@ -68,6 +79,7 @@ class HtmlPage {
  private:
   std::string table_html(const std::vector<std::vector<std::string>>& rows) const;
   std::string title_;
+  std::string banner_;
   std::string verdict_;
   std::string body_;
   bool in_section_ = false;

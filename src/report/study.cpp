@@ -24,6 +24,7 @@
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
 #include "report/crop_regions.hpp"
+#include "report/edge_errors.hpp"
 #include "report/foliage_scene.hpp"
 #include "report/html_page.hpp"
 #include "report/ranking.hpp"
@@ -65,15 +66,29 @@ struct MeasuredError {
 
 constexpr const char* kRmseLabel = "RMSE against the traced reference (shadow factor)";
 
+// The sizes a study renders and traces at: the full study's, or --quick's.
+struct StudySize {
+  int width, height;  // of every frame
+  int map_size;       // of every shadow map but section 3's
+  int samples;        // rays per pixel of the traced references
+};
+constexpr StudySize kFullSize{640, 360, 2048, 256};
+// --quick: a 512^2 map still has a texel per pixel or more across the
+// spot light's cone at 320x180, for a quarter of the filters' work.
+constexpr StudySize kQuickSize{320, 180, 512, 64};
+
+std::string map_size_text(int size) {
+  return std::to_string(size) + "^2";
+}
+
 class Study {
  public:
   Study(const Scene& scene, const StudyOptions& options, gl::Context& context)
       : scene_(scene), options_(options), context_(context), renderer_(scene) {
-    base_render_.width = options.quick ? 320 : 640;
-    base_render_.height = options.quick ? 180 : 360;
-    // --quick: a 512^2 map still has a texel per pixel or more across the
-    // spot light's cone at 320x180, for a quarter of the filters' work.
-    base_shadow_.map_size = options.quick ? 512 : 2048;
+    const StudySize& size = options.quick ? kQuickSize : kFullSize;
+    base_render_.width = size.width;
+    base_render_.height = size.height;
+    base_shadow_.map_size = size.map_size;
   }
 
   StudyResult run() {
@@ -86,6 +101,7 @@ class Study {
         "filtered hard-shadow reference: the unfiltered shadow map's depth tests averaged with "
         "the technique's own filter kernel, each texel tested against the receiver's plane, "
         "which is what a filtered technique approximates, and against a ray-traced reference.");
+    if (options_.quick) page.banner(quick_banner());
     techniques_section(page);
     light_types_section(page);
     maps_section(page);
@@ -247,7 +263,23 @@ class Study {
     }
     return traced_ ? &*traced_ : nullptr;
   }
-  int traced_samples() const { return options_.quick ? 64 : 256; }
+  int traced_samples() const { return (options_.quick ? kQuickSize : kFullSize).samples; }
+
+  // What --quick changes, so that nobody takes its numbers for the full
+  // study's (or the README's, which come from full-size runs).
+  static std::string quick_banner() {
+    const StudySize& q = kQuickSize;
+    const StudySize& f = kFullSize;
+    return "This is the quick report (--quick): frames of " + std::to_string(q.width) + "x" +
+           std::to_string(q.height) + " instead of " + std::to_string(f.width) + "x" +
+           std::to_string(f.height) + ", shadow maps of " + map_size_text(q.map_size) +
+           " instead of " + map_size_text(f.map_size) + ", traced references of " +
+           std::to_string(q.samples) + " rays per pixel instead of " + std::to_string(f.samples) +
+           ", and shorter sweeps (fewer filter widths, techniques per light type and foliage "
+           "techniques). Its errors and times differ from the full report's and from the "
+           "README's, which are measured at full size: `penumbra report -o DIR` makes the full "
+           "study.";
+  }
 
   void techniques_section(HtmlPage& page) {
     section(page, "techniques", "1. The techniques side by side");
@@ -255,8 +287,11 @@ class Study {
         "The same scene, camera and lights for every technique: a spot light (front right) and a "
         "directional light (from the left). Filtered techniques use a Gaussian of radius W = 4 "
         "texels; the soft variants size their filter from a blocker search (PCSS, and the "
-        "summed-area-table moment shadows). Section 7 shows three regions of the spot light's "
-        "shadow at 4x.");
+        "summed-area-table moment shadows). Each image is shown at its own size; at this size "
+        "the techniques differ in a few pixels along the shadows' edges, which the error images "
+        "of section 6 colour and section 7 enlarges 4x, every technique beside the traced "
+        "reference:",
+        "section 7, close-ups", "#closeups");
     std::vector<HtmlFigure> figures;
     for (Technique t : {Technique::None, Technique::Hard, Technique::Pcf, Technique::Pcss,
                         Technique::Backprojection, Technique::Vsm, Technique::Esm, Technique::Msm,
@@ -466,6 +501,7 @@ class Study {
     std::vector<std::vector<std::string>> rows = {{"light size"}};
     for (const Soft& t : techniques) rows.front().push_back("RMSE " + t.name);
     std::vector<HtmlFigure> figures;
+    std::optional<EdgeErrors> point_light_errors;  // of hard shadows, at light size 0
     for (float size : sizes) {
       ShadowSettings pcss = with(Technique::Pcss);
       pcss.light_size = size;
@@ -505,6 +541,9 @@ class Study {
         const double rmse = compare_shadow(*image, traced->image).rmse;
         row.push_back(fixed(rmse, 4));
         plot.series[i].points.push_back({size, rmse, "", false});
+        if (size == 0.0f && techniques[i].settings.technique == Technique::Hard) {
+          point_light_errors = edge_errors(*image, traced->image, 2);
+        }
         if (size == sizes.back() && i + 1 < techniques.size()) {
           findings_.widest_light_rmse.push_back({techniques[i].name, rmse});
         }
@@ -518,8 +557,32 @@ class Study {
         " rays per pixel): PCSS and the moment soft shadows (--soft, summed-area table) size "
         "each pixel's filter from a blocker search; hard shadows, which ignore the size, show "
         "what a penumbra is worth. The images: PCSS at each size.");
+    if (point_light_errors) page.paragraph(point_light_floor(*point_light_errors));
     page.plot(svg_line_plot(plot), rows);
     page.figures(figures);
+  }
+
+  // Why every technique measures the same error at light size 0, from the
+  // hard shadow's pixels measured there.
+  std::string point_light_floor(const EdgeErrors& e) const {
+    const double share = e.compared > 0 ? double(e.wrong) / double(e.compared) : 0.0;
+    return "Why every technique shows the same error at light size 0: the source is then a "
+           "point, so the traced reference is 0 or 1 at every pixel, and the soft techniques' "
+           "filters shrink to a single texel: each makes, in effect, the hard map's binary "
+           "test. The hard test disagrees with the traced rays on " +
+           std::to_string(e.wrong) + " of the " + std::to_string(e.compared) +
+           " pixels compared (" + fixed(100.0 * share, 2) + " %), " +
+           (e.near_edge == e.wrong ? std::string("every one of them")
+                                   : std::to_string(e.near_edge) + " of them") +
+           " within 2 pixels of the reference's shadow edge: the " +
+           map_size_text(base_shadow_.map_size) +
+           " map knows where a caster's edge lies only to within one of its texels, so along "
+           "every shadow edge the pixels in a band up to a texel wide (projected onto the "
+           "receiver) fall on the wrong side; a finer map narrows the band. Each such pixel is "
+           "wrong by 1, "
+           "so the RMSE is the square root of their share, sqrt(" +
+           fixed(share, 4) + ") = " + fixed(std::sqrt(share), 4) +
+           ", although the mean absolute error is only about " + fixed(share, 4) + ".";
   }
 
   // The spot light's shadow factor against the filtered reference.
@@ -753,6 +816,7 @@ class Study {
         page.paragraph(std::string("Choosing the close-up regions failed: ") + e.what());
       }
     }
+    page.graphic(svg_error_color_bar(kErrorImageRange, "technique - traced reference"));
     std::vector<HtmlFigure> figures;
     for (const MeasuredError& e : errors_) {
       HtmlFigure f;
@@ -878,7 +942,7 @@ class Study {
   // each technique against the traced reference of each of its lights.
   void foliage_section(HtmlPage& page) {
     section(page, "foliage", "8. Foliage: alpha-tested casters");
-    const int samples = options_.quick ? 64 : 256;
+    const int samples = traced_samples();
     const std::vector<Technique> techniques =
         options_.quick
             ? std::vector<Technique>{Technique::Hard, Technique::Pcf, Technique::Pcss,
@@ -994,6 +1058,7 @@ class Study {
     }
     page.table(rows);
     for (const std::string& sentence : summary) page.paragraph(sentence);
+    page.graphic(svg_error_color_bar(kErrorImageRange, "technique - traced reference"));
     page.figures(figures);
   }
 
@@ -1115,8 +1180,12 @@ class Study {
       }
     }
     const std::vector<std::size_t> front = pareto_front(points);
+    const bool emulated = is_software_renderer(context_.renderer());
     LinePlot plot{.title = "Quality against cost",
-                  .x = {"GPU time per frame (ms, the table's total)", false},
+                  .x = {emulated ? "frame time on a GPU emulated on the CPU (ms, the table's "
+                                   "total; not a GPU ranking)"
+                                 : "GPU time per frame (ms, the table's total)",
+                        false},
                   .y = {kRmseLabel, false},
                   .series = {{"technique (W = 4)", {}, false}},
                   .highlight_name = "Pareto front"};
@@ -1133,7 +1202,12 @@ class Study {
     page.paragraph(
         "Each technique's RMSE against the traced reference (section 6) against its frame time "
         "(the table above). Filled points are the Pareto front: no other technique is both "
-        "faster and closer to the reference.");
+        "faster and closer to the reference." +
+        std::string(emulated ? " These times are CPU emulation, not a GPU ranking: on this "
+                               "renderer every pass runs on the CPU, where arithmetic costs "
+                               "what memory traffic costs on a GPU, so the order of the "
+                               "techniques can differ on real hardware."
+                             : ""));
     page.plot(svg_line_plot(plot), data);
   }
 

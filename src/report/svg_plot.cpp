@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "reference/error_image.hpp"
 #include "report/html_page.hpp"
 
 namespace penumbra {
@@ -23,6 +24,7 @@ constexpr int kMarkerShapes = 6;
 constexpr double kWidth = 640.0;
 constexpr double kLeft = 72.0, kRight = 470.0, kTop = 36.0;
 constexpr double kLegendX = 486.0;
+constexpr double kLineBottom = 300.0;  // the line plot's area ends here
 
 std::string num(double value) {
   char text[32];
@@ -119,6 +121,76 @@ Axis make_axis(const PlotAxis& axis, double low, double high, bool from_zero, in
   return a;
 }
 
+// A label's box in the viewBox, estimated from its length (11-px-high
+// sans-serif text of font-size 10 averages under 6 px a character).
+struct LabelBox {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  [[nodiscard]] double overlap(const LabelBox& o) const {
+    const double w = std::min(x1, o.x1) - std::max(x0, o.x0);
+    const double h = std::min(y1, o.y1) - std::max(y0, o.y0);
+    return w > 0 && h > 0 ? w * h : 0.0;
+  }
+};
+
+struct PlacedLabel {
+  double x = 0, y = 0;  // the text's anchor point (baseline)
+  const char* anchor = "start";
+  bool leader = false;  // moved away from its point: joined to it by a line
+};
+
+// Places each point's label beside it where it overlaps no other label,
+// no marker and stays inside the plot area: the nearest of a few positions
+// around the point, then further ones with a leader line; failing all,
+// the one that overlaps least. `points` are in viewBox coordinates.
+std::vector<PlacedLabel> place_labels(const std::vector<std::pair<double, double>>& points,
+                                      const std::vector<std::string>& labels) {
+  constexpr double kCharWidth = 5.8, kAscent = 8.0, kDescent = 2.5, kMarker = 5.0;
+  struct Candidate {
+    double dx, dy;
+    const char* anchor;
+  };
+  std::vector<Candidate> candidates = {{6, -6, "start"}, {6, 13, "start"},  {-6, -6, "end"},
+                                       {-6, 13, "end"},  {0, -9, "middle"}, {0, 17, "middle"}};
+  for (double step : {12.0, 24.0, 36.0}) {
+    for (const Candidate& c : std::vector<Candidate>(candidates.begin(), candidates.begin() + 6)) {
+      candidates.push_back({c.dx + (c.dx > 0   ? step
+                                    : c.dx < 0 ? -step
+                                               : 0),
+                            c.dy + (c.dy < 0 ? -step : step), c.anchor});
+    }
+  }
+  std::vector<LabelBox> taken;
+  for (const auto& [x, y] : points) {
+    taken.push_back({x - kMarker, y - kMarker, x + kMarker, y + kMarker});
+  }
+  std::vector<PlacedLabel> placed(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (labels[i].empty()) continue;
+    const double width = kCharWidth * static_cast<double>(labels[i].size());
+    double least = std::numeric_limits<double>::infinity();
+    LabelBox chosen;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      const Candidate& k = candidates[c];
+      const double x = points[i].first + k.dx, y = points[i].second + k.dy;
+      const double x0 = k.anchor[0] == 's' ? x : k.anchor[0] == 'e' ? x - width : x - width / 2;
+      const LabelBox box{x0, y - kAscent, x0 + width, y + kDescent};
+      double cost = 0.0;
+      for (const LabelBox& t : taken) cost += t.overlap(box);
+      // Outside the plot area counts as overlapping.
+      const LabelBox area{kLeft, kTop, kRight, kLineBottom};
+      cost += (box.x1 - box.x0) * (box.y1 - box.y0) - area.overlap(box);
+      if (cost < least - 1e-9) {
+        least = cost;
+        chosen = box;
+        placed[i] = {x, y, k.anchor, c >= 6};
+      }
+      if (cost == 0.0) break;
+    }
+    taken.push_back(chosen);
+  }
+  return placed;
+}
+
 }  // namespace
 
 std::string plot_number(double value) {
@@ -157,7 +229,7 @@ std::vector<double> log2_ticks(double low, double high, int count) {
 }
 
 std::string svg_line_plot(const LinePlot& plot) {
-  constexpr double kBottom = 300.0, kHeight = 346.0;
+  constexpr double kBottom = kLineBottom, kHeight = 346.0;
   double x_low = std::numeric_limits<double>::infinity(), x_high = -x_low;
   double y_low = x_low, y_high = -x_low;
   for (const PlotSeries& s : plot.series) {
@@ -209,6 +281,18 @@ std::string svg_line_plot(const LinePlot& plot) {
     }
   }
 
+  // Every point's label placed clear of the others, all series together.
+  std::vector<std::pair<double, double>> positions;
+  std::vector<std::string> labels;
+  for (const PlotSeries& s : plot.series) {
+    for (const PlotPoint& p : s.points) {
+      positions.emplace_back(px(p.x), py(p.y));
+      labels.push_back(p.label);
+    }
+  }
+  const std::vector<PlacedLabel> placed = place_labels(positions, labels);
+  std::size_t point_index = 0;
+
   int legend_row = 0;
   const auto legend_y = [&] { return kTop + 8 + 18 * legend_row++; };
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
@@ -235,14 +319,24 @@ std::string svg_line_plot(const LinePlot& plot) {
              html_escape(s.name + (p.label.empty() ? "" : " " + p.label) + ": " + plot_number(p.x) +
                          ", " + plot_number(p.y)) +
              "</title></path>\n";
+      const PlacedLabel& l = placed[point_index++];
       if (!p.label.empty()) {
-        svg += text(px(p.x) + 6, py(p.y) - 6, p.label, "font-size=\"10\" fill=\"#333\"");
+        if (l.leader) {
+          svg += line(px(p.x), py(p.y), l.x, l.y - 3, "stroke=\"#999\" stroke-width=\"0.8\"");
+        }
+        svg += text(l.x, l.y, p.label,
+                    "class=\"label\" text-anchor=\"" + std::string(l.anchor) +
+                        "\" font-size=\"10\" fill=\"#333\"");
       }
     }
     svg += "</g>\n";
     const double y = legend_y();
-    svg += line(kLegendX, y, kLegendX + 28, y,
-                "stroke=\"" + color + "\" stroke-width=\"1.6\"" + dash_attribute);
+    // A line in the legend only for a series drawn with one.
+    if (s.lines && s.points.size() > 1) {
+      svg += line(
+          kLegendX, y, kLegendX + 28, y,
+          "class=\"legend-line\" stroke=\"" + color + "\" stroke-width=\"1.6\"" + dash_attribute);
+    }
     svg += "<path d=\"" + marker_path(static_cast<int>(i), kLegendX + 14, y, 4.0) + "\" fill=\"" +
            color + "\" stroke=\"" + color + "\"/>\n";
     svg += text(kLegendX + 34, y + 4, s.name, "");
@@ -253,6 +347,56 @@ std::string svg_line_plot(const LinePlot& plot) {
                 "stroke=\"#888\" stroke-width=\"6\" stroke-opacity=\"0.35\"");
     svg += text(kLegendX + 34, y + 4, plot.highlight_name + " (filled)", "");
   }
+  svg += "</svg>\n";
+  return svg;
+}
+
+std::string svg_error_color_bar(float range, const std::string& what) {
+  // Margins for the end ticks' labels ("-0.5 or more") either side.
+  constexpr double kBarX = 50.0, kBarWidth = 380.0, kBarY = 24.0, kBarHeight = 16.0;
+  const auto hex = [](glm::vec3 c) {
+    char text[8];
+    const auto byte = [](float v) {
+      return static_cast<int>(std::lround(255.0 * std::clamp(double(v), 0.0, 1.0)));
+    };
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+    return std::string(text);
+  };
+  std::string svg = "<svg class=\"colorbar\" viewBox=\"0 0 480 78\" role=\"img\" aria-label=\"" +
+                    html_escape("colour bar: " + what) +
+                    "\" font-family=\"sans-serif\" font-size=\"11\">\n" + "<title>" +
+                    html_escape("colour bar: " + what) + "</title>\n";
+  // The map in narrow steps (no gradient: its id would repeat when the
+  // page shows the bar twice), each a 64th of the range.
+  svg += text(kBarX, 14, what, "font-size=\"12\"");
+  constexpr int kSteps = 64;
+  for (int i = 0; i < kSteps; ++i) {
+    const double t = -1.0 + 2.0 * (i + 0.5) / kSteps;
+    const double w = kBarWidth / kSteps;
+    svg += "<rect x=\"" + num(kBarX + w * i) + "\" y=\"" + num(kBarY) + "\" width=\"" +
+           num(w + 0.3) + "\" height=\"" + num(kBarHeight) + "\" fill=\"" +
+           hex(diverging_color(static_cast<float>(t))) + "\"/>";
+  }
+  svg += "\n<rect x=\"" + num(kBarX) + "\" y=\"" + num(kBarY) + "\" width=\"" + num(kBarWidth) +
+         "\" height=\"" + num(kBarHeight) + "\" fill=\"none\" stroke=\"#444\"/>\n";
+  for (int i = 0; i <= 4; ++i) {
+    const double value = range * (-1.0 + 0.5 * i);
+    const double x = kBarX + kBarWidth * i / 4.0;
+    svg += line(x, kBarY + kBarHeight, x, kBarY + kBarHeight + 4, "stroke=\"#444\"");
+    svg += "<text class=\"tick\" data-value=\"" + data_number(value) + "\" x=\"" + num(x) +
+           "\" y=\"" + num(kBarY + kBarHeight + 15) + "\" text-anchor=\"middle\">" +
+           html_escape((value > 0 ? "+" : "") + plot_number(value) +
+                       (i == 0   ? " or less"
+                        : i == 4 ? " or more"
+                                 : "")) +
+           "</text>\n";
+  }
+  svg += text(kBarX, kBarY + kBarHeight + 30, "blue: too dark", "");
+  svg += text(kBarX + kBarWidth, kBarY + kBarHeight + 30, "red: too light (leaks)",
+              "text-anchor=\"end\"");
+  svg += "<rect x=\"" + num(kBarX + kBarWidth / 2 - 58) + "\" y=\"" + num(kBarY + kBarHeight + 21) +
+         "\" width=\"10\" height=\"10\" fill=\"" + hex(glm::vec3(kErrorImageBackground)) + "\"/>\n";
+  svg += text(kBarX + kBarWidth / 2 - 44, kBarY + kBarHeight + 30, "not compared", "");
   svg += "</svg>\n";
   return svg;
 }

@@ -52,6 +52,12 @@ struct StackedBars {
 // segment's value is written on the bar when it fits.
 std::string svg_stacked_bars(const StackedBars& bars);
 
+// The colour bar of the error images (reference/error_image.hpp): the
+// diverging map from -range (technique too dark) to +range (too light),
+// its ticks, and the grey of the pixels not compared; `what` names the
+// difference ("technique - traced reference").
+std::string svg_error_color_bar(float range, const std::string& what);
+
 // Round tick values covering [low, high]: steps of 1, 2 or 5 times a power
 // of ten, at most about `count` of them, the first <= low and the last >=
 // high. low < high.

@@ -184,22 +184,48 @@ Scene framed_model_scene(const std::string& path) {
   return scene;
 }
 
+namespace {
+
+// Where framed_model_scene's camera and key light stand, as azimuths about
+// the vertical axis (0: the front, +z; positive towards +x) and elevations
+// above the horizon. The light is 105 degrees round from the camera: it
+// still lights the faces the camera sees from the side (the model's front,
+// 35 degrees off the camera's line of sight), and the shadow it throws
+// falls beside the model and towards the camera, where the camera sees it,
+// not behind the model.
+constexpr float kCameraAzimuth = -35.0f, kCameraElevation = 40.0f;
+constexpr float kKeyLightAzimuth = 70.0f, kKeyLightElevation = 45.0f;
+
+glm::vec3 direction_at(float azimuth_degrees, float elevation_degrees) {
+  const float a = glm::radians(azimuth_degrees), e = glm::radians(elevation_degrees);
+  return {std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e)};
+}
+
+// Unit vector along the ground in which the key light's shadows fall.
+glm::vec3 key_shadow_direction() {
+  const glm::vec3 from_light = -direction_at(kKeyLightAzimuth, kKeyLightElevation);
+  return glm::normalize(glm::vec3(from_light.x, 0.0f, from_light.z));
+}
+
+}  // namespace
+
 Camera framing_camera(const Bounds& bounds) {
   const glm::vec3 extent = bounds.max - bounds.min;
   const float height = extent.y;
   const float radius = 0.5f * glm::length(extent);  // of the bounding sphere
   const glm::vec3 base{bounds.center().x, bounds.min.y, bounds.center().z};
-  // From the front, 40 degrees above the horizon (so that the top edge of
-  // a 16:9 image still meets the ground), the bounding sphere filling 80%
-  // of the image's height; the aim is a little below the middle, so that
-  // the ground and the shadow show.
+  // From the front left, 40 degrees above the horizon (so that the top
+  // edge of a 16:9 image still meets the ground), the bounding sphere
+  // filling 80% of the image's height: the model itself fills less of it
+  // (its box's diagonal is the sphere's diameter), which leaves room for
+  // its shadow. The aim is a little below the middle and a little towards
+  // the key light's shadow, so that the ground and the shadow show.
   Camera camera;
   camera.fov_y_degrees = 40.0f;
   const float distance = radius / std::sin(glm::radians(0.5f * camera.fov_y_degrees)) / 0.8f;
-  const float elevation = glm::radians(40.0f);
-  camera.target = base + glm::vec3(0.0f, 0.4f * height, 0.0f);
-  camera.position =
-      camera.target + distance * glm::vec3(0.0f, std::sin(elevation), std::cos(elevation));
+  camera.position = bounds.center() + distance * direction_at(kCameraAzimuth, kCameraElevation);
+  camera.target =
+      base + glm::vec3(0.0f, 0.4f * height, 0.0f) + 0.15f * radius * key_shadow_direction();
   return camera;
 }
 
@@ -208,12 +234,14 @@ std::vector<Light> framing_lights(const Bounds& bounds) {
   const float height = extent.y;
   const float radius = 0.5f * glm::length(extent);
   const glm::vec3 base{bounds.center().x, bounds.min.y, bounds.center().z};
-  // Up and to the front right, as in the default scene, far enough for a
-  // narrow cone to hold the model and its shadow behind it.
+  // Up high, to the right of the camera and a little behind the model
+  // (kKeyLightAzimuth), far enough for a narrow cone to hold the model and
+  // its shadow; aimed between the two.
   Light spot;
   spot.type = LightType::Spot;
-  spot.position = base + radius * glm::vec3(1.6f, 4.0f, 2.2f);
-  const glm::vec3 aim = base + glm::vec3(0.0f, 0.25f * height, 0.0f);
+  const glm::vec3 aim =
+      base + glm::vec3(0.0f, 0.25f * height, 0.0f) + 0.3f * radius * key_shadow_direction();
+  spot.position = aim + 4.8f * radius * direction_at(kKeyLightAzimuth, kKeyLightElevation);
   spot.direction = glm::normalize(aim - spot.position);
   spot.color = {1.0f, 0.95f, 0.85f};
   // About the default scene's irradiance where the light meets the model.

@@ -15,20 +15,24 @@ std::optional<Scene> builtin_scene(const std::string& name);
 
 // A model file (scene/model.hpp) scaled so that its largest side is
 // kFramedModelSize, standing on the middle of a ground plane, seen whole by
-// the camera and lit like the default scene: a spot light from the front
-// right that throws its shadow on the ground behind, and a dim directional
-// light. The model keeps its file's materials. Throws RuntimeError naming
-// the file, as load_model does.
+// the camera from the front left, lit by a spot light from the right and a
+// little behind, which throws the model's shadow beside it and towards the
+// camera, where the camera sees it, and by a dim directional light. The
+// model keeps its file's materials. Throws RuntimeError naming the file,
+// as load_model does.
 inline constexpr float kFramedModelSize = 2.0f;
 Scene framed_model_scene(const std::string& path);
 
 // The camera framed_model_scene aims at a model, for any world-space
-// bounds: from the front, 40 degrees above the horizon, the bounding
-// sphere filling 80% of the image's height.
+// bounds: from the front left (35 degrees round from the front), 40
+// degrees above the horizon, the bounding sphere filling 80% of the
+// image's height (the model itself less: its box's diagonal is the
+// sphere's diameter).
 Camera framing_camera(const Bounds& bounds);
 
 // framed_model_scene's lights for any world-space bounds: the key spot
-// light from the front right, up high, and the dim directional sky light.
+// light up high, to the right and a little behind (105 degrees round from
+// the camera), and the dim directional sky light.
 std::vector<Light> framing_lights(const Bounds& bounds);
 
 }  // namespace penumbra

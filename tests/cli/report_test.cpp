@@ -617,6 +617,102 @@ TEST_F(Report, NotOnATerminalProgressIsOneLinePerStepThenTheCost) {
   EXPECT_EQ(stderr_.find('\r'), std::string::npos) << "no bar drawn outside a terminal";
 }
 
+TEST_F(Report, AQuickReportSaysSoAndWhatDiffers) {
+  ASSERT_EQ(status_, 0);
+  const std::size_t banner = html_.find("<p class=\"banner\">This is the quick report (--quick)");
+  ASSERT_NE(banner, std::string::npos);
+  EXPECT_LT(banner, html_.find("<section id=\"summary\">")) << "the banner comes first";
+  const std::string text = html_.substr(banner, html_.find("</p>", banner) - banner);
+  // What --quick changes, as the study ran it: its frames are 320x180.
+  const auto technique = std::find_if(images_.begin(), images_.end(), [](const Figure& f) {
+    return f.src == "technique-hard.png";
+  });
+  ASSERT_NE(technique, images_.end());
+  EXPECT_NE(text.find("frames of " + std::to_string(technique->width) + "x" +
+                      std::to_string(technique->height) + " instead of 640x360"),
+            std::string::npos)
+      << text;
+  for (const char* what :
+       {"shadow maps of 512^2 instead of 2048^2", "64 rays per pixel instead of 256", "README"}) {
+    EXPECT_NE(text.find(what), std::string::npos) << what << " in: " << text;
+  }
+}
+
+TEST_F(Report, TimesOfAnEmulatedGpuAreNotCalledAGpuRanking) {
+  ASSERT_EQ(status_, 0);
+  // The suite runs on llvmpipe: every time is the CPU's.
+  const std::string summary = section_of(html_, "summary");
+  EXPECT_NE(summary.find("<b>Most quality per millisecond (CPU emulation, not a GPU ranking):</b>"),
+            std::string::npos)
+      << summary;
+  const std::string timings = section_of(html_, "timings");
+  EXPECT_NE(timings.find("frame time on a GPU emulated on the CPU"), std::string::npos);
+  EXPECT_EQ(timings.find("GPU time per frame"), std::string::npos);
+}
+
+TEST_F(Report, ImagesAreNeverEnlargedAndRowsKeepOneHeight) {
+  ASSERT_EQ(status_, 0);
+  const std::regex shown_re(
+      R"re(<img src="([^"]+)" width="(\d+)" height="(\d+)"[^>]*style="width:(\d+)px;height:(\d+)px">)re");
+  int shown = 0;
+  for (std::sregex_iterator it(html_.begin(), html_.end(), shown_re), end; it != end; ++it) {
+    ++shown;
+    EXPECT_LE(std::stoi((*it)[4].str()), std::stoi((*it)[2].str())) << (*it)[1].str();
+    EXPECT_LE(std::stoi((*it)[5].str()), std::stoi((*it)[3].str())) << (*it)[1].str();
+  }
+  EXPECT_EQ(static_cast<std::size_t>(shown), images_.size()) << "an image without its shown size";
+  // Section 2's square shadow maps are shown as tall as its 16:9 frames.
+  const std::string lights = section_of(html_, "lights");
+  std::smatch frame, map;
+  ASSERT_TRUE(std::regex_search(
+      lights, frame,
+      std::regex(R"re(src="light-spot-hard\.png"[^>]*style="width:\d+px;height:(\d+)px")re")));
+  ASSERT_TRUE(std::regex_search(
+      lights, map,
+      std::regex(
+          R"re(src="light-spot-shadow-map\.png"[^>]*style="width:(\d+)px;height:(\d+)px")re")));
+  EXPECT_EQ(map[2].str(), frame[1].str());
+}
+
+TEST_F(Report, ErrorImagesHaveAColourBar) {
+  ASSERT_EQ(status_, 0);
+  // Above the section's first error image.
+  for (const auto& [id, first_error] :
+       {std::pair<std::string, std::string>{"errors", "<img src=\"error-"},
+        {"foliage", "-error-"}}) {
+    const std::string section = section_of(html_, id);
+    const std::size_t bar = section.find("<svg class=\"colorbar\"");
+    ASSERT_NE(bar, std::string::npos) << id;
+    EXPECT_LT(bar, section.find(first_error)) << id;
+    EXPECT_NE(section.find("data-value=\"-0.5\"", bar), std::string::npos) << id;
+    EXPECT_NE(section.find("data-value=\"0.5\"", bar), std::string::npos) << id;
+  }
+}
+
+// At light size 0 every technique measures about the same RMSE; the page
+// says why, and its numbers are the hard row's of the light-size table.
+TEST_F(Report, TheErrorAtLightSizeZeroIsExplainedByItsNumbers) {
+  ASSERT_EQ(status_, 0);
+  const std::string sweeps = section_of(html_, "sweeps");
+  const std::regex why_re(
+      R"re(disagrees with the traced rays on (\d+) of the (\d+) pixels compared \([0-9.]+ %\), ([^<]*?) within 2 pixels of the reference's shadow edge[^<]*sqrt\(([0-9.]+)\) = ([0-9.]+))re");
+  std::smatch why;
+  ASSERT_TRUE(std::regex_search(sweeps, why, why_re)) << sweeps;
+  const double wrong = std::stod(why[1].str()), compared = std::stod(why[2].str());
+  EXPECT_GT(wrong, 0.0);
+  EXPECT_NEAR(std::stod(why[5].str()), std::sqrt(wrong / compared), 1e-4);
+  // Measured: every wrong pixel is at an edge (the sentence says how many).
+  EXPECT_EQ(why[3].str(), "every one of them") << why[3].str();
+  const Table table = tables_of(sweeps).back();
+  const int hard = column_of(table, "RMSE hard (no penumbra)");
+  ASSERT_GE(hard, 0);
+  const auto* zero = row_of(table, "0.00");
+  ASSERT_NE(zero, nullptr);
+  // The hard shadow's RMSE is that square root: binary errors of 1, nearly
+  // all of its error (a few pixels may be off by less than a half).
+  EXPECT_NEAR(number((*zero)[static_cast<std::size_t>(hard)]), std::stod(why[5].str()), 0.003);
+}
+
 TEST_F(Report, ChromiumShowsThePageWithoutConsoleErrors) {
   ASSERT_EQ(status_, 0);
   ASSERT_EQ(run_shell("command -v chromium > /dev/null"), 0)

@@ -35,6 +35,48 @@ TEST(HtmlPage, GroupsFiguresAndLinksImages) {
   EXPECT_NE(html.find("href=\"full.png\"><img src=\"f3.png\""), std::string::npos);
 }
 
+// Images are shown at their own size, never enlarged; a square map among
+// 16:9 frames is shown at their height, so the row stays aligned.
+TEST(HtmlPage, ShowsImagesAtTheirOwnSizeAndRowsAtOneHeight) {
+  penumbra::HtmlPage page("t");
+  std::vector<penumbra::HtmlFigure> figures(4);
+  const char* names[] = {"f0.png", "f1.png", "f2.png", "f3.png"};
+  for (int i = 0; i < 4; ++i) {
+    figures[i].image = names[i];
+    figures[i].width = 320;
+    figures[i].height = 180;
+  }
+  figures[2].width = figures[2].height = 512;  // a shadow map
+  figures[3].width = 160;                      // a crop, at its size
+  figures[3].height = 88;
+  figures[3].css_class = "crop";
+  page.figures(figures);
+  const std::string html = page.finish();
+  EXPECT_NE(html.find("<img src=\"f0.png\" width=\"320\" height=\"180\" alt=\"\" "
+                      "style=\"width:320px;height:180px\">"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<img src=\"f2.png\" width=\"512\" height=\"512\" alt=\"\" "
+                      "style=\"width:180px;height:180px\">"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("style=\"width:160px;height:88px\""), std::string::npos);
+  // No rule stretches an image to its column.
+  EXPECT_EQ(html.find("img { width: 100%"), std::string::npos);
+}
+
+TEST(HtmlPage, TheBannerComesBeforeTheVerdict) {
+  penumbra::HtmlPage page("t");
+  page.section("errors", "6. Errors");
+  page.verdict("Summary", "intro", {});
+  page.banner("quick & small");
+  const std::string html = page.finish();
+  const auto banner = html.find("<p class=\"banner\">quick &amp; small</p>");
+  ASSERT_NE(banner, std::string::npos);
+  EXPECT_LT(html.find("</h1>"), banner);
+  EXPECT_LT(banner, html.find("<section id=\"summary\">"));
+}
+
 TEST(HtmlPage, TheVerdictComesFirstAndSectionsClose) {
   penumbra::HtmlPage page("t");
   page.section("errors", "6. Errors");

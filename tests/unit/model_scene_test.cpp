@@ -214,6 +214,15 @@ TEST(FramedModelScene, StandsOnTheGroundInView) {
       EXPECT_LT(std::abs(clip.y / clip.w), 1.0f) << "corner " << corner << ", aspect " << aspect;
     }
   }
+  // As documented: the bounding sphere fills 80% of the image's height
+  // (in angle), seen from 40 degrees above the ground.
+  const glm::vec3 centre = b.center();
+  const float radius = 0.5f * glm::length(extent);
+  const glm::vec3 to_camera = scene.camera.position - centre;
+  EXPECT_NEAR(
+      2.0f * std::asin(radius / glm::length(to_camera)) / glm::radians(scene.camera.fov_y_degrees),
+      0.8f, 0.01f);
+  EXPECT_NEAR(glm::degrees(std::asin(glm::normalize(to_camera).y)), 40.0f, 0.01f);
   // The spot light reaches the model.
   const Light& spot = scene.lights[0];
   const glm::vec3 to_model = glm::normalize(b.center() - spot.position);

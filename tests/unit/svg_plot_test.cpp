@@ -74,6 +74,83 @@ TEST(SvgPlot, PointsCarryTheirDataAndSitOnTheirAxes) {
   EXPECT_NEAR((zero - points[1][3]) / (zero - points[2][3]), 0.25, 1e-3);
 }
 
+// The labels of points that crowd together (the quality-against-cost
+// plot's evsm4, msm and msm16) do not overlap one another, and a series
+// drawn without lines has none in its legend.
+TEST(SvgPlot, CrowdedLabelsDoNotOverlapAndUnjoinedPointsHaveNoLegendLine) {
+  LinePlot plot;
+  plot.title = "cost";
+  plot.x = {"ms", false};
+  plot.y = {"RMSE", false};
+  plot.series = {{"technique",
+                  {{10.0, 0.050, "hard"},
+                   {30.0, 0.0300, "msm"},
+                   {30.3, 0.0302, "msm16"},
+                   {30.6, 0.0299, "evsm4"},
+                   {30.1, 0.0305, "evsm2"},
+                   {50.0, 0.020, "pcss"}},
+                  false},
+                 {"joined", {{10.0, 0.01, ""}, {50.0, 0.02, ""}}, true}};
+  const std::string svg = penumbra::svg_line_plot(plot);
+  // The labels' boxes, estimated as the plot places them: 10 px text, at
+  // most 6 px a character.
+  const std::regex label_re(
+      R"re(<text x="([0-9.]+)" y="([0-9.]+)" class="label" text-anchor="(\w+)"[^>]*>([^<]+)</text>)re");
+  struct Box {
+    double x0, y0, x1, y1;
+    std::string text;
+  };
+  std::vector<Box> boxes;
+  for (std::sregex_iterator it(svg.begin(), svg.end(), label_re), end; it != end; ++it) {
+    const double x = std::stod((*it)[1]), y = std::stod((*it)[2]);
+    const std::string anchor = (*it)[3], text = (*it)[4];
+    const double w = 5.8 * static_cast<double>(text.size());
+    const double x0 = anchor == "start" ? x : anchor == "end" ? x - w : x - w / 2;
+    boxes.push_back({x0, y - 8.0, x0 + w, y + 2.5, text});
+  }
+  ASSERT_EQ(boxes.size(), 6u) << svg;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      const Box &a = boxes[i], &b = boxes[j];
+      const bool apart = a.x1 <= b.x0 || b.x1 <= a.x0 || a.y1 <= b.y0 || b.y1 <= a.y0;
+      EXPECT_TRUE(apart) << a.text << " overlaps " << b.text;
+    }
+  }
+  // One legend line: the joined series'.
+  std::size_t lines = 0;
+  for (std::size_t at = svg.find("class=\"legend-line\""); at != std::string::npos;
+       at = svg.find("class=\"legend-line\"", at + 1)) {
+    ++lines;
+  }
+  EXPECT_EQ(lines, 1u);
+}
+
+// The error images' colour bar runs from the map's blue end to its red
+// end, its ticks at -range, 0 and +range.
+TEST(SvgPlot, ErrorColourBarShowsTheMapAndItsRange) {
+  const std::string svg = penumbra::svg_error_color_bar(0.5f, "technique - reference");
+  EXPECT_NE(svg.find("technique - reference"), std::string::npos);
+  const std::regex fill_re(R"re(fill="(#[0-9a-f]{6})")re");
+  std::vector<std::string> fills;
+  for (std::sregex_iterator it(svg.begin(), svg.end(), fill_re), end; it != end; ++it) {
+    fills.push_back((*it)[1]);
+  }
+  ASSERT_GE(fills.size(), 64u);
+  // Moreland's ends: blue (59, 76, 192) and red (180, 4, 38), near enough
+  // at the outermost steps.
+  const auto channel = [](const std::string& hex, int c) {
+    return std::stoi(hex.substr(1 + 2 * c, 2), nullptr, 16);
+  };
+  EXPECT_GT(channel(fills.front(), 2), 150);
+  EXPECT_LT(channel(fills.front(), 0), 100);
+  EXPECT_GT(channel(fills[63], 0), 150);
+  EXPECT_LT(channel(fills[63], 2), 80);
+  for (const char* tick : {"data-value=\"-0.5\"", "data-value=\"0\"", "data-value=\"0.5\""}) {
+    EXPECT_NE(svg.find(tick), std::string::npos) << tick;
+  }
+  EXPECT_NE(svg.find("not compared"), std::string::npos);
+}
+
 TEST(SvgPlot, StackedBarsCarryEachSegment) {
   penumbra::StackedBars bars;
   bars.title = "bytes";

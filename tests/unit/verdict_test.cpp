@@ -55,9 +55,14 @@ TEST(Verdict, QualityPerMillisecondIsTheCheapestGoodPointOfTheFront) {
   EXPECT_EQ(cost->number, "2.00");
   EXPECT_EQ(cost->section, "timings");
   EXPECT_EQ(cost->after.find("emulated"), std::string::npos);
+  EXPECT_EQ(cost->when, "Most quality per millisecond");
+  // Times of an emulated GPU are not a GPU ranking, and the line says so
+  // where it is read.
   f.software_times = true;
-  EXPECT_NE(line(penumbra::verdict_lines(f), "Most quality")->after.find("emulated on the CPU"),
-            std::string::npos);
+  const auto emulated = penumbra::verdict_lines(f);
+  EXPECT_EQ(line(emulated, "Most quality")->when,
+            "Most quality per millisecond (CPU emulation, not a GPU ranking)");
+  EXPECT_NE(line(emulated, "Most quality")->after.find("emulated on the CPU"), std::string::npos);
 }
 
 TEST(Verdict, AFoliageLineIsKeptWhenGiven) {
