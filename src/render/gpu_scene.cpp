@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <map>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "penumbra/shared/bindings.h"
+#include "scene/coverage_mips.hpp"
 
 namespace penumbra {
 
@@ -38,18 +40,32 @@ int mip_levels(int width, int height) {
 
 // An sRGB texture with its full mip chain: the colour is decoded to linear
 // before filtering (OpenGL 4.5, section 8.24), so that minified texels
-// average light, not its encoding.
-gl::Texture upload(const TextureImage& image) {
+// average light, not its encoding. A texture whose alpha is tested against
+// `cutoff` (> 0) gets the chain of scene/coverage_mips.hpp instead, each
+// level keeping level 0's coverage, so that the G-buffer and every shadow
+// pass (which pick their level from their own pixel's or texel's
+// footprint) see as many leaves at every distance and map size.
+gl::Texture upload(const TextureImage& image, float cutoff) {
+  const int levels = mip_levels(image.width, image.height);
   gl::Texture texture(gl::TextureInfo{.format = GL_SRGB8_ALPHA8,
                                       .width = image.width,
                                       .height = image.height,
-                                      .levels = mip_levels(image.width, image.height),
+                                      .levels = levels,
                                       .label = image.name});
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                      image.rgba.data());
+  if (cutoff > 0.0f) {
+    const std::vector<MipLevel> chain = coverage_mip_chain(image, cutoff);
+    for (int level = 0; level < levels && level < static_cast<int>(chain.size()); ++level) {
+      const MipLevel& l = chain[static_cast<std::size_t>(level)];
+      glTextureSubImage2D(texture.id(), level, 0, 0, l.width, l.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                          l.rgba.data());
+    }
+  } else {
+    glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        image.rgba.data());
+    glGenerateTextureMipmap(texture.id());
+  }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glGenerateTextureMipmap(texture.id());
   return texture;
 }
 
@@ -114,9 +130,11 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
   white.name = "white";
   white.width = white.height = 1;
   white.rgba = {255, 255, 255, 255};
-  textures_.push_back(upload(white));
+  textures_.push_back(upload(white, -1.0f));
   std::vector<std::size_t> batch_of(scene.materials.size(), 0);
-  std::map<const TextureImage*, std::size_t> texture_index;
+  // One upload per image and alpha cutoff: the coverage a chain keeps
+  // depends on the cutoff its alpha is tested against.
+  std::map<std::pair<const TextureImage*, float>, std::size_t> texture_index;
   using Key = std::tuple<std::size_t, TextureWrap, TextureWrap, bool, bool>;
   std::map<Key, std::size_t> batch_index;
   const auto batch_for = [&](const Key& key) {
@@ -132,8 +150,9 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
     const Material& m = scene.materials[i];
     std::size_t texture = 0;
     if (m.texture != nullptr && m.texture->width > 0 && m.texture->height > 0) {
-      auto [t, added] = texture_index.try_emplace(m.texture.get(), textures_.size());
-      if (added) textures_.push_back(upload(*m.texture));
+      const float cutoff = texture_alpha_cutoff(m);
+      auto [t, added] = texture_index.try_emplace({m.texture.get(), cutoff}, textures_.size());
+      if (added) textures_.push_back(upload(*m.texture, cutoff));
       texture = t->second;
     }
     batch_of[i] = texture == 0 ? batch_for({0, TextureWrap::Repeat, TextureWrap::Repeat, false,
