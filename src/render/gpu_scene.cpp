@@ -87,6 +87,19 @@ gl::Sampler make_sampler(TextureWrap s, TextureWrap t, bool nearest) {
   return sampler;
 }
 
+// The alpha test's sampler: bilinear within the nearest level only, not
+// anisotropic, so that the coverage each level keeps is the coverage the
+// test sees (shaders/scene/surface.glsl).
+gl::Sampler make_alpha_sampler(TextureWrap s, TextureWrap t, bool nearest) {
+  gl::Sampler sampler(
+      gl::SamplerInfo{.min_filter = GL_LINEAR_MIPMAP_NEAREST,
+                      .mag_filter = static_cast<GLenum>(nearest ? GL_NEAREST : GL_LINEAR),
+                      .wrap = gl_wrap(s),
+                      .label = "base alpha"});
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(gl_wrap(t)));
+  return sampler;
+}
+
 }  // namespace
 
 bool is_cut_out_material(const Material& m) {
@@ -141,6 +154,8 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
     auto [b, added] = batch_index.try_emplace(key, batches_.size());
     if (added) {
       samplers_.push_back(make_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key)));
+      alpha_samplers_.push_back(
+          make_alpha_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key)));
       batches_.push_back({.cut_out = std::get<4>(key)});
     }
     return b->second;
@@ -192,6 +207,7 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
   for (const auto& [key, b] : batch_index) {
     batches_[b].texture = &textures_[std::get<0>(key)];
     batches_[b].sampler = &samplers_[b];
+    batches_[b].alpha_sampler = &alpha_samplers_[b];
   }
 
   const GLuint vao = vao_.id();
@@ -229,6 +245,8 @@ void GpuScene::draw(SurfaceSet set, Corners corners) const {
     }
     glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
     glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
+    glBindTextureUnit(UNIT_BASE_ALPHA, batch.texture->id());
+    glBindSampler(UNIT_BASE_ALPHA, batch.alpha_sampler->id());
     if (corners == Corners::Read) {
       glUniform1ui(LOCATION_FIRST_INDEX, corners_readable_
                                              ? static_cast<GLuint>(batch.first_index)
@@ -238,6 +256,7 @@ void GpuScene::draw(SurfaceSet set, Corners corners) const {
                    reinterpret_cast<const void*>(batch.first_index * sizeof(std::uint32_t)));
   }
   glBindSampler(UNIT_BASE_COLOR, 0);
+  glBindSampler(UNIT_BASE_ALPHA, 0);
 }
 
 }  // namespace penumbra

@@ -18,14 +18,6 @@ std::uint8_t linear_to_srgb_byte(double c) {
   return static_cast<std::uint8_t>(std::lround(s * 255.0));
 }
 
-// The smallest alpha byte that passes the test alpha >= cutoff.
-int passing_byte(float cutoff) {
-  int b = static_cast<int>(std::ceil(cutoff * 255.0f));
-  while (b > 0 && static_cast<float>(b - 1) / 255.0f >= cutoff) --b;
-  while (b < 256 && static_cast<float>(b) / 255.0f < cutoff) ++b;
-  return b;
-}
-
 // Texels [lo, hi) of a source row or column that destination texel i of n
 // averages: the whole source is covered, an odd side's last texel by the
 // last destination texel.
@@ -33,15 +25,63 @@ std::pair<int, int> footprint(int i, int n, int source) {
   return {i * source / n, std::max(i * source / n + 1, (i + 1) * source / n)};
 }
 
+// The fraction of a w x h alpha image (bytes, one per texel) at or above
+// the cutoff where a bilinear filter reads it (repeating at the edges): 4 x
+// 4 points in each texel, of every `stride`-th texel row and column (so
+// that a large level costs at most about a million reads).
+double bilinear_coverage(const std::vector<std::uint8_t>& alpha, int w, int h, float cutoff) {
+  if (alpha.empty()) return 0.0;
+  const std::size_t texels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  const int stride =
+      std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(texels) / 65536.0))));
+  const float threshold = cutoff * 255.0f;
+  const auto at = [&](int x, int y) {
+    x = (x % w + w) % w;
+    y = (y % h + h) % h;
+    return static_cast<float>(alpha[static_cast<std::size_t>(y) * w + x]);
+  };
+  long long above = 0, all = 0;
+  for (int y = 0; y < h; y += stride) {
+    for (int x = 0; x < w; x += stride) {
+      for (int sy = 0; sy < 4; ++sy) {
+        for (int sx = 0; sx < 4; ++sx) {
+          // Texel centres at half-integers (OpenGL 4.5, section 8.14.2).
+          const float px = static_cast<float>(x) + (static_cast<float>(sx) + 0.5f) / 4.0f - 0.5f;
+          const float py = static_cast<float>(y) + (static_cast<float>(sy) + 0.5f) / 4.0f - 0.5f;
+          const int x0 = static_cast<int>(std::floor(px)), y0 = static_cast<int>(std::floor(py));
+          const float ax = px - static_cast<float>(x0), ay = py - static_cast<float>(y0);
+          const float top = at(x0, y0) + ax * (at(x0 + 1, y0) - at(x0, y0));
+          const float bottom = at(x0, y0 + 1) + ax * (at(x0 + 1, y0 + 1) - at(x0, y0 + 1));
+          above += top + ay * (bottom - top) >= threshold;
+          ++all;
+        }
+      }
+    }
+  }
+  return static_cast<double>(above) / static_cast<double>(all);
+}
+
+std::vector<std::uint8_t> alpha_bytes(const MipLevel& level) {
+  std::vector<std::uint8_t> a(level.rgba.size() / 4);
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = level.rgba[4 * i + 3];
+  return a;
+}
+
+// Alpha remapped so that `t` lands on the cutoff, 0 and 1 staying where
+// they are (linear on either side of t), as bytes.
+void remap(const std::vector<float>& alpha, float t, float cutoff, std::vector<std::uint8_t>& out) {
+  out.resize(alpha.size());
+  for (std::size_t i = 0; i < alpha.size(); ++i) {
+    const float a = std::clamp(alpha[i], 0.0f, 1.0f);
+    const float r = a < t ? cutoff * a / t : cutoff + (1.0f - cutoff) * (a - t) / (1.0f - t);
+    out[i] = static_cast<std::uint8_t>(std::lround(std::clamp(r, 0.0f, 1.0f) * 255.0f));
+  }
+}
+
 }  // namespace
 
 double alpha_coverage(const MipLevel& level, float cutoff) {
-  const int pass = passing_byte(cutoff);
-  const std::size_t texels = level.rgba.size() / 4;
-  if (texels == 0) return 0.0;
-  std::size_t above = 0;
-  for (std::size_t i = 0; i < texels; ++i) above += level.rgba[4 * i + 3] >= pass;
-  return static_cast<double>(above) / static_cast<double>(texels);
+  return bilinear_coverage(alpha_bytes(level), level.width, level.height, cutoff);
 }
 
 std::vector<MipLevel> coverage_mip_chain(const TextureImage& image, float cutoff) {
@@ -49,12 +89,12 @@ std::vector<MipLevel> coverage_mip_chain(const TextureImage& image, float cutoff
   for (int i = 0; i < 256; ++i) linear[i] = srgb_to_linear(static_cast<float>(i) / 255.0f);
   std::vector<MipLevel> chain;
   chain.push_back({image.width, image.height, image.rgba});
-  const bool tested = cutoff > 0.0f && cutoff <= 1.0f;
+  const bool tested = cutoff > 0.0f && cutoff < 1.0f;
   const double coverage = tested ? alpha_coverage(chain[0], cutoff) : 0.0;
-  const int pass = tested ? passing_byte(cutoff) : 0;
   // Level k + 1 from level k: colour in linear light, alpha as a float mean
-  // (moved about the cutoff and quantized below), both box-filtered.
+  // (remapped about the cutoff below), both box-filtered.
   std::vector<float> colour, alpha;
+  std::vector<std::uint8_t> bytes;
   while (chain.back().width > 1 || chain.back().height > 1) {
     const MipLevel& src = chain.back();
     MipLevel dst{std::max(1, src.width / 2), std::max(1, src.height / 2), {}};
@@ -79,44 +119,36 @@ std::vector<MipLevel> coverage_mip_chain(const TextureImage& image, float cutoff
         alpha[i] = static_cast<float>(sum[3] / n);
       }
     }
-    // Castaño's selection: the k texels of largest alpha, k = level 0's
-    // coverage in texels of this level, pass and the others are holes.
-    // Rather than scaling every alpha by the factor that puts the k-th on
-    // the cutoff, each alpha moves only as far as it must (up to the
-    // cutoff, or just under it), so that alpha far from the cutoff, an
-    // opaque texel's 1 among them, is left as averaged (a vertex colour's
-    // alpha multiplies it). Ties (common in the flat alpha of cut-outs)
-    // are broken by a hash of the texel's index, so that the texels left
-    // out of a tie are scattered, not the last rows.
-    std::vector<bool> passes;
     if (tested) {
-      const std::size_t keep = std::min(
-          texels, static_cast<std::size_t>(std::lround(coverage * static_cast<double>(texels))));
-      const auto hash = [](std::uint32_t i) {
-        i ^= i >> 16;
-        i *= 0x7feb352du;
-        i ^= i >> 15;
-        i *= 0x846ca68bu;
-        return i ^ (i >> 16);
-      };
-      std::vector<std::uint32_t> order(texels);
-      for (std::size_t i = 0; i < texels; ++i) order[i] = static_cast<std::uint32_t>(i);
-      const auto before = [&](std::uint32_t a, std::uint32_t b) {
-        return alpha[a] != alpha[b] ? alpha[a] > alpha[b] : hash(a) < hash(b);
-      };
-      passes.assign(texels, false);
-      if (keep > 0) {
-        std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(keep - 1),
-                         order.end(), before);
-        for (std::size_t i = 0; i < keep; ++i) passes[order[i]] = alpha[order[i]] > 0.0f;
+      // Castaño's search: the alpha t that, moved onto the cutoff, gives
+      // this level level 0's coverage as the bilinear filter reads it
+      // (coverage falls as t rises). Castaño scales alpha by cutoff / t;
+      // the remap below moves t alike but keeps 0 and 1 (an opaque texel
+      // stays opaque, whatever vertex alpha multiplies it).
+      float lo = 0.0f, hi = 1.0f;
+      for (int step = 0; step < 16; ++step) {
+        const float t = 0.5f * (lo + hi);
+        remap(alpha, t, cutoff, bytes);
+        (bilinear_coverage(bytes, dst.width, dst.height, cutoff) > coverage ? lo : hi) = t;
+      }
+      // Of the two sides of the last step (a jump, at small levels), the
+      // one nearer level 0's coverage.
+      remap(alpha, lo, cutoff, bytes);
+      const double below = bilinear_coverage(bytes, dst.width, dst.height, cutoff);
+      remap(alpha, hi, cutoff, bytes);
+      const double above = bilinear_coverage(bytes, dst.width, dst.height, cutoff);
+      if (std::abs(below - coverage) < std::abs(above - coverage)) remap(alpha, lo, cutoff, bytes);
+    } else {
+      bytes.resize(texels);
+      for (std::size_t i = 0; i < texels; ++i) {
+        bytes[i] =
+            static_cast<std::uint8_t>(std::lround(std::clamp(alpha[i], 0.0f, 1.0f) * 255.0f));
       }
     }
     dst.rgba.resize(4 * texels);
     for (std::size_t i = 0; i < texels; ++i) {
       for (int c = 0; c < 3; ++c) dst.rgba[4 * i + c] = linear_to_srgb_byte(colour[3 * i + c]);
-      int a = static_cast<int>(std::lround(std::clamp(alpha[i], 0.0f, 1.0f) * 255.0f));
-      if (tested) a = passes[i] ? std::max(a, pass) : std::min(a, pass - 1);
-      dst.rgba[4 * i + 3] = static_cast<std::uint8_t>(std::clamp(a, 0, 255));
+      dst.rgba[4 * i + 3] = bytes[i];
     }
     chain.push_back(std::move(dst));
   }
@@ -127,7 +159,7 @@ float texture_alpha_cutoff(const Material& m) {
   const float cutoff = coverage_cutoff(m);
   if (cutoff <= 0.0f || !(m.alpha > 0.0f)) return -1.0f;
   const float t = cutoff / m.alpha;
-  return t <= 1.0f ? t : -1.0f;
+  return t < 1.0f ? t : -1.0f;
 }
 
 }  // namespace penumbra

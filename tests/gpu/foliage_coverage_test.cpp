@@ -2,8 +2,9 @@
 // size: a texture of small leaves (about 30 % of its texels solid, in
 // blobs a few texels wide) on many small cards. Box-filtered mips average
 // such alpha under the cutoff, and the leaves thin out in small maps and
-// far away; the coverage-preserving chain (scene/coverage_mips.hpp) keeps
-// level 0's fraction at every level.
+// far away; the coverage-preserving chain (scene/coverage_mips.hpp), read
+// by the alpha test one level at a time (shaders/scene/surface.glsl),
+// keeps level 0's fraction at every level.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -156,14 +157,14 @@ TEST_F(GpuTest, LeafCardsCastTheirWholeShadowAtEveryMapSize) {
 }
 
 // A wall of leaves facing the camera, the texture eight times across:
-// near, a texel is about a pixel; far, sixteen texels are. The fraction
-// of the wall's pixels that are leaves stays within 10 % of level 0's
-// coverage.
+// near, a texel covers several pixels (level 0, magnified); at 10 units
+// about five texels are a pixel, at 40 about twenty. The fraction of the
+// wall's pixels that are leaves stays within 10 % of level 0's coverage.
 TEST_F(GpuTest, LeafWallKeepsItsCoverageWithDistance) {
   const std::vector<std::uint8_t> texture = leaf_texture();
   const double coverage = level0_coverage(texture);
   testing::write_rgba_png("leaves128.png", kLeafSide, kLeafSide, texture);
-  for (const float distance : {5.0f, 40.0f}) {
+  for (const float distance : {1.0f, 10.0f, 40.0f}) {
     GltfSpec spec;
     spec.materials.push_back({.base_color = {0.6f, 0.6f, 0.6f, 1.0f}});
     spec.materials.push_back(leaf_material(8));
