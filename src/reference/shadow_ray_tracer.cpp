@@ -13,8 +13,8 @@
 #include <limits>
 #include <string>
 
+#include "core/light_sampling.hpp"
 #include "penumbra/error.hpp"
-#include "reference/light_sampling.hpp"
 #include "reference/source_point_sets.hpp"
 
 namespace penumbra {
