@@ -35,6 +35,7 @@
 #define UNIT_AMBIENT_OCCLUSION 4  // the AO texture: read by the lighting pass and the SSAO blur
 #define UNIT_BASE_COLOR 5         // the scene's base-colour texture of the batch drawn
 #define UNIT_GBUFFER_FACET 6      // the G-buffer's triangle normal and smooth-surface height
+#define UNIT_BASE_ALPHA 7  // the same texture, for the alpha test: nearest level, not anisotropic
 // The shadow maps of every light's views, one array layer per view:
 #define UNIT_SHADOW_DEPTH 8     // z-bar depth maps
 #define UNIT_SHADOW_FILTERED 9  // the filtered representations (or summed-area tables)

@@ -194,7 +194,7 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
 }  // namespace
 
 void add_bench_command_options(CLI::App& command, BenchArgs& args) {
-  add_scene_source_options(command, args.scene, args.model, args.camera_index);
+  add_scene_source_options(command, args.scene, args.model, args.camera_index, args.ground);
   add_light_choice_option(command, args.light);
   add_number(command, "frames", args.frames, "frames measured per configuration, after the warm-up",
              1, 100000, OptionGroup::Measurement);
@@ -240,7 +240,7 @@ int run_bench_command(BenchArgs& args) {
   const std::vector<ShadowSettings> plan = plan_runs(args, techniques);
   for (const ShadowSettings& s : plan) validate(s);
   validate(args.render);
-  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index);
+  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index, args.ground);
   apply_light_choice(args.light, scene);
   check_light_index(args.render.light_index, scene);
 

@@ -13,6 +13,7 @@ struct BenchArgs {
   std::string scene = "default";
   std::string model;      // --model: instead of --scene
   int camera_index = -1;  // --camera-index: a glTF scene's camera
+  bool ground = false;    // --ground: a ground under a glTF scene without one
   std::string light;      // --light: one light of this type alone (empty: the scene's lights)
   std::string techniques = "msm";  // a name, a comma-separated list, or "all"
   std::string sweep = "none";      // none, map-size or blur

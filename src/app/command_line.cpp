@@ -72,6 +72,7 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   if (command.camera_index >= 0) {
     args.push_back("--camera-index=" + std::to_string(command.camera_index));
   }
+  if (command.ground) args.push_back("--ground");
   if (!command.light.empty()) args.push_back("--light=" + command.light);
   add_changed_name(args, "technique", command.shadow.technique, shadow_defaults.technique,
                    kTechniqueNames);

@@ -15,6 +15,7 @@ struct RenderCommand {
   std::string model_argument;  // as given to --model (then the scene is ignored)
   std::string light;           // as given to --light (empty: not given)
   int camera_index = -1;       // as given to --camera-index (-1: not given)
+  bool ground = false;         // as given to --ground
   RenderSettings render;
   ShadowSettings shadow;
   SsaoSettings ssao;

@@ -182,7 +182,7 @@ std::vector<std::string> metrics_row(const Item& item, const char* reference,
 }  // namespace
 
 void add_compare_command_options(CLI::App& command, CompareArgs& args) {
-  add_scene_source_options(command, args.scene, args.model, args.camera_index);
+  add_scene_source_options(command, args.scene, args.model, args.camera_index, args.ground);
   add_light_choice_option(command, args.light);
   // The camera and light flags `render` takes, so that the view a user
   // rendered can be measured as it is.
@@ -444,7 +444,7 @@ int run_compare_command(CompareArgs& args) {
   std::vector<Item> items = plan_items(args);
   if (!args.output_dir.empty()) check_output_dir(args.output_dir);
   if (!args.json.empty()) check_output_path(args.json);
-  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index);
+  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index, args.ground);
   apply_light_choice(args.light, scene);
   const int light_index = args.render.light_index;
   if (light_index >= static_cast<int>(scene.lights.size())) {

@@ -17,6 +17,7 @@ struct CompareArgs {
   std::string scene = "default";
   std::string model;           // --model: instead of --scene
   int camera_index = -1;       // --camera-index: a glTF scene's camera
+  bool ground = false;         // --ground: a ground under a glTF scene without one
   std::string light;           // --light: one light of this type alone (empty: the scene's lights)
   SceneOptions scene_options;  // camera and light changes, as `render` takes them
   std::string techniques = "all";

@@ -17,7 +17,7 @@
 namespace penumbra {
 
 void add_render_command_options(CLI::App& command, RenderArgs& args) {
-  add_scene_source_options(command, args.scene, args.model, args.camera_index);
+  add_scene_source_options(command, args.scene, args.model, args.camera_index, args.ground);
   add_light_choice_option(command, args.light);
   in_group(command
                .add_option("-o,--output", args.output,
@@ -48,7 +48,7 @@ int run_render_command(RenderArgs& args) {
   validate(args.ssao);
   image_format_for(args.output);
   check_output_path(args.output);
-  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index);
+  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index, args.ground);
   apply_light_choice(args.light, scene);
   check_light_index(args.render.light_index, scene);
   apply_scene_options(args.scene_options, args.render.light_index, scene);

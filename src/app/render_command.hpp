@@ -13,6 +13,7 @@ struct RenderArgs {
   std::string scene = "default";
   std::string model;      // --model: instead of --scene
   int camera_index = -1;  // --camera-index: a glTF scene's camera
+  bool ground = false;    // --ground: a ground under a glTF scene without one
   std::string light;      // --light: one light of this type alone (empty: the scene's lights)
   std::string output;
   bool verbose = false;

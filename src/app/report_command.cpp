@@ -22,7 +22,7 @@ namespace penumbra {
 namespace fs = std::filesystem;
 
 void add_report_command_options(CLI::App& command, ReportArgs& args) {
-  add_scene_source_options(command, args.scene, args.model, args.camera_index);
+  add_scene_source_options(command, args.scene, args.model, args.camera_index, args.ground);
   add_light_choice_option(command, args.light);
   in_group(command.add_option("-o,--output", args.output, "folder for index.html and its images")
                ->required()
@@ -64,7 +64,7 @@ int run_report_command(const ReportArgs& args) {
                         ? (fs::path(args.output) / "index.html").string()
                         : args.output);
   const auto start = std::chrono::steady_clock::now();
-  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index);
+  Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index, args.ground);
   apply_light_choice(args.light, scene);
   auto context = gl::Context::create_headless();
   // Built in a temporary folder, moved into place when the page is

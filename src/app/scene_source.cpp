@@ -9,7 +9,7 @@
 namespace penumbra {
 
 void add_scene_source_options(CLI::App& command, std::string& scene, std::string& model,
-                              int& camera_index) {
+                              int& camera_index, bool& ground) {
   CLI::Option* scene_option =
       command
           .add_option("--scene", scene,
@@ -34,13 +34,25 @@ void add_scene_source_options(CLI::App& command, std::string& scene, std::string
           ->type_name("N")
           ->transform(index_number());
   in_group(camera_option, OptionGroup::SceneAndCamera);
+  add_switch(command, "ground",
+             "add a ground plane under a glTF scene that has none (as --model stands a model on "
+             "one)",
+             ground, OptionGroup::SceneAndCamera);
 }
 
-Scene resolve_scene_source(const std::string& scene, const std::string& model, int camera_index) {
-  if (camera_index >= 0 && (!model.empty() || !is_gltf_path(scene))) {
+Scene resolve_scene_source(const std::string& scene, const std::string& model, int camera_index,
+                           bool ground) {
+  const bool gltf = model.empty() && is_gltf_path(scene);
+  if (camera_index >= 0 && !gltf) {
     throw UsageError("--camera-index needs a glTF scene (--scene FILE.gltf or FILE.glb)");
   }
+  if (ground && !gltf) {
+    throw UsageError(
+        "--ground needs a glTF scene (--scene FILE.gltf or FILE.glb); --model always stands the "
+        "model on a ground, and a scene file lists its own");
+  }
   if (!model.empty()) return framed_model_scene(model);
+  if (gltf) return gltf_scene(scene, camera_index, ground);
   return resolve_scene(scene, camera_index);
 }
 

@@ -112,7 +112,7 @@ void apply_key(KeyAction action, ViewerState& state, PanelActions& actions, bool
 }  // namespace
 
 void add_view_command_options(CLI::App& command, ViewArgs& args) {
-  add_scene_source_options(command, args.scene, args.model, args.camera_index);
+  add_scene_source_options(command, args.scene, args.model, args.camera_index, args.ground);
   add_light_choice_option(command, args.light);
   in_group(command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages"),
            OptionGroup::Output);
@@ -157,7 +157,7 @@ int run_view_command(ViewArgs& args) {
     }
     check_output_path(args.capture_window);
   }
-  Scene loaded = resolve_scene_source(args.scene, args.model, args.camera_index);
+  Scene loaded = resolve_scene_source(args.scene, args.model, args.camera_index, args.ground);
   apply_light_choice(args.light, loaded);
   check_light_index(args.render.light_index, loaded);
   Scene start = loaded;

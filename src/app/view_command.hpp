@@ -15,6 +15,7 @@ struct ViewArgs {
   std::string scene = "default";
   std::string model;      // --model: instead of --scene
   int camera_index = -1;  // --camera-index: a glTF scene's camera
+  bool ground = false;    // --ground: a ground under a glTF scene without one
   std::string light;      // --light: one light of this type alone (empty: the scene's lights)
   bool verbose = false;
   RenderSettings render;  // width and height: the 3D view's start size

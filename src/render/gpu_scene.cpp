@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <map>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "penumbra/shared/bindings.h"
+#include "scene/coverage_mips.hpp"
 
 namespace penumbra {
 
@@ -38,18 +40,32 @@ int mip_levels(int width, int height) {
 
 // An sRGB texture with its full mip chain: the colour is decoded to linear
 // before filtering (OpenGL 4.5, section 8.24), so that minified texels
-// average light, not its encoding.
-gl::Texture upload(const TextureImage& image) {
+// average light, not its encoding. A texture whose alpha is tested against
+// `cutoff` (> 0) gets the chain of scene/coverage_mips.hpp instead, each
+// level keeping level 0's coverage, so that the G-buffer and every shadow
+// pass (which pick their level from their own pixel's or texel's
+// footprint) see as many leaves at every distance and map size.
+gl::Texture upload(const TextureImage& image, float cutoff) {
+  const int levels = mip_levels(image.width, image.height);
   gl::Texture texture(gl::TextureInfo{.format = GL_SRGB8_ALPHA8,
                                       .width = image.width,
                                       .height = image.height,
-                                      .levels = mip_levels(image.width, image.height),
+                                      .levels = levels,
                                       .label = image.name});
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                      image.rgba.data());
+  if (cutoff > 0.0f) {
+    const std::vector<MipLevel> chain = coverage_mip_chain(image, cutoff);
+    for (int level = 0; level < levels && level < static_cast<int>(chain.size()); ++level) {
+      const MipLevel& l = chain[static_cast<std::size_t>(level)];
+      glTextureSubImage2D(texture.id(), level, 0, 0, l.width, l.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                          l.rgba.data());
+    }
+  } else {
+    glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        image.rgba.data());
+    glGenerateTextureMipmap(texture.id());
+  }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glGenerateTextureMipmap(texture.id());
   return texture;
 }
 
@@ -68,6 +84,19 @@ gl::Sampler make_sampler(TextureWrap s, TextureWrap t, bool nearest) {
     glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &most);
     glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(16.0f, most));
   }
+  return sampler;
+}
+
+// The alpha test's sampler: bilinear within the nearest level only, not
+// anisotropic, so that the coverage each level keeps is the coverage the
+// test sees (shaders/scene/surface.glsl).
+gl::Sampler make_alpha_sampler(TextureWrap s, TextureWrap t, bool nearest) {
+  gl::Sampler sampler(
+      gl::SamplerInfo{.min_filter = GL_LINEAR_MIPMAP_NEAREST,
+                      .mag_filter = static_cast<GLenum>(nearest ? GL_NEAREST : GL_LINEAR),
+                      .wrap = gl_wrap(s),
+                      .label = "base alpha"});
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(gl_wrap(t)));
   return sampler;
 }
 
@@ -114,15 +143,19 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
   white.name = "white";
   white.width = white.height = 1;
   white.rgba = {255, 255, 255, 255};
-  textures_.push_back(upload(white));
+  textures_.push_back(upload(white, -1.0f));
   std::vector<std::size_t> batch_of(scene.materials.size(), 0);
-  std::map<const TextureImage*, std::size_t> texture_index;
+  // One upload per image and alpha cutoff: the coverage a chain keeps
+  // depends on the cutoff its alpha is tested against.
+  std::map<std::pair<const TextureImage*, float>, std::size_t> texture_index;
   using Key = std::tuple<std::size_t, TextureWrap, TextureWrap, bool, bool>;
   std::map<Key, std::size_t> batch_index;
   const auto batch_for = [&](const Key& key) {
     auto [b, added] = batch_index.try_emplace(key, batches_.size());
     if (added) {
       samplers_.push_back(make_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key)));
+      alpha_samplers_.push_back(
+          make_alpha_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key)));
       batches_.push_back({.cut_out = std::get<4>(key)});
     }
     return b->second;
@@ -132,8 +165,9 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
     const Material& m = scene.materials[i];
     std::size_t texture = 0;
     if (m.texture != nullptr && m.texture->width > 0 && m.texture->height > 0) {
-      auto [t, added] = texture_index.try_emplace(m.texture.get(), textures_.size());
-      if (added) textures_.push_back(upload(*m.texture));
+      const float cutoff = texture_alpha_cutoff(m);
+      auto [t, added] = texture_index.try_emplace({m.texture.get(), cutoff}, textures_.size());
+      if (added) textures_.push_back(upload(*m.texture, cutoff));
       texture = t->second;
     }
     batch_of[i] = texture == 0 ? batch_for({0, TextureWrap::Repeat, TextureWrap::Repeat, false,
@@ -173,6 +207,7 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
   for (const auto& [key, b] : batch_index) {
     batches_[b].texture = &textures_[std::get<0>(key)];
     batches_[b].sampler = &samplers_[b];
+    batches_[b].alpha_sampler = &alpha_samplers_[b];
   }
 
   const GLuint vao = vao_.id();
@@ -210,6 +245,8 @@ void GpuScene::draw(SurfaceSet set, Corners corners) const {
     }
     glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
     glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
+    glBindTextureUnit(UNIT_BASE_ALPHA, batch.texture->id());
+    glBindSampler(UNIT_BASE_ALPHA, batch.alpha_sampler->id());
     if (corners == Corners::Read) {
       glUniform1ui(LOCATION_FIRST_INDEX, corners_readable_
                                              ? static_cast<GLuint>(batch.first_index)
@@ -219,6 +256,7 @@ void GpuScene::draw(SurfaceSet set, Corners corners) const {
                    reinterpret_cast<const void*>(batch.first_index * sizeof(std::uint32_t)));
   }
   glBindSampler(UNIT_BASE_COLOR, 0);
+  glBindSampler(UNIT_BASE_ALPHA, 0);
 }
 
 }  // namespace penumbra

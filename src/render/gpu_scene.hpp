@@ -38,8 +38,8 @@ class GpuScene {
   // read (negative: the GPU's MAX_SHADER_STORAGE_BLOCK_SIZE).
   GpuScene(const Scene& scene, const TriangleMesh& mesh, std::int64_t max_storage_block_bytes = -1);
 
-  // Binds the vertex array, the materials and each batch's texture (unit
-  // UNIT_BASE_COLOR), and draws the triangles of the set. With
+  // Binds the vertex array, the materials and each batch's texture (units
+  // UNIT_BASE_COLOR and UNIT_BASE_ALPHA), and draws the triangles of the set. With
   // Corners::Read the bound program reads each triangle's corners by
   // gl_PrimitiveID: the vertices and indices are bound as storage buffers
   // too, and each batch's first index goes to its uniform
@@ -60,6 +60,7 @@ class GpuScene {
     std::size_t index_count = 0;
     const gl::Texture* texture = nullptr;
     const gl::Sampler* sampler = nullptr;
+    const gl::Sampler* alpha_sampler = nullptr;  // for the alpha test (UNIT_BASE_ALPHA)
     bool cut_out = false;
   };
   gl::Buffer vertices_;
@@ -70,6 +71,7 @@ class GpuScene {
   bool corners_readable_ = true;
   std::vector<gl::Texture> textures_;  // [0]: 1x1 white, for untextured materials
   std::vector<gl::Sampler> samplers_;
+  std::vector<gl::Sampler> alpha_samplers_;
   std::vector<Batch> batches_;
 };
 

@@ -251,6 +251,16 @@ std::vector<Light> framing_lights(const Bounds& bounds) {
   return {spot, sky_light()};
 }
 
+void add_ground(Scene& scene, const Bounds& bounds) {
+  const glm::vec3 extent = bounds.max - bounds.min;
+  const float radius = 0.5f * glm::length(extent);
+  Shape ground = make(ShapeKind::Plane, {bounds.center().x, bounds.min.y, bounds.center().z},
+                      static_cast<int>(scene.materials.size()));
+  ground.size = {10.0f * radius, 0.0f, 10.0f * radius};
+  scene.materials.push_back(standard_materials()[0]);
+  scene.shapes.insert(scene.shapes.begin(), ground);
+}
+
 std::vector<std::string> builtin_scene_names() {
   return {"default", "spot"};
 }

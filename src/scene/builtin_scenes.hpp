@@ -30,6 +30,11 @@ Scene framed_model_scene(const std::string& path);
 // sphere's diameter).
 Camera framing_camera(const Bounds& bounds);
 
+// Adds framed_model_scene's ground to a scene: a grey plane at the bottom
+// of `bounds`, centred under them, ten times their bounding sphere's radius
+// across, with a material of its own, appended to scene.materials.
+void add_ground(Scene& scene, const Bounds& bounds);
+
 // framed_model_scene's lights for any world-space bounds: the key spot
 // light up high, to the right and a little behind (105 degrees round from
 // the camera), and the dim directional sky light.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -39,7 +40,26 @@ bool is_gltf_path(const std::string& path) {
   return ext == ".gltf" || ext == ".glb";
 }
 
-Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& notes) {
+bool has_ground(const TriangleMesh& mesh, const Bounds& bounds) {
+  if (bounds.empty()) return false;
+  const glm::vec3 extent = bounds.max - bounds.min;
+  const float band = bounds.min.y + 0.01f * std::max({extent.x, extent.y, extent.z});
+  const double footprint = static_cast<double>(extent.x) * static_cast<double>(extent.z);
+  double area = 0.0;
+  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    const glm::vec3 a = mesh.vertices[mesh.indices[i]].position;
+    const glm::vec3 b = mesh.vertices[mesh.indices[i + 1]].position;
+    const glm::vec3 c = mesh.vertices[mesh.indices[i + 2]].position;
+    if (std::max({a.y, b.y, c.y}) > band) continue;
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float length = glm::length(n);
+    if (!(length > 0.0f) || std::abs(n.y) < 0.95f * length) continue;
+    area += 0.5 * static_cast<double>(length);
+  }
+  return footprint > 0.0 && area >= 0.25 * footprint;
+}
+
+Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& notes, bool ground) {
   // The checks load_model makes first (a missing file, a folder, a FIFO)
   // come before the extensions are read.
   const GltfExtensions extensions = read_gltf_extensions_checked(path);
@@ -82,10 +102,17 @@ Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& note
   } else {
     if (model.bounds.empty()) throw RuntimeError(path + ": the file holds no triangles");
     scene.camera = framing_camera(model.bounds);
+    notes.assumptions.push_back(path +
+                                " has no camera: looking at it from the front left, 40 "
+                                "degrees up, its bounding sphere filling 80% of the image "
+                                "height");
   }
 
   if (model.lights.empty()) {
     scene.lights = framing_lights(model.bounds);
+    notes.assumptions.push_back(path +
+                                " has no lights: lit by a spot light from the right and a "
+                                "little behind, and a dim directional light");
   } else {
     // The dropped lights named up to a few, then counted: a file with
     // thousands of lights still gets one short warning line.
@@ -108,14 +135,26 @@ Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& note
                                std::to_string(dropped_count) + ": " + dropped);
     }
   }
+
+  if (!has_ground(model.mesh, model.bounds)) {
+    if (ground) {
+      add_ground(scene, model.bounds);
+      notes.assumptions.push_back(path + " has no ground: added a grey plane under it (--ground)");
+    } else {
+      notes.assumptions.push_back(path + " has no ground: none added (--ground on adds one)");
+    }
+  }
   return scene;
 }
 
-Scene gltf_scene(const std::string& path, int camera_index) {
+Scene gltf_scene(const std::string& path, int camera_index, bool ground) {
   GltfSceneNotes notes;
-  Scene scene = gltf_scene(path, camera_index, notes);
+  Scene scene = gltf_scene(path, camera_index, notes, ground);
   for (const std::string& w : notes.warnings) {
     std::fprintf(stderr, "penumbra: warning: %s\n", w.c_str());
+  }
+  for (const std::string& a : notes.assumptions) {
+    std::fprintf(stderr, "penumbra: note: %s\n", a.c_str());
   }
   return scene;
 }

@@ -64,4 +64,42 @@ TEST(CliGltf, RequiredUnknownExtensionIsOneErrorNamingIt) {
                out_path("gltf-draco.png"));
 }
 
+// A bare file (one card, no camera, lights or ground): one note line per
+// assumption and nothing else; --ground on adds a ground, which shadows
+// the final image; --ground is refused for scenes that are not glTF.
+TEST(CliGltf, BareSceneNotesEachAssumptionAndGroundAddsOne) {
+  GltfSpec spec;
+  spec.quads.push_back({{{-1, 0.5f, 0}, {1, 0.5f, 0}, {1, 2.5f, 0}, {-1, 2.5f, 0}}, 0});
+  spec.materials.push_back({.double_sided = true});
+  const std::string scene = write_gltf("cli-bare.gltf", spec);
+  const std::string png = out_path("gltf-bare.png");
+  const Result r = run("render --scene " + scene + kSmall + " -o " + png);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(png));
+  int lines = 0;
+  for (std::size_t at = 0; at < r.err.size(); at = r.err.find('\n', at) + 1) {
+    EXPECT_EQ(r.err.compare(at, 16, "penumbra: note: "), 0) << r.err;
+    ++lines;
+  }
+  EXPECT_EQ(lines, 3) << r.err;
+  for (const char* what : {"has no camera", "has no lights", "has no ground: none added"}) {
+    EXPECT_NE(r.err.find(what), std::string::npos) << what << ": " << r.err;
+  }
+  const Result g = run("render --scene " + scene + " --ground on" + kSmall + " -o " + png);
+  EXPECT_EQ(g.status, 0) << g.err;
+  EXPECT_NE(g.err.find("has no ground: added"), std::string::npos) << g.err;
+  expect_error("render --scene default --ground on" + kSmall, 2, "--ground",
+               out_path("gltf-ground-default.png"));
+  expect_error("render --model " + scene + " --ground on" + kSmall, 2, "--ground",
+               out_path("gltf-ground-model.png"));
+}
+
+// A file with its own camera, lights and ground assumes nothing.
+TEST(CliGltf, CompleteSceneHasNoNotes) {
+  const std::string scene = write_gltf("cli-complete.gltf", quad_scene());
+  const Result r = run("render --scene " + scene + kSmall + " -o " + out_path("gltf-complete.png"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+}
+
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <glm/gtc/constants.hpp>
@@ -111,6 +112,67 @@ TEST(GltfScene, MissingCameraIsFramedAndMissingLightsAreTheDefaultKeyLight) {
   EXPECT_EQ(scene.lights[0].type, LightType::Spot);
   // Far enough to see the whole 20-unit quad.
   EXPECT_GT(glm::length(scene.camera.position - scene.camera.target), 20.0f);
+}
+
+// A card standing over nothing: the camera, the lights and the ground are
+// each one assumption; asked for, the ground is added under the card, with
+// a material of its own.
+TEST(GltfScene, BareSceneNotesItsAssumptionsAndAddsAGroundWhenAsked) {
+  GltfSpec spec;
+  spec.quads.push_back({{{-1, 0.5f, 0}, {1, 0.5f, 0}, {1, 2.5f, 0}, {-1, 2.5f, 0}}, 0});
+  spec.materials.push_back({});
+  const std::string path = testing::write_gltf("bare-card.gltf", spec);
+  GltfSceneNotes notes;
+  const Scene bare = gltf_scene(path, -1, notes);
+  ASSERT_EQ(notes.assumptions.size(), 3u);
+  EXPECT_NE(notes.assumptions[0].find("has no camera"), std::string::npos);
+  EXPECT_NE(notes.assumptions[1].find("has no lights"), std::string::npos);
+  EXPECT_NE(notes.assumptions[2].find("has no ground"), std::string::npos);
+  EXPECT_TRUE(notes.warnings.empty());
+  EXPECT_EQ(bare.shapes.size(), 1u);
+
+  GltfSceneNotes grounded_notes;
+  const Scene grounded = gltf_scene(path, -1, grounded_notes, /*ground=*/true);
+  ASSERT_EQ(grounded.shapes.size(), 2u);
+  const Shape& ground = grounded.shapes[0];
+  EXPECT_EQ(ground.kind, ShapeKind::Plane);
+  EXPECT_NEAR(ground.position.y, 0.5f, 1e-6f);
+  EXPECT_GT(ground.size.x, 10.0f);
+  ASSERT_EQ(grounded.materials.size(), bare.materials.size() + 1);
+  EXPECT_EQ(ground.material, static_cast<int>(bare.materials.size()));
+  EXPECT_EQ(grounded.shapes[1].material, bare.shapes[0].material);
+  EXPECT_EQ(grounded.camera, bare.camera);
+}
+
+// A ground in the file (a wide face at the bottom, facing up or down) is
+// found; a card over a small tile is not grounded by it.
+TEST(GltfScene, GroundInTheFileIsFoundAndNothingIsAssumed) {
+  GltfSpec spec = ground_quad(3.0f);
+  spec.quads.push_back({{{-1, 0.5f, 0}, {1, 0.5f, 0}, {1, 2.5f, 0}, {-1, 2.5f, 0}}, 0});
+  spec.cameras.push_back({.position = {0, 4, 6}, .target = {0, 0, 0}});
+  spec.lights.push_back({.type = "point", .intensity = 5.0f, .position = {0, 3, 0}});
+  GltfSceneNotes notes;
+  const Scene scene = gltf_scene(testing::write_gltf("grounded.gltf", spec), -1, notes, true);
+  EXPECT_TRUE(notes.assumptions.empty()) << notes.assumptions.front();
+  EXPECT_EQ(scene.shapes.size(), 1u);
+
+  TriangleMesh mesh;
+  const auto quad = [&](std::array<glm::vec3, 4> c) {
+    const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
+    for (const glm::vec3& p : c) {
+      Vertex v{};
+      v.position = p;
+      mesh.vertices.push_back(v);
+    }
+    for (const std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(first + i);
+  };
+  quad({glm::vec3{-1, 0.5f, 0}, {1, 0.5f, 0}, {1, 2.5f, 0}, {-1, 2.5f, 0}});  // the card
+  quad({glm::vec3{-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}});            // facing down
+  EXPECT_TRUE(has_ground(mesh, mesh.bounds()));
+  mesh = {};
+  quad({glm::vec3{-2, 0.5f, 0}, {2, 0.5f, 0}, {2, 2.5f, 2}, {-2, 2.5f, 2}});
+  quad({glm::vec3{-0.3f, 0, -0.3f}, {-0.3f, 0, 0.3f}, {0.3f, 0, 0.3f}, {0.3f, 0, -0.3f}});
+  EXPECT_FALSE(has_ground(mesh, mesh.bounds()));
 }
 
 TEST(GltfScene, LightsBeyondTheLimitAreDroppedByName) {

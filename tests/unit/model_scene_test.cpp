@@ -3,6 +3,9 @@
 // --model renders.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -227,6 +230,39 @@ TEST(FramedModelScene, StandsOnTheGroundInView) {
   const Light& spot = scene.lights[0];
   const glm::vec3 to_model = glm::normalize(b.center() - spot.position);
   EXPECT_GT(glm::dot(to_model, spot.direction), std::cos(glm::radians(spot.inner_cone_degrees)));
+}
+
+// As documented (docs/scenes.md): the bounding sphere fills 80% of the
+// image's height, whatever the model's proportions; the model itself fills
+// less (its bounding box's corners are on the sphere at most).
+TEST(FramedModelScene, BoundingSphereFillsFourFifthsOfTheHeight) {
+  for (const glm::vec3 extent :
+       {glm::vec3(2.0f, 1.9f, 1.5f), glm::vec3(1, 2, 1), glm::vec3(2, 1, 1)}) {
+    Bounds b;
+    b.extend(-0.5f * extent + glm::vec3(0, 0.5f * extent.y, 0));
+    b.extend(0.5f * extent + glm::vec3(0, 0.5f * extent.y, 0));
+    const Camera camera = framing_camera(b);
+    const glm::mat4 clip =
+        glm::perspective(glm::radians(camera.fov_y_degrees), 1.0f, 0.01f, 100.0f) *
+        glm::lookAt(camera.position, camera.target, camera.up);
+    const float radius = 0.5f * glm::length(extent);
+    float low = 1.0f, high = -1.0f;
+    for (int i = 0; i < 180; ++i) {
+      for (int j = 0; j <= 90; ++j) {
+        const float theta = glm::radians(2.0f * static_cast<float>(i));
+        const float phi = glm::radians(2.0f * static_cast<float>(j));
+        const glm::vec3 p =
+            b.center() + radius * glm::vec3(std::sin(phi) * std::cos(theta), std::cos(phi),
+                                            std::sin(phi) * std::sin(theta));
+        const glm::vec4 c = clip * glm::vec4(p, 1.0f);
+        low = std::min(low, c.y / c.w);
+        high = std::max(high, c.y / c.w);
+      }
+    }
+    std::printf("extent (%.1f, %.1f, %.1f): the sphere spans %.3f of the height\n", extent.x,
+                extent.y, extent.z, 0.5f * (high - low));
+    EXPECT_NEAR(0.5f * (high - low), 0.8f, 0.015f);
+  }
 }
 
 TEST(FramedModelScene, BadModelsAreErrorsNamingTheFile) {
