@@ -208,8 +208,7 @@ void print_estimate(Renderer& renderer, const BenchArgs& args,
       probe.total.wall_ms.empty() ? probe_s / 2.0 : probe.total.wall_ms.front() * 1e-3;
   const double first_s = std::max(steady_s, probe_s - steady_s);
   const int frames = args.frames + args.warmup;
-  const double total_s =
-      static_cast<double>(plan.size()) * (first_s + (frames - 1) * steady_s);
+  const double total_s = static_cast<double>(plan.size()) * (first_s + (frames - 1) * steady_s);
   std::printf(
       "estimate: about %.0f s for %zu configuration%s of %d frames (%d warm-up), from two frames "
       "of the first (%.2f s with its shaders compiled, then %.3f s a frame)\n",
