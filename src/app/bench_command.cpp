@@ -210,9 +210,10 @@ void print_estimate(Renderer& renderer, const BenchArgs& args,
   const int frames = args.frames + args.warmup;
   const double total_s = static_cast<double>(plan.size()) * (first_s + (frames - 1) * steady_s);
   std::printf(
-      "estimate: about %.0f s for %zu configuration%s of %d frames (%d warm-up), from two frames "
+      "estimate: about %.*f s for %zu configuration%s of %d frames (%d warm-up), from two frames "
       "of the first (%.2f s with its shaders compiled, then %.3f s a frame)\n",
-      total_s, plan.size(), plan.size() == 1 ? "" : "s", frames, args.warmup, first_s, steady_s);
+      total_s < 10.0 ? 1 : 0, total_s, plan.size(), plan.size() == 1 ? "" : "s", frames,
+      args.warmup, first_s, steady_s);
   std::fflush(stdout);
 }
 

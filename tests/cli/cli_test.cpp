@@ -271,7 +271,7 @@ TEST(Cli, BenchEstimatesAndReportsProgressOffATerminal) {
           "--shadow-map-size 64");
   ASSERT_EQ(r.status, 0) << r.err;
   const std::regex estimate(
-      "estimate: about [0-9]+ s for 3 configurations of 3 frames \\(1 warm-up\\)");
+      "estimate: about [0-9.]+ s for 3 configurations of 3 frames \\(1 warm-up\\)");
   EXPECT_TRUE(std::regex_search(r.out, estimate)) << r.out;
   // The estimate comes before the first result.
   EXPECT_LT(r.out.find("estimate:"), r.out.find("\nhard")) << r.out;
