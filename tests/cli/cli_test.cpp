@@ -281,9 +281,10 @@ TEST(Cli, BenchEstimatesAndReportsProgressOffATerminal) {
     const std::string line = std::string("bench: ") + technique;
     const std::size_t found = r.err.find(line, at);
     ASSERT_NE(found, std::string::npos) << line << "\n" << r.err;
-    EXPECT_NE(r.err.find("(" + std::to_string(index) + " of 3 items done", found),
-              std::string::npos)
-        << r.err;
+    std::string done = "(";
+    done += std::to_string(index);
+    done += " of 3 items done";
+    EXPECT_NE(r.err.find(done, found), std::string::npos) << r.err;
     at = found + line.size();
     ++index;
   }
