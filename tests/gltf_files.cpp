@@ -192,7 +192,7 @@ std::string write_gltf(const std::string& name, const GltfSpec& spec) {
   for (std::size_t c = 0; c < spec.cameras.size(); ++c) {
     const GltfCameraSpec& cam = spec.cameras[c];
     json perspective = {{"yfov", cam.yfov}, {"znear", cam.znear}, {"zfar", cam.zfar}};
-    if (cam.aspect_ratio > 0.0f) perspective["aspectRatio"] = cam.aspect_ratio;
+    if (cam.aspect_ratio != 0.0f) perspective["aspectRatio"] = cam.aspect_ratio;
     cameras.push_back({{"type", "perspective"}, {"perspective", perspective}});
     nodes.push_back({{"name", "camera" + std::to_string(c)},
                      {"camera", c},

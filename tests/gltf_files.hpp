@@ -32,7 +32,7 @@ struct GltfCameraSpec {
   float yfov = 0.8f;
   float znear = 0.1f;
   float zfar = 100.0f;
-  float aspect_ratio = 0.0f;  // 0: not given
+  float aspect_ratio = 0.0f;  // 0: not given (any other value is written, even a bad one)
 };
 
 struct GltfLightSpec {

@@ -200,13 +200,18 @@ struct ShadowSettings {
   // (light_size, sun_angle), averaged. 1: one frame from the light's centre.
   int accumulate = 1;
   // Set for each sub-frame by render_subframe, not by the user: the
-  // sub-frame's index; its point of a spot light's square, in [0, 1]^2,
-  // within whose cell the hard test dithers each pixel's points
-  // (shaders/shadow/accumulate.glsl); and the source's outward normal at
-  // the point (spot, point lights), which weights the shadow view.
+  // sub-frame's index; its point of a spot light's square, in [0, 1]^2;
+  // the cell of the square holding it, within which the hard test dithers
+  // each pixel's points (shaders/shadow/accumulate.glsl): its lower corner
+  // and size in [0, 1]^2, and its column of `columns` and row of the
+  // `rows` its column holds (the cells have equal area, one per
+  // sub-frame); and the source's outward normal at the point (spot, point
+  // lights), which weights the shadow view.
   int subframe = 0;
   float subframe_u = 0.5f;
   float subframe_v = 0.5f;
+  std::array<float, 4> subframe_cell{0.0f, 0.0f, 1.0f, 1.0f};  // x, y, width, height
+  std::array<int, 4> subframe_cell_index{0, 1, 0, 1};          // column, columns, row, rows
   std::array<float, 3> subframe_normal{0.0f, 0.0f, 0.0f};
 
   // Directional lights: shadow cascades along the camera's view (1-4).

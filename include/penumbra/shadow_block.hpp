@@ -25,11 +25,11 @@ using ShadowLightData = gpu::GpuLight;
 using ShadowViewData = gpu::GpuShadowView;
 
 // std140 sizes: vec4, mat4 and ivec4 members only, scalars four to a row.
-static_assert(sizeof(ShadowParams) == 112, "GpuShadow must match std140");
+static_assert(sizeof(ShadowParams) == 144, "GpuShadow must match std140");
 static_assert(sizeof(ShadowLightData) == 6 * 16, "GpuLight must match std140");
 static_assert(sizeof(ShadowViewData) == 3 * 64 + 2 * 16, "GpuShadowView must match std140");
 static_assert(sizeof(ShadowBlock) ==
-                  112 + 64 + 16 + MAX_LIGHTS * (6 * 16) + MAX_SHADOW_VIEWS * (3 * 64 + 2 * 16),
+                  144 + 64 + 16 + MAX_LIGHTS * (6 * 16) + MAX_SHADOW_VIEWS * (3 * 64 + 2 * 16),
               "GpuShadowBlock must match std140");
 
 inline constexpr int kMaxLights = MAX_LIGHTS;

@@ -265,14 +265,17 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
     // points of the sub-frame's cell.
     vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    AccumulateCell cell =
-        accumulate_cell(pixel, shadow_params.accumulate_count,
-                        vec2(shadow_params.accumulate_u, shadow_params.accumulate_v));
+    AccumulateCell cell = accumulate_cell(
+        pixel, vec2(shadow_params.accumulate_u, shadow_params.accumulate_v),
+        vec4(shadow_params.accumulate_cell_x, shadow_params.accumulate_cell_y,
+             shadow_params.accumulate_cell_width, shadow_params.accumulate_cell_height),
+        ivec4(shadow_params.accumulate_column, shadow_params.accumulate_columns,
+              shadow_params.accumulate_row, shadow_params.accumulate_rows));
     float lit = 0.0;
     for (int q = 0; q < ACCUMULATE_RAYS; ++q) {
       vec3 random = accumulate_hash(pixel, shadow_params.accumulate_frame * ACCUMULATE_RAYS + q);
       vec2 offset = accumulate_light_offset(view, cell, q, random.xy);
-      lit += shadow_hard_dithered(shadow_depth, v, view, s, z, gradient, offset, random.z);
+      lit += shadow_hard_dithered(shadow_depth, v, view, s, z, gradient, offset);
     }
     return lit / float(ACCUMULATE_RAYS);
   }

@@ -1,22 +1,28 @@
 // Dithered hard shadows for --accumulate N (src/render/accumulation.hpp).
-// Sub-frame k renders a spot light's map from point k of a correlated
-// multi-jittered pattern over its square (Kensler 2013): one point in
-// each cell of an m x rows grid (m = floor(sqrt(N))). Averaged, the N hard
-// shadows would show N stepped copies of each wide penumbra's edge. So
-// each pixel tests rays to points of its own inside the sub-frame's cell
-// (ACCUMULATE_RAYS of them, one in each of k x k sub-cells), jittered anew
-// every sub-frame: the average is fine noise, not steps, and every pixel
-// samples each sub-cell of the square exactly once over the N sub-frames,
-// so the estimate stays unbiased.
+// Sub-frame k renders a spot light's map from a point of its own cell of
+// the square: the N cells, of equal area, partition the square for any N
+// (square_cell in src/core/light_sampling.hpp: m = floor(sqrt(N)) columns
+// of floor(N/m) or ceil(N/m) cells each), so every cell is some sub-frame's
+// exactly once. Averaged, the N hard shadows would show N stepped copies
+// of each wide penumbra's edge. So each pixel tests rays to points of its
+// own inside the sub-frame's cell (ACCUMULATE_RAYS of them, one in each of
+// k x k sub-cells), jittered anew every sub-frame: the average is fine
+// noise, not steps, and over the N sub-frames each pixel's points cover
+// the whole square once, so the estimate is unbiased for every N. The
+// host hands the shader the cell (GpuShadow's accumulate_cell_*), so the
+// two cannot disagree on it.
 //
 // The pixel's points are multi-jittered as well (Chiu, Shirley and Wang,
-// "Multi-Jittered Sampling", Graphics Gems IV, 1994): in cell (c, r) the
-// x coordinate falls in one of the cell's k^2 rows-wide fine strata chosen
-// through a permutation seeded by the pixel and fixed across sub-frames,
-// and likewise for y. Over the N sub-frames each pixel's x coordinates
-// then fill all of the square's fine strata once, so an occluder edge
+// "Multi-Jittered Sampling", Graphics Gems IV, 1994): in the cell at row r
+// of its column's c cells, the x coordinate falls in one of the cell's
+// k^2 c fine strata, chosen through a permutation of the rows seeded by
+// the pixel and fixed across sub-frames, so over the column's c cells the
+// pixel's x coordinates fill every fine stratum of the column once (and so
+// of the square); in y each of the m columns takes its own of the cells'
+// m sub-rows (where the columns hold equally many cells, the pixel's y
+// coordinates fill every fine stratum of a row once). An occluder edge
 // parallel to the square's sides (a box's edge under a spot light facing
-// it) is integrated with error O(1/N) rather than the O(N^-3/4) of
+// it) is then integrated with error O(1/N) rather than the O(N^-3/4) of
 // jittered cells alone. Measured on the default scene (spot light, source
 // 1.5 wide, N = 64, against a 2048-ray reference): RMSE 0.0074 with one
 // jittered point per cell, 0.0062 with these; 9 rays per cell instead of
@@ -26,11 +32,14 @@
 // receiver to the point moved by delta (in the map's x and y) crosses
 // linear depth z at the receiver's map position shifted by
 // delta (1/z - 1/z_r) / (texel size at unit depth) texels (similar
-// triangles). The ray is marched through the map from the receiver to the
-// view's near plane, and is blocked where it crosses the depth of a
-// surface the map holds there, in front of the receiver's own plane (as
-// PCF compares with the receiver plane, so a sloped receiver does not
-// shadow itself).
+// triangles). The ray is walked through every texel it crosses, from the
+// receiver's to the view's near plane (Amanatides and Woo, "A Fast Voxel
+// Traversal Algorithm for Ray Tracing", Eurographics 1987), and is blocked
+// in the first texel where it crosses the depth of the surface the map
+// holds there, in front of the receiver's own plane (as PCF compares with
+// the receiver plane, so a sloped receiver does not shadow itself). A
+// march that sampled the ray at steps longer than a texel would skip thin
+// occluders (a pole one texel wide) and leak light through them.
 #pragma once
 
 
@@ -88,30 +97,30 @@ uint accumulate_permute(uint i, uint l, uint p) {
 }
 
 // The sub-frame's cell of the square as one pixel samples it: the cell
-// (c, r) of cmj_sample's grid (Kensler 2013, Listing 6: m columns, rows
-// rows) holding the sub-frame's `point`, and the pixel's first fine
-// stratum in x and y there, through the permutations its seed picks.
+// the host chose (its corner and size in [0, 1]^2, its column of
+// `columns`, its row of the `rows` its column holds) and the pixel's first
+// fine stratum in x and y there, through the permutations its seed picks.
 // The same for all of the pixel's rays in the sub-frame.
 struct AccumulateCell {
-  vec2 point;  // the sub-frame's point, in [0, 1]^2 of the square
-  uint m, rows, c, r;
+  vec2 point;   // the sub-frame's point, in the cell
+  vec2 origin;  // the cell's lower corner
+  vec2 size;    // the cell's width and height
+  uint columns, rows;
   uint first_x, first_y;
 };
 
-AccumulateCell accumulate_cell(ivec2 pixel, int count, vec2 point) {
+AccumulateCell accumulate_cell(ivec2 pixel, vec2 point, vec4 cell_rect, ivec4 index) {
   AccumulateCell cell;
   cell.point = point;
-  uint n = uint(count);
-  cell.m = uint(sqrt(float(n)));
-  while (cell.m * cell.m > n) --cell.m;
-  while ((cell.m + 1u) * (cell.m + 1u) <= n) ++cell.m;
-  cell.rows = (n + cell.m - 1u) / cell.m;
-  cell.c = min(uint(point.x * float(cell.m)), cell.m - 1u);
-  cell.r = min(uint(point.y * float(cell.rows)), cell.rows - 1u);
+  cell.origin = cell_rect.xy;
+  cell.size = cell_rect.zw;
+  uint column = uint(index.x), row = uint(index.z);
+  cell.columns = uint(max(index.y, 1));
+  cell.rows = uint(max(index.w, 1));
   const uint rays = uint(ACCUMULATE_RAYS);
   uvec3 seed = accumulate_pcg3d(uvec3(uvec2(pixel), 0x9e3779b9u));
-  cell.first_x = rays * accumulate_permute(cell.r, cell.rows, seed.x);
-  cell.first_y = rays * accumulate_permute(cell.c, cell.m, seed.y);
+  cell.first_x = rays * accumulate_permute(row, cell.rows, seed.x);
+  cell.first_y = rays * accumulate_permute(column, cell.columns, seed.y);
   return cell;
 }
 
@@ -127,46 +136,63 @@ vec2 accumulate_light_offset(GpuShadowView view, AccumulateCell cell, int q, vec
   uint qx = uint(q) % k, qy = uint(q) / k;
   uint fine_x = cell.first_x + k * qx + qy;
   uint fine_y = cell.first_y + k * qy + qx;
-  vec2 moved = vec2(
-      (float(cell.c) + (float(fine_x) + jitter.x) / float(rays * cell.rows)) / float(cell.m),
-      (float(cell.r) + (float(fine_y) + jitter.y) / float(rays * cell.m)) / float(cell.rows));
+  vec2 fraction = (vec2(fine_x, fine_y) + jitter) / vec2(rays * cell.rows, rays * cell.columns);
+  vec2 moved = cell.origin + fraction * cell.size;
   return (moved - cell.point) * view.source_width;
 }
 
 // Fraction of light (0 or 1) along the ray to the light moved by
 // `light_offset` (world units, perspective views only). `z` is the
-// receiver's biased z-bar, `gradient` its plane's z-bar change per texel,
-// `jitter` in [0, 1) places the march's steps.
+// receiver's biased z-bar, `gradient` its plane's z-bar change per texel.
 float shadow_hard_dithered(sampler2DArray depth_maps, int layer, GpuShadowView view,
-                           ShadowLookup s, float z, vec2 gradient, vec2 light_offset,
-                           float jitter) {
+                           ShadowLookup s, float z, vec2 gradient, vec2 light_offset) {
   ivec2 size = textureSize(depth_maps, 0).xy;
-  vec2 center = s.uv * vec2(size);
+  vec2 start = s.uv * vec2(size);
   // No early test of the receiver's own texel: the map says whether the
   // sub-frame's point sees the receiver, not whether the moved point does
   // (ending there would darken every penumbra: the dither could take light
   // away but never give it).
   float bias = s.depth - z;
-  float z_receiver = linear_depth_of(view, s.depth);
-  float t_max = max(1.0 / view.depth_range.x - 1.0 / z_receiver, 0.0);
+  float inverse_receiver = 1.0 / linear_depth_of(view, s.depth);
+  float t_max = max(1.0 / view.depth_range.x - inverse_receiver, 0.0);
   vec2 reach = light_offset * t_max / view.depth_range.z;  // texels, at the near plane
-  int steps = clamp(int(ceil(0.5 * length(reach))), 1, 16);  // about one per 2 texels
-  // Each step covers the ray from the previous point towards the light: it
-  // is blocked where, at the step's texel, the map's surface lies in that
-  // stretch of depth (the ray crosses it), in front of the receiver's
-  // plane. The last step takes everything up to the near plane.
-  float previous = s.depth;
-  for (int j = 0; j < steps; ++j) {
-    float f = (float(j) + jitter) / float(steps);  // (0, 1): receiver to near plane
-    vec2 offset = reach * f;
-    ivec2 texel = ivec2(floor(center + offset));
+  // The walk: f in [0, 1] runs from the receiver to the near plane; in
+  // each axis the next texel boundary is crossed at f = next and then
+  // every `delta` (Amanatides and Woo).
+  ivec2 texel = ivec2(floor(start));
+  vec2 magnitude = abs(reach);
+  // An axis the ray moves less than a millionth of a texel along is never
+  // crossed (f = 2), which also keeps 1 / magnitude finite.
+  bvec2 moving = greaterThan(magnitude, vec2(1e-6));
+  ivec2 advance = ivec2(sign(reach)) * ivec2(moving);
+  vec2 delta = 1.0 / max(magnitude, vec2(1e-6));
+  vec2 inside = start - vec2(texel);  // [0, 1): where the start lies in its texel
+  vec2 next = vec2(advance.x > 0 ? 1.0 - inside.x : inside.x,
+                   advance.y > 0 ? 1.0 - inside.y : inside.y);
+  next = mix(vec2(2.0), next * delta, moving);
+  float ray_in = s.depth;  // the ray's z-bar where it enters the texel
+  // A segment inside the map crosses at most size.x + size.y texels; one
+  // that crosses more has left the map, past which nothing is known.
+  for (int j = 0; j <= size.x + size.y; ++j) {
     if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) break;
-    float ray = relative_depth_of(view, 1.0 / (t_max * f + 1.0 / z_receiver));
-    float receiver = z + dot(gradient, offset);
+    float f_out = min(min(next.x, next.y), 1.0);
+    float ray_out = relative_depth_of(view, 1.0 / (t_max * f_out + inverse_receiver));
+    float receiver = z + dot(gradient, vec2(texel) + 0.5 - start);
     float occluder = texelFetch(depth_maps, ivec3(texel, layer), 0).r;
-    bool crossed = j == steps - 1 || occluder >= ray - bias;
-    if (occluder < min(previous - bias, receiver) && crossed) return 0.0;
-    previous = ray;
+    // Blocked where the ray crosses the occluder's depth within this
+    // texel; in the last texel, anything up to the near plane.
+    bool last = f_out >= 1.0;
+    bool crossed = last || occluder >= ray_out - bias;
+    if (occluder < min(ray_in - bias, receiver) && crossed) return 0.0;
+    if (last) break;
+    ray_in = ray_out;
+    if (next.x < next.y) {
+      texel.x += advance.x;
+      next.x += delta.x;
+    } else {
+      texel.y += advance.y;
+      next.y += delta.y;
+    }
   }
   return 1.0;
 }

@@ -101,6 +101,18 @@ struct GpuShadow {
   float accumulate_normal_y;
   float accumulate_normal_z;
   int accumulate_weighted;
+  // --accumulate: the sub-frame's cell of a spot light's square, which
+  // holds its point (corner and size in [0, 1]^2), and the cell's column of
+  // accumulate_columns and row of the accumulate_rows its column holds
+  // (ShadowSettings::subframe_cell).
+  float accumulate_cell_x;
+  float accumulate_cell_y;
+  float accumulate_cell_width;
+  float accumulate_cell_height;
+  int accumulate_column;
+  int accumulate_columns;
+  int accumulate_row;
+  int accumulate_rows;
 };
 
 // Screen-space ambient occlusion (see SsaoSettings in include/penumbra/settings.hpp).
@@ -125,7 +137,7 @@ struct GpuSsao {
 // The shadow core's one block for an engine's shaders (include/penumbra/
 // shadow_block.hpp documents it; shaders/shadow/penumbra_shadows.glsl
 // reads it): the parameters, the camera that picks cascades, every light's
-// shadow data and every shadow view. 5952 bytes, under the 16 KiB every
+// shadow data and every shadow view. 5984 bytes, under the 16 KiB every
 // OpenGL 4.5 device allows a uniform block.
 struct GpuShadowBlock {
   GpuShadow params;

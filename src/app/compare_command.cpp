@@ -184,6 +184,9 @@ std::vector<std::string> metrics_row(const Item& item, const char* reference,
 void add_compare_command_options(CLI::App& command, CompareArgs& args) {
   add_scene_source_options(command, args.scene, args.model, args.camera_index);
   add_light_choice_option(command, args.light);
+  // The camera and light flags `render` takes, so that the view a user
+  // rendered can be measured as it is.
+  add_scene_options(command, args.scene_options);
   add_list(command, "technique", args.techniques,
            "techniques to measure (all: every technique but none)", technique_names(),
            OptionGroup::Technique, "techniques");
@@ -341,8 +344,13 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
           ? "cached"
           : fixed(reference.seconds, 1) + " s, " +
                 fixed(rays_per_second(reference, reference.trace_seconds) * 1e-6, 1) + " M rays/s";
-  std::printf(", %s; %ld pixels compared (geometry the light reaches)\n\n", how.c_str(),
+  std::printf(", %s; %ld pixels compared (geometry the light reaches)", how.c_str(),
               reference.pixels);
+  if (reference.unjudged_pixels > 0) {
+    std::printf("; %lld not judged (surface point not finite or outside the scene)",
+                static_cast<long long>(reference.unjudged_pixels));
+  }
+  std::printf("\n\n");
   std::vector<Row> rows = {
       {{"technique", "filter", "W", "reference", "MAE", "RMSE", "max", "leak", "over-dark"}}};
   for (const Item& item : items) {
@@ -391,6 +399,10 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"scene", scene.name},
       {"light_index", light_index},
       {"light_type", light_type_name(scene.lights[static_cast<std::size_t>(light_index)].type)},
+      {"camera",
+       {{"position", {scene.camera.position.x, scene.camera.position.y, scene.camera.position.z}},
+        {"target", {scene.camera.target.x, scene.camera.target.y, scene.camera.target.z}},
+        {"fov_y_degrees", scene.camera.fov_y_degrees}}},
       {"width", args.render.width},
       {"height", args.render.height},
       {"shadow_map_size", args.shadow.map_size},
@@ -399,6 +411,9 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"reference",
        {{"rays_per_pixel", reference.rays},
         {"pixels", reference.pixels},
+        // Pixels seeing geometry whose surface point is not finite or lies
+        // outside the scene: not traced, not judged.
+        {"unjudged_pixels", reference.unjudged_pixels},
         {"cached", reference.cached},
         {"seconds", reference.seconds},
         // The tracer's speed (null when the reference came from the cache).
@@ -436,6 +451,7 @@ int run_compare_command(CompareArgs& args) {
     throw UsageError("--light-index " + std::to_string(light_index) + ": scene '" + scene.name +
                      "' has " + std::to_string(scene.lights.size()) + " light(s)");
   }
+  apply_scene_options(args.scene_options, light_index, scene);
   const std::string cache_dir =
       !args.cache ? std::string() : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
 

@@ -8,15 +8,17 @@
 #include <string>
 #include <vector>
 
+#include "app/scene_options.hpp"
 #include "penumbra/settings.hpp"
 
 namespace penumbra {
 
 struct CompareArgs {
   std::string scene = "default";
-  std::string model;      // --model: instead of --scene
-  int camera_index = -1;  // --camera-index: a glTF scene's camera
-  std::string light;      // --light: one light of this type alone (empty: the scene's lights)
+  std::string model;           // --model: instead of --scene
+  int camera_index = -1;       // --camera-index: a glTF scene's camera
+  std::string light;           // --light: one light of this type alone (empty: the scene's lights)
+  SceneOptions scene_options;  // camera and light changes, as `render` takes them
   std::string techniques = "all";
   std::string filters = "gaussian";
   std::string output_dir;  // images; none when empty

@@ -1,7 +1,9 @@
 #include "app/option_style.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "app/suggestions.hpp"
@@ -41,7 +43,23 @@ CLI::Validator finite_range(T min, T max) {
   CLI::Validator validator(
       [min, max](std::string& input) -> std::string {
         T value{};
-        if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
+        if constexpr (std::is_integral_v<T>) {
+          // Decimal digits only: CLI11 would read 0x10 as 16 and 010 as 8
+          // (strtoll's base 0) but refuse 1e3. The input is rewritten in
+          // plain decimal for CLI11's own conversion.
+          const char* begin = input.data() + (input.starts_with('+') ? 1 : 0);
+          const char* end = input.data() + input.size();
+          const auto [next, error] = std::from_chars(begin, end, value, 10);
+          if (error == std::errc::result_out_of_range) {
+            return input + " is outside [" + number_text(min) + ", " + number_text(max) + "]";
+          }
+          if (error != std::errc() || next != end || begin == end) {
+            return "'" + input + "' is not a whole number in decimal digits";
+          }
+          input = std::to_string(value);
+        } else if (!CLI::detail::lexical_cast(input, value)) {
+          return "'" + input + "' is not a number";
+        }
         if constexpr (std::is_floating_point_v<T>) {
           if (!std::isfinite(value)) return "'" + input + "' is not a finite number";
         }
@@ -118,7 +136,7 @@ CLI::Option* add_number(CLI::App& app, std::string_view name, T& value, std::str
                         T min, T max, OptionGroup group) {
   CLI::Option* option = app.add_option(flag(name), value, std::string(help))
                             ->capture_default_str()
-                            ->check(finite_range<T>(min, max))
+                            ->transform(finite_range<T>(min, max))
                             ->type_name(std::is_floating_point_v<T> ? "X" : "N");
   return in_group(option, group);
 }
@@ -127,6 +145,10 @@ template CLI::Option* add_number<int>(CLI::App&, std::string_view, int&, std::st
                                       OptionGroup);
 template CLI::Option* add_number<float>(CLI::App&, std::string_view, float&, std::string_view,
                                         float, float, OptionGroup);
+
+CLI::Validator index_number() {
+  return finite_range<int>(0, std::numeric_limits<int>::max()).name("");
+}
 
 CLI::Option* show_range(CLI::Option* option, float min, float max) {
   return option->check(

@@ -24,6 +24,10 @@ template <class T>
 CLI::Option* add_number(CLI::App& app, std::string_view name, T& value, std::string_view help,
                         T min, T max, OptionGroup group);
 
+// A whole number >= 0 in decimal digits (an index), with no range shown
+// in --help.
+CLI::Validator index_number();
+
 // Shows "range: min to max" in --help for an option whose value is read
 // and range-checked later (a "[I:]V" light value); returns it.
 CLI::Option* show_range(CLI::Option* option, float min, float max);

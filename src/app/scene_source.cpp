@@ -32,7 +32,7 @@ void add_scene_source_options(CLI::App& command, std::string& scene, std::string
           .add_option("--camera-index", camera_index,
                       "which of a glTF scene's cameras to look through (default: its first)")
           ->type_name("N")
-          ->check(CLI::NonNegativeNumber);
+          ->transform(index_number());
   in_group(camera_option, OptionGroup::SceneAndCamera);
 }
 

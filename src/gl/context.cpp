@@ -2,10 +2,13 @@
 
 #include <epoxy/gl.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "penumbra/error.hpp"
@@ -89,11 +92,43 @@ bool is_cpu_rasterizer(std::string_view renderer) {
   return false;
 }
 
+namespace {
+
+// Mesa keeps compiled shaders in $XDG_CACHE_HOME/mesa_shader_cache (or
+// ~/.cache/...) and, where it cannot make that folder (a read-only or
+// missing HOME), prints "Failed to create ... for shader cache
+// ---disabling." on stderr. Found here first, the cache is turned off
+// quietly instead. Values the user set are kept.
+void disable_unusable_shader_cache() {
+  if (std::getenv("MESA_SHADER_CACHE_DISABLE") != nullptr ||
+      std::getenv("MESA_SHADER_CACHE_DIR") != nullptr) {
+    return;
+  }
+  std::string base;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
+    base = xdg;
+  } else if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    base = std::string(home) + "/.cache";
+  } else {
+    return;  // Mesa asks the password database, and says nothing
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(base, ec);
+  if (ec || access(base.c_str(), W_OK | X_OK) != 0) {
+    setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<Context> Context::create_headless(const ContextOptions& options) {
   // Mesa's libEGL prints warnings of its own (a device it cannot open, a
   // driver it cannot load) before a platform that works is found: only on
   // request. A value the user set is kept.
-  if (!options.verbose) setenv("EGL_LOG_LEVEL", "fatal", 0);
+  if (!options.verbose) {
+    setenv("EGL_LOG_LEVEL", "fatal", 0);
+    disable_unusable_shader_cache();
+  }
   std::unique_ptr<Context> ctx(new Context());
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   std::string tried;

@@ -76,18 +76,37 @@ void write_text(const char* text) {
   (void)ignored;
 }
 
-// A crash (in a driver under memory pressure: Mesa dereferences a failed
-// allocation) still leaves no temporary output, and says what happened in
-// one line; the signal then ends the program as it would have (a core dump
-// where enabled).
+// The decimal digits of a small non-negative number, for the handler
+// (snprintf is not async-signal-safe).
+void write_number(int value) {
+  char digits[12];
+  int n = 0;
+  do {
+    digits[n++] = static_cast<char>('0' + value % 10);
+    value /= 10;
+  } while (value > 0 && n < 11);
+  char text[12];
+  for (int i = 0; i < n; ++i) text[i] = digits[n - 1 - i];
+  text[n] = '\0';
+  write_text(text);
+}
+
+// A crash (a failed assert in a library, or a driver under memory
+// pressure: Mesa dereferences a failed allocation) still leaves no
+// temporary output, and says what happened in one line; the signal then
+// ends the program as it would have (the exit status tells the truth, and
+// a core is dumped where enabled).
 void on_crash(int signal) {
   remove_registered();
-  write_text("penumbra: error: crashed (");
-  write_text(sigdescr_np(signal) != nullptr ? sigdescr_np(signal) : "signal");
+  write_text("penumbra: error: internal error (signal ");
+  write_number(signal);
+  write_text(": ");
+  write_text(sigdescr_np(signal) != nullptr ? sigdescr_np(signal) : "unknown");
   // Mesa's shader compiler, for one, crashes where an allocation fails.
   write_text(address_space_limited
-                 ? "); the address space is limited (ulimit -v): too little for the GPU driver?\n"
-                 : ")\n");
+                 ? "; the address space is limited (ulimit -v): too little for the GPU driver?), "
+                   "please report it\n"
+                 : "), please report it\n");
   ::signal(signal, SIG_DFL);
   ::raise(signal);
 }
@@ -111,7 +130,9 @@ void install_signal_cleanup() {
   crash.sa_handler = &on_crash;
   sigemptyset(&crash.sa_mask);
   crash.sa_flags = SA_RESETHAND | SA_NODEFER;
-  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL}) sigaction(signal, &crash, nullptr);
+  for (const int signal : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL}) {
+    sigaction(signal, &crash, nullptr);
+  }
 }
 
 RemoveOnSignal::RemoveOnSignal(const std::string& path, bool folder) {

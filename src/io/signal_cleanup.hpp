@@ -9,8 +9,10 @@ namespace penumbra {
 
 // Installs the SIGINT and SIGTERM handlers: they remove the registered
 // paths, then end the program by the same signal (so the parent sees it).
-// A crash (SIGSEGV, SIGBUS, SIGFPE, SIGILL) removes them too, after one
-// error line.
+// A crash (SIGABRT from a failed assert in a library, SIGSEGV, SIGBUS,
+// SIGFPE, SIGILL) removes them too, says "penumbra: error: internal error
+// (signal N: name), please report it" on stderr, and ends the program by
+// that signal.
 void install_signal_cleanup();
 
 // Registers `path` (a file, or a folder of files) for removal while this

@@ -8,12 +8,13 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <string>
 
+#include "core/light_sampling.hpp"
 #include "penumbra/error.hpp"
-#include "reference/light_sampling.hpp"
 #include "reference/source_point_sets.hpp"
 
 namespace penumbra {
@@ -28,6 +29,14 @@ void on_embree_error(void* /*user*/, RTCError /*code*/, const char* /*message*/)
 std::string embree_error(RTCDevice device, const std::string& what) {
   const RTCError code = rtcGetDeviceError(device);
   return "Embree: " + what + " failed (error " + std::to_string(static_cast<int>(code)) + ")";
+}
+
+// Embree's device configuration: PENUMBRA_EMBREE_CONFIG when set (for
+// example "isa=avx2" to run the kernels another CPU would; the tests force
+// each instruction set this way), else Embree's defaults.
+const char* embree_device_config() {
+  const char* config = std::getenv("PENUMBRA_EMBREE_CONFIG");
+  return config != nullptr && config[0] != '\0' ? config : nullptr;
 }
 
 // A unit-sphere frame around w (unit): two axes perpendicular to it.
@@ -62,11 +71,25 @@ void set_ray(RTCRay16& rays, int lane, const glm::vec3& origin, const glm::vec3&
   rays.flags[lane] = 0;
 }
 
-// The valid mask of a packet of 16 whose first `size` lanes are filled,
-// and the context for its rays, which share an origin or nearly a
-// direction.
-RTCIntersectContext coherent_packet(int* valid, int size) {
-  for (int lane = 0; lane < 16; ++lane) valid[lane] = lane < size ? -1 : 0;
+// Lane `lane` of a packet, explicitly inactive: a finite ray whose
+// interval is empty (tnear > tfar). Embree 3 traces a 16-wide packet on a
+// CPU without a native 16-wide kernel (AVX2, SSE) through a fallback that
+// takes every lane whose tnear <= tfar as active, whatever the valid mask
+// says, and Debian builds Embree with its asserts on: a lane left holding
+// an earlier packet's ray, or uninitialized memory, is traced or aborts the
+// program ("all(valid, ray.valid())"). So no lane is left to the mask.
+void set_inactive(RTCRay16& rays, int lane) {
+  set_ray(rays, lane, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f), -1.0f);
+}
+
+// The valid mask of a packet of 16 whose first `size` lanes are filled
+// (the others are made inactive in `rays` too), and the context for its
+// rays, which share an origin or nearly a direction.
+RTCIntersectContext coherent_packet(int* valid, int size, RTCRay16& rays) {
+  for (int lane = 0; lane < 16; ++lane) {
+    valid[lane] = lane < size ? -1 : 0;
+    if (lane >= size) set_inactive(rays, lane);
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -99,7 +122,7 @@ class OcclusionPackets {
   // Traces the rays added since the last flush.
   void flush() {
     if (size_ == 0) return;
-    RTCIntersectContext context = coherent_packet(valid_, size_);
+    RTCIntersectContext context = coherent_packet(valid_, size_, rays_);
     rtcOccluded16(valid_, scene_, &context, &rays_);
     // rtcOccluded16 sets tfar to -inf where it finds a hit.
     for (int lane = 0; lane < size_; ++lane) {
@@ -114,7 +137,7 @@ class OcclusionPackets {
  private:
   RTCScene scene_;
   double* lit_;
-  RTCRay16 rays_;
+  RTCRay16 rays_{};
   alignas(64) int valid_[kWidth] = {};
   int pixel_[kWidth] = {};
   float weight_[kWidth] = {};
@@ -148,7 +171,7 @@ class FacetPackets {
 
   void flush() {
     if (size_ == 0) return;
-    RTCIntersectContext context = coherent_packet(valid_, size_);
+    RTCIntersectContext context = coherent_packet(valid_, size_, hits_.ray);
     rtcIntersect16(valid_, scene_, &context, &hits_);
     for (int lane = 0; lane < size_; ++lane) {
       const glm::vec3 n = normal_[lane];
@@ -198,7 +221,7 @@ class FacetPackets {
   const SmoothMesh& mesh_;
   glm::vec3* normals_;
   glm::vec3* lifts_;
-  RTCRayHit16 hits_;
+  RTCRayHit16 hits_{};
   alignas(64) int valid_[kWidth] = {};
   glm::vec3 point_[kWidth];
   glm::vec3 normal_[kWidth];
@@ -285,6 +308,39 @@ bool attach_triangles(RTCDevice device, RTCScene scene, const TriangleMesh& mesh
 
 }  // namespace
 
+float mesh_extent(const TriangleMesh& mesh) {
+  float extent = 0.0f;
+  for (const Vertex& v : mesh.vertices) {
+    const glm::vec3 a = glm::abs(v.position);
+    extent = std::max({extent, a.x, a.y, a.z});
+  }
+  return extent;
+}
+
+bool traceable_point(const glm::vec3& p, const glm::vec3& n, float error, float extent) {
+  // Embree asserts |origin| and |direction| <= 1.844e18 (FLT_LARGE) for
+  // every active lane: stay well inside that whatever the scene.
+  constexpr float kEmbreeRange = 1e17f;
+  const float limit = extent > 0.0f ? std::min(2.0f * extent, kEmbreeRange) : kEmbreeRange;
+  const float far = extent > 0.0f ? std::min(1e4f * extent, kEmbreeRange) : kEmbreeRange;
+  const glm::vec3 a = glm::abs(p);
+  const bool inside = a.x <= far && a.y <= far && a.z <= far;  // false for NaN
+  // A unit normal, within any storage's rounding (false for NaN and inf).
+  const float length2 = glm::dot(n, n);
+  const bool normal = length2 > 0.25f && length2 < 4.0f;
+  return inside && normal && error >= 0.0f && error <= limit;
+}
+
+std::int64_t untraceable_points(const SurfacePoints& surfaces, float extent) {
+  std::int64_t count = 0;
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    if (!surfaces.covered[i]) continue;
+    const float error = i < surfaces.position_error.size() ? surfaces.position_error[i] : 0.0f;
+    count += !traceable_point(surfaces.position[i], surfaces.normal[i], error, extent);
+  }
+  return count;
+}
+
 ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh)
     : ShadowRayTracer(mesh, std::vector<Material>{}) {}
 
@@ -292,8 +348,15 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Mat
   if (CasterCutouts cutouts(mesh, materials); cutouts.any()) {
     cutouts_ = std::make_unique<CasterCutouts>(mesh, materials);
   }
-  device_ = rtcNewDevice(nullptr);
-  if (device_ == nullptr) throw RuntimeError(embree_error(nullptr, "creating a device"));
+  device_ = rtcNewDevice(embree_device_config());
+  if (device_ == nullptr) {
+    const char* config = embree_device_config();
+    throw RuntimeError(embree_error(nullptr, config == nullptr
+                                                 ? std::string("creating a device")
+                                                 : std::string("creating a device "
+                                                               "with PENUMBRA_EMBREE_CONFIG=") +
+                                                       config));
+  }
   rtcSetDeviceErrorFunction(device_, on_embree_error, nullptr);
 
   scene_ = rtcNewScene(device_);
@@ -315,10 +378,7 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Mat
     rtcReleaseDevice(device_);
     throw RuntimeError(message);
   }
-  for (const Vertex& v : mesh.vertices) {
-    const glm::vec3 a = glm::abs(v.position);
-    max_coordinate_ = std::max({max_coordinate_, a.x, a.y, a.z});
-  }
+  max_coordinate_ = mesh_extent(mesh);
   // The corners are Embree's own copies; only the normals are kept here.
   if (!mesh.indices.empty()) {
     RTCGeometry geometry = rtcGetGeometry(scene_, 0);
@@ -468,7 +528,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
   const SourcePointSets sources(light, static_cast<std::uint32_t>(std::max(samples, 1)),
                                 std::max(covered, 1u));
   const std::uint32_t count = sources.count();
-  std::atomic<std::int64_t> rows_done{0}, rays_traced{0};
+  std::atomic<std::int64_t> rows_done{0}, rays_traced{0}, untraceable{0};
 
   // Receiver i as far as it needs no ray: its facet normal comes later.
   auto receiver = [&](std::size_t i) {
@@ -525,6 +585,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
     const auto w = static_cast<std::size_t>(width);
     std::vector<Receiver> receivers(w);
     std::vector<glm::vec3> facets(w), lifts(w);
+    std::vector<std::uint8_t> traced(w);  // covered and traceable
     std::vector<double> total(w), lit(w);
     FacetPackets facet_packets(scene_, smooth_, facets.data(), lifts.data());
     OcclusionPackets packets(scene_, lit.data());
@@ -533,9 +594,16 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       std::fill(lit.begin(), lit.end(), 0.0);
       const std::size_t row = static_cast<std::size_t>(y) * width;
       for (int x = 0; x < width; ++x) {
-        if (!surfaces.covered[row + x]) continue;
+        const std::size_t i = row + x;
+        traced[x] =
+            surfaces.covered[i] &&
+            traceable_point(surfaces.position[i], surfaces.normal[i],
+                            i < surfaces.position_error.size() ? surfaces.position_error[i] : 0.0f,
+                            max_coordinate_);
+        if (surfaces.covered[i] && !traced[x]) ++untraceable;
+        if (!traced[x]) continue;
         Receiver& r = receivers[x];
-        r = receiver(row + x);
+        r = receiver(i);
         // The G-buffer's normal is interpolated from the vertices' (a
         // smooth sphere's), while the rays meet the flat triangles: near a
         // terminator a direction above the shading normal's tangent plane
@@ -549,7 +617,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       }
       facet_packets.flush();
       for (int x = 0; x < width; ++x) {
-        if (!surfaces.covered[row + x]) continue;
+        if (!traced[x]) continue;
         receivers[x].ng = facets[x];
         receivers[x].origin += lifts[x];
         sample_pixel(row + x, x, receivers[x], rays, total[x], lit[x], packets);
@@ -567,11 +635,12 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
         // undefined (not judged). On a smooth mesh's terminator the
         // triangle can face away from all of the source while the
         // interpolated normal a rasterizer shades with sees some of it.
-        const bool reached = total[x] > 0.0;
+        // An untraceable point has no rays, so it is not judged either.
+        const bool reached = traced[x] && total[x] > 0.0;
         out[0] = out[1] = out[2] = reached ? static_cast<float>(lit[x] / total[x]) : 0.0f;
-        const bool inside_cone =
-            !spot || glm::dot(glm::normalize(surfaces.position[i] - light.position),
-                              light.direction) >= light.cos_cone;
+        const bool inside_cone = !spot || !reached ||
+                                 glm::dot(glm::normalize(surfaces.position[i] - light.position),
+                                          light.direction) >= light.cos_cone;
         out[3] = inside_cone && reached ? 1.0f : 0.0f;
       }
       const std::int64_t done = ++rows_done;
@@ -579,7 +648,10 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
     }
     rays_traced += packets.traced();
   });
-  if (stats != nullptr) stats->rays = rays_traced.load();
+  if (stats != nullptr) {
+    stats->rays = rays_traced.load();
+    stats->untraceable = untraceable.load();
+  }
   return image;
 }
 

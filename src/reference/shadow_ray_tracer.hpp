@@ -61,12 +61,30 @@ struct ReferenceLight {
 ReferenceLight make_reference_light(const Light& light, const LightView& view,
                                     const ShadowSettings& settings);
 
+// The largest |x|, |y| or |z| of the mesh's corners: the scene's extent
+// (0 for an empty mesh).
+float mesh_extent(const TriangleMesh& mesh);
+
+// Whether a surface point can be traced: its position, normal and error
+// bound are finite, the normal is a unit vector, and neither the position
+// nor the bound is absurd: the point lies within 10^4 times the scene's
+// extent (the G-buffer's points lie on the scene's triangles; tests trace
+// points on planes the mesh leaves out) and its bound is no larger than
+// twice the extent (with no triangles, both within Embree's range of
+// coordinates). Points that are not are not traced: not judged.
+bool traceable_point(const glm::vec3& p, const glm::vec3& n, float error, float extent);
+
+// How many covered pixels of `surfaces` hold a point that is not
+// traceable in a scene of that extent.
+std::int64_t untraceable_points(const SurfacePoints& surfaces, float extent);
+
 // Called from worker threads, possibly at once: rows done so far, of total.
 using TraceProgress = std::function<void(std::int64_t done, std::int64_t total)>;
 
 // What a trace did, for reporting its speed.
 struct TraceStats {
   std::int64_t rays = 0;  // shadow rays traced (source points below a tangent plane take none)
+  std::int64_t untraceable = 0;  // covered pixels not traced (traceable_point)
 };
 
 // A triangle mesh's corners (xyz floats per vertex, three indices per
@@ -96,11 +114,11 @@ class ShadowRayTracer {
   // spot's cone, and some of the source above the surface's tangent
   // plane and its triangle's), 0 elsewhere; where no light arrives the
   // factor is undefined and reads 0 (as the `shadow` view has surfaces
-  // facing away); background pixels read (1, 1, 1, 0), as in the `shadow`
-  // view. `samples` rays per pixel for an area light, 1 for a point.
-  // Shadow rays start above the surface by the surface point's
-  // position_error plus the rounding bound below. Uses every core; fills
-  // `stats` if given.
+  // facing away), and so it does where the surface point is not
+  // traceable (traceable_point: not finite, or absurd); background pixels
+  // read (1, 1, 1, 0), as in the `shadow` view. `samples` rays per pixel for an area light, 1 for a
+  // point. Shadow rays start above the surface by the surface point's position_error plus the
+  // rounding bound below. Uses every core; fills `stats` if given.
   [[nodiscard]] Image trace(const SurfacePoints& surfaces, const ReferenceLight& light, int samples,
                             const TraceProgress& progress = {}, TraceStats* stats = nullptr) const;
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "reference/light_sampling.hpp"
+#include "core/light_sampling.hpp"
 
 namespace penumbra {
 

@@ -59,6 +59,8 @@ TracedReference traced_reference(Renderer& renderer, const RenderSettings& rende
       }
     }
   }
+  // Counted from the surfaces, so a cached reference reports it too.
+  r.unjudged_pixels = untraceable_points(surfaces, mesh_extent(renderer.mesh()));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t i = 3; i < r.image.rgba.size(); i += 4) r.pixels += r.image.rgba[i] >= 0.5f;
   return r;

@@ -18,6 +18,9 @@ struct TracedReference {
   bool cached = false;
   double seconds = 0.0;  // finding or tracing it, all told
   long pixels = 0;
+  // Pixels that see geometry whose surface point could not be traced (not
+  // finite, or absurd: traceable_point); they are not judged (alpha 0).
+  std::int64_t unjudged_pixels = 0;
   // The tracing itself (0 when cached): shadow rays traced, and the
   // seconds they took on the clock and of CPU time (all threads).
   std::int64_t rays_traced = 0;

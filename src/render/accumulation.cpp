@@ -3,8 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/light_sampling.hpp"
 #include "penumbra/shadow/light_view.hpp"
-#include "reference/light_sampling.hpp"
 #include "render/accumulator.hpp"
 
 namespace penumbra {
@@ -13,8 +13,10 @@ SourceSample source_sample(const Light& light, const ShadowSettings& shadow, int
                            int pattern) {
   SourceSample s;
   s.light = light;
-  const glm::vec2 u = cmj_sample(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n),
-                                 static_cast<std::uint32_t>(pattern));
+  const glm::vec2 u =
+      stratified_sample(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n),
+                        static_cast<std::uint32_t>(pattern))
+          .point;
   const glm::vec3 direction = glm::normalize(light.direction);
   // The shadow map's axes (as glm::lookAt builds them), so the square
   // lines up with the traced reference's.
@@ -62,11 +64,16 @@ void render_subframe(Renderer& renderer, const std::vector<Light>& lights,
   }
   renderer.set_lights(moved);
   subframe.subframe = k;
-  // Every light takes the same pattern, so the shaders' one point is
-  // each spot light's.
-  const glm::vec2 u = cmj_sample(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n), 0u);
-  subframe.subframe_u = u.x;
-  subframe.subframe_v = u.y;
+  // Every light takes the same pattern, so the shaders' one point and
+  // cell are each spot light's.
+  const CellSample sample =
+      stratified_sample(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n), 0u);
+  const SquareCell& cell = sample.cell;
+  subframe.subframe_u = sample.point.x;
+  subframe.subframe_v = sample.point.y;
+  subframe.subframe_cell = {cell.origin.x, cell.origin.y, cell.size.x, cell.size.y};
+  subframe.subframe_cell_index = {static_cast<int>(cell.column), static_cast<int>(cell.columns),
+                                  static_cast<int>(cell.row), static_cast<int>(cell.rows)};
   renderer.render(render, subframe, ssao, profiler);
 }
 

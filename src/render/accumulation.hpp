@@ -11,8 +11,12 @@
 // lighting shader's accumulate_source_weight), so it estimates the same
 // ratio of irradiances; the other camera views are plain means.
 //
-// The points are stratified (correlated multi-jittered, Kensler 2013, one
-// fixed pattern), so every run gives the same image.
+// The points are stratified, one in each of N cells of equal area that
+// partition the source's square for any N (square_cell in
+// core/light_sampling.hpp), multi-jittered (Kensler 2013) with one fixed
+// pattern, so every run gives the same image; a spot light's hard test
+// dithers each pixel's rays over the sub-frame's cell, so the N sub-frames
+// cover the whole source once.
 #include <glm/glm.hpp>
 
 #include <vector>

@@ -23,7 +23,7 @@ namespace penumbra {
 static_assert(sizeof(gpu::GpuLight) == 6 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuShadowView) == 3 * 64 + 2 * 16, "GpuShadowView must match std140");
 static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
-static_assert(sizeof(gpu::GpuShadow) == 112, "GpuShadow must match std140");
+static_assert(sizeof(gpu::GpuShadow) == 144, "GpuShadow must match std140");
 
 namespace {
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
+#include <sstream>
 
 #include "penumbra/error.hpp"
 #include "scene/model.hpp"
@@ -153,6 +154,15 @@ Scene framed_model_scene(const std::string& path) {
     throw RuntimeError(path + ": the model has no extent (every vertex is at one point)");
   }
   const float scale = kFramedModelSize / largest;
+  // Finite coordinates near float's limit (3.4e38) overflow the framing:
+  // the bounding sphere, or a scale too small for a normal float (which a
+  // GPU flushes to zero), would leave nothing in view.
+  if (!std::isfinite(glm::length(extent)) || !std::isnormal(scale)) {
+    std::ostringstream what;
+    what << path << ": coordinates span " << largest
+         << " units, too large to frame (a float's range ends at 3.4e+38)";
+    throw RuntimeError(what.str());
+  }
   model.scale = glm::vec3(scale);
   // Centred over the origin, its lowest point on the ground.
   model.position = {-scale * b.center().x, -scale * b.min.y, -scale * b.center().z};

@@ -52,7 +52,12 @@ GltfExtensions read_gltf_extensions(const std::string& path) {
   try {
     root = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw RuntimeError(path + ": not valid glTF JSON: " + e.what());
+    // Without nlohmann's "[json.exception.parse_error.101] " tag.
+    std::string what = e.what();
+    if (what.starts_with("[json.exception.") && what.find("] ") != std::string::npos) {
+      what.erase(0, what.find("] ") + 2);
+    }
+    throw RuntimeError(path + ": not valid glTF JSON: " + what);
   }
   if (!root.is_object()) throw RuntimeError(path + ": not valid glTF JSON: not an object");
   return {names(root, "extensionsUsed"), names(root, "extensionsRequired")};

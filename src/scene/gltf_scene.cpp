@@ -87,17 +87,25 @@ Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& note
   if (model.lights.empty()) {
     scene.lights = framing_lights(model.bounds);
   } else {
+    // The dropped lights named up to a few, then counted: a file with
+    // thousands of lights still gets one short warning line.
+    constexpr std::size_t kNamed = 3;
     std::string dropped;
+    std::size_t dropped_count = 0;
     for (std::size_t i = 0; i < model.lights.size(); ++i) {
       if (static_cast<int>(i) < kMaxSceneLights) {
         scene.lights.push_back(model.lights[i].light);
-      } else {
+      } else if (dropped_count++ < kNamed) {
         dropped += (dropped.empty() ? "'" : ", '") + model.lights[i].name + "'";
       }
     }
+    if (dropped_count > kNamed) {
+      dropped += " and " + std::to_string(dropped_count - kNamed) + " more";
+    }
     if (!dropped.empty()) {
       notes.warnings.push_back(path + ": penumbra draws at most " +
-                               std::to_string(kMaxSceneLights) + " lights; dropped " + dropped);
+                               std::to_string(kMaxSceneLights) + " lights; dropped " +
+                               std::to_string(dropped_count) + ": " + dropped);
     }
   }
   return scene;

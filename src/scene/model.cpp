@@ -28,6 +28,7 @@
 #include "core/child_process.hpp"
 #include "penumbra/error.hpp"
 #include "scene/direct_readers.hpp"
+#include "scene/gltf_extensions.hpp"
 #include "scene/gltf_lights.hpp"
 #include "scene/smooth_normals.hpp"
 #include "scene/texture.hpp"
@@ -76,9 +77,17 @@ std::string one_line(std::string text) {
 
 // Assimp catches std::bad_alloc and reports it as its error text; it is
 // rethrown, so the reader reports the memory limit.
+bool has_extension(const std::string& path, const char* extension);
+
 [[noreturn]] void fail_import(const std::string& path, const Assimp::Importer& importer) {
   const std::string error = one_line(importer.GetErrorString());
   if (error.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
+  // Assimp says "no suitable reader found" for a glTF whose JSON (or GLB
+  // header) it cannot parse: say what is wrong with it instead.
+  if (error.find("No suitable reader") != std::string::npos &&
+      (has_extension(path, ".gltf") || has_extension(path, ".glb"))) {
+    read_gltf_extensions(path);  // throws "<path>: not valid glTF JSON: ..."
+  }
   fail(path, "cannot read the model: " + error);
 }
 
@@ -227,6 +236,14 @@ class TextureReader {
         }
         image = std::move(raw);
       }
+    } else if (reference.empty() || reference.starts_with("data:")) {
+      // Assimp embeds base64 data URIs (above); it hands any other data:
+      // URI on as it is (or as an empty name), which is not a file beside
+      // the scene, so it is not looked for there.
+      name = model_path_ + ": a texture";
+      error =
+          "its image is a data: URI that is not base64 (or has no name), which penumbra "
+          "does not read";
     } else {
       // OBJ files written on Windows separate folders with backslashes.
       std::string relative = reference;
@@ -236,6 +253,11 @@ class TextureReader {
       std::error_code ec;
       if (!fs::is_regular_file(file, ec)) {
         error = fs::exists(file, ec) ? "is not a regular file" : "no such file";
+      } else if (fs::file_size(file, ec) > kMaxTextureFileBytes) {
+        // Refused unread: an image file that large would take the model
+        // reader's memory before it could be decoded (and refused).
+        error = "the file is larger than the " + std::to_string(kMaxTextureFileBytes >> 20) +
+                " MiB penumbra reads for a texture";
       } else {
         image = read_texture(file.string(), error);
       }
@@ -496,9 +518,25 @@ void read_cameras_and_lights(const aiScene& scene, Model& model) {
     out.camera.position = position;
     out.camera.target = position + forward / length;
     out.camera.up = glm::normalize(up);
+    out.orthographic = in.mOrthographicWidth > 0.0f;
     // Assimp 5.2 stores glTF's yfov times aspectRatio as the horizontal
     // field of view (and the aspect ratio, 0 when the file gives none).
+    // glTF requires yfov > 0 and aspectRatio > 0; a field of view outside
+    // the 1 to 170 degrees penumbra renders (--camera-fov's range) would
+    // show a blank image, so such a camera is an error naming it.
+    const std::string camera = "camera '" + out.name + "'";
+    if (!out.orthographic && (!std::isfinite(in.mAspect) || in.mAspect < 0.0f)) {
+      std::ostringstream what;
+      what << camera << ": aspectRatio " << in.mAspect << " is not a positive number";
+      fail(model.path, what.str());
+    }
     const float yfov = in.mAspect > 0.0f ? in.mHorizontalFOV / in.mAspect : in.mHorizontalFOV;
+    if (!out.orthographic && !(glm::degrees(yfov) >= 1.0f && glm::degrees(yfov) <= 170.0f)) {
+      std::ostringstream what;
+      what << camera << ": yfov " << yfov << " radians (" << glm::degrees(yfov)
+           << " degrees) is outside the 1 to 170 degrees penumbra renders";
+      fail(model.path, what.str());
+    }
     out.camera.fov_y_degrees = std::clamp(glm::degrees(yfov), 1.0f, 170.0f);
     if (std::isfinite(in.mClipPlaneNear) && in.mClipPlaneNear > 0.0f) {
       out.camera.near_plane = in.mClipPlaneNear;
@@ -506,7 +544,6 @@ void read_cameras_and_lights(const aiScene& scene, Model& model) {
     if (std::isfinite(in.mClipPlaneFar) && in.mClipPlaneFar > out.camera.near_plane) {
       out.camera.far_plane = in.mClipPlaneFar;
     }
-    out.orthographic = in.mOrthographicWidth > 0.0f;
     model.cameras.push_back(out);
   }
   for (unsigned i = 0; i < scene.mNumLights; ++i) {

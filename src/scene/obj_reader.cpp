@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "io/buffered_file.hpp"
@@ -191,6 +192,25 @@ class ObjParser {
     return plain_ ? out_.mesh.vertices.size() : positions_.size();
   }
 
+  // The float a decimal [p, next) that from_chars found out of float's
+  // range stands for: a magnitude too small for a float (below about
+  // 1.4e-45) reads as a signed zero, as assimp and strtof read it; one too
+  // large is infinite, and is refused as not finite.
+  static float out_of_float_range(const char* p, const char* next) {
+    const bool negative = *p == '-';
+    double value = 0.0;
+    const auto [ignored, error] = std::from_chars(p, next, value);
+    if (error == std::errc() && std::abs(value) <= std::numeric_limits<float>::max()) {
+      return static_cast<float>(value);  // a denormal, or zero
+    }
+    // Beyond double's range too: its exponent's sign says which way.
+    const std::string_view text(p, static_cast<std::size_t>(next - p));
+    const bool tiny =
+        text.find("e-") != std::string_view::npos || text.find("E-") != std::string_view::npos;
+    const float magnitude = tiny ? 0.0f : std::numeric_limits<float>::infinity();
+    return negative ? -magnitude : magnitude;
+  }
+
   // Up to `max` numbers from p to the end of the line into out; returns how
   // many the line has (more than max: max + 1). A word that is not a
   // number fails.
@@ -203,7 +223,7 @@ class ObjParser {
       if (*p == '+') ++p;
       const auto [next, error] = std::from_chars(p, end, out[n]);
       if (error == std::errc::result_out_of_range) {
-        out[n] = std::numeric_limits<float>::infinity();
+        out[n] = out_of_float_range(p, next);
       } else if (error != std::errc() || (next < end && !blank(*next))) {
         const char* word_end = p;
         while (word_end < end && !blank(*word_end)) ++word_end;

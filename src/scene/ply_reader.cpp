@@ -19,6 +19,9 @@ namespace {
 
 struct NeedsAssimp {};
 
+// The longest header line read (a comment, in practice).
+constexpr std::size_t kMaxHeaderLine = std::size_t{1} << 20;
+
 // Bytes of a PLY scalar type, 0 for an unknown name.
 std::size_t type_size(const std::string& type) {
   if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
@@ -58,15 +61,21 @@ struct Header {
 };
 
 // Reads the header, or throws NeedsAssimp for a file this reader leaves to assimp.
-Header read_header(BufferedFile& file) {
+Header read_header(const std::string& path, BufferedFile& file) {
+  int number = 0;
   const auto line = [&] {
     std::string text;
+    ++number;
     for (;;) {
       const char* c = file.take(1);
       if (c == nullptr) throw NeedsAssimp{};  // no end_header: assimp's error
       if (*c == '\n') break;
       text += *c;
-      if (text.size() > (1u << 20)) throw NeedsAssimp{};
+      // Said here: assimp would call it a header without end_header.
+      if (text.size() > kMaxHeaderLine) {
+        throw RuntimeError(path + ": header line " + std::to_string(number) +
+                           " is longer than 1 MiB");
+      }
     }
     if (!text.empty() && text.back() == '\r') text.pop_back();
     return text;
@@ -274,7 +283,7 @@ DirectMesh read_body(const std::string& path, BufferedFile& file, const Header& 
 std::optional<DirectMesh> read_ply_directly(const std::string& path) {
   BufferedFile file(path);
   try {
-    const Header header = read_header(file);
+    const Header header = read_header(path, file);
     return read_body(path, file, header);
   } catch (const NeedsAssimp&) {
     return std::nullopt;

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/display_name.hpp"
 #include "io/bounded_read.hpp"
 #include "penumbra/error.hpp"
 #include "scene/builtin_scenes.hpp"
@@ -31,7 +32,9 @@ class Reader {
   }
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw RuntimeError(origin_ + ": " + (path.empty() ? "/" : path) + ": " + what);
+    // The file's name escaped (core/display_name.hpp): a newline in it
+    // must not split the one-line error.
+    throw RuntimeError(escape_control(origin_) + ": " + (path.empty() ? "/" : path) + ": " + what);
   }
 
   [[nodiscard]] std::string child(const std::string& key) const { return path_ + "/" + key; }

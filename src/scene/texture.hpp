@@ -13,9 +13,15 @@
 
 namespace penumbra {
 
-// The largest texture side decoded: a 16k texture is 1 GiB of RGBA8; a
-// file that claims more is refused (with a warning, as unreadable).
-inline constexpr int kMaxTextureSide = 16384;
+// The largest texture side decoded: 8192 texels, 256 MiB of RGBA8 (the
+// model reader's memory floor, model.hpp, leaves room for stb_image to
+// decode one; a 16k texture would take 1 GiB and twice that decoding). A
+// file that claims more is refused with a warning and the material's flat
+// colour, read no further.
+inline constexpr int kMaxTextureSide = 8192;
+// The largest image file read for a texture, refused unread beyond: an
+// image of kMaxTextureSide texels a side takes less even uncompressed.
+inline constexpr std::uintmax_t kMaxTextureFileBytes = std::uintmax_t{512} << 20;
 
 // Decodes a PNG, JPEG, TGA, BMP, ... file held in memory. On failure,
 // nullopt and `error` says why.

@@ -83,6 +83,14 @@ gpu::GpuShadow gpu_shadow_params(const ShadowSettings& shadow) {
   block.accumulate_normal_y = shadow.subframe_normal[1];
   block.accumulate_normal_z = shadow.subframe_normal[2];
   block.accumulate_frame = shadow.subframe;
+  block.accumulate_cell_x = shadow.subframe_cell[0];
+  block.accumulate_cell_y = shadow.subframe_cell[1];
+  block.accumulate_cell_width = shadow.subframe_cell[2];
+  block.accumulate_cell_height = shadow.subframe_cell[3];
+  block.accumulate_column = shadow.subframe_cell_index[0];
+  block.accumulate_columns = shadow.subframe_cell_index[1];
+  block.accumulate_row = shadow.subframe_cell_index[2];
+  block.accumulate_rows = shadow.subframe_cell_index[3];
   block.evsm_positive = shadow.evsm_positive;
   block.evsm_negative = shadow.evsm_negative;
   return block;

@@ -215,6 +215,31 @@ TEST(Compare, SoftMomentShadows) {
   expect_compare_error("--soft --techniques esm --filter all", 2, "--soft");
 }
 
+// compare takes render's camera flags: the view measured is the one given
+// (echoed in the JSON), not the scene's own; a degenerate camera is a
+// usage error before anything is written.
+TEST(Compare, MeasuresTheCameraGiven) {
+  const auto measure = [](const std::string& camera) {
+    const std::string json_path = out_path("compare-camera.json");
+    const Result r = run("compare " + kSmall + "--techniques hard --light-size 0 --no-cache " +
+                         camera + " --json " + json_path);
+    EXPECT_EQ(r.status, 0) << camera << "\n" << r.err;
+    std::ifstream in(json_path);
+    return nlohmann::json::parse(in);
+  };
+  const nlohmann::json scene_camera = measure("");
+  const nlohmann::json given =
+      measure("--camera-position 3,4,5 --camera-target 0,0.5,0 --camera-fov 30");
+  EXPECT_EQ(given["camera"]["position"], nlohmann::json({3.0, 4.0, 5.0}));
+  EXPECT_EQ(given["camera"]["target"], nlohmann::json({0.0, 0.5, 0.0}));
+  EXPECT_EQ(given["camera"]["fov_y_degrees"], 30.0);
+  EXPECT_NE(scene_camera["camera"], given["camera"]);
+  EXPECT_NE(scene_camera["reference"]["pixels"], given["reference"]["pixels"])
+      << "the same pixels judged from another camera";
+  expect_compare_error("--camera-position 1,2,3 --camera-target 1,2,3", 2, "--camera-position");
+  expect_compare_error("--camera-fov 0", 2, "--camera-fov");
+}
+
 TEST(Compare, HelpListsItsOptions) {
   Result r = run("compare --help");
   EXPECT_EQ(r.status, 0);

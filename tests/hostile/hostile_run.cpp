@@ -55,12 +55,12 @@ std::string fresh_dir(const std::string& name) {
   return dir.string();
 }
 
-pid_t spawn(const std::vector<std::string>& args, int stdout_fd) {
+pid_t spawn(const std::vector<std::string>& args, int stdout_fd, int stderr_fd) {
   const pid_t pid = fork();
   if (pid == 0) {
     const int null = open("/dev/null", O_RDWR);
     dup2(stdout_fd >= 0 ? stdout_fd : null, 1);
-    dup2(null, 2);
+    dup2(stderr_fd >= 0 ? stderr_fd : null, 2);
     std::vector<char*> argv;
     std::string program = PENUMBRA_BINARY;
     argv.push_back(program.data());

@@ -24,9 +24,9 @@ Result shell(const std::string& line);
 // A fresh, empty folder for one test.
 std::string fresh_dir(const std::string& name);
 
-// Starts the binary with `args`, its stdout on `stdout_fd` (-1: /dev/null)
-// and its stderr on /dev/null; returns its process id.
-pid_t spawn(const std::vector<std::string>& args, int stdout_fd = -1);
+// Starts the binary with `args`, its stdout on `stdout_fd` and its stderr
+// on `stderr_fd` (-1: /dev/null); returns its process id.
+pid_t spawn(const std::vector<std::string>& args, int stdout_fd = -1, int stderr_fd = -1);
 
 // The process ids whose parent is `parent`.
 std::vector<pid_t> children_of(pid_t parent);

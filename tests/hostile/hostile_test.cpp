@@ -16,7 +16,9 @@
 #include <string>
 #include <thread>
 
+#include "gltf_files.hpp"
 #include "hostile/hostile_run.hpp"
+#include "model_files.hpp"
 
 namespace penumbra::hostile {
 namespace {
@@ -253,6 +255,261 @@ TEST(Hostile, InterruptedFolderOutputLeavesNothing) {
   EXPECT_TRUE(fs::is_empty(dir)) << "left behind: " << fs::directory_iterator(dir)->path();
 }
 
+// 11b. A crash (a failed assert inside a library raises SIGABRT; a driver
+// may die of SIGSEGV, SIGBUS or SIGFPE) ends every long-running command
+// with one "internal error" line, no staged folder or file left, and the
+// signal itself as the exit status. The signal is sent from outside once
+// the command is under way, as a crash would come.
+TEST(Hostile, CrashSignalsEndInOneLineAndLeaveNothing) {
+  struct Case {
+    std::vector<std::string> args;  // "OUT" stands for the output path
+    int signal;
+    bool stages;  // whether it writes a staged folder to wait for
+  };
+  const std::vector<Case> cases = {
+      {{"report", "--quick", "-o", "OUT"}, SIGABRT, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGSEGV, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGBUS, true},
+      {{"report", "--quick", "-o", "OUT"}, SIGFPE, true},
+      {{"compare", "--techniques", "hard,pcf,pcss,vsm,msm", "--width", "320", "--height", "180",
+        "--no-cache", "-o", "OUT", "--json", "OUT.json"},
+       SIGABRT,
+       true},
+      {{"bench", "--frames", "100000", "--width", "64", "--height", "36", "--json", "OUT.json"},
+       SIGABRT,
+       false},
+  };
+  for (const Case& c : cases) {
+    const std::string dir = fresh_dir("crash");
+    const std::string log = fresh_dir("crash_log") + "/stderr.txt";
+    std::vector<std::string> args = c.args;
+    for (std::string& a : args) {
+      if (a.rfind("OUT", 0) == 0) a = dir + "/out" + a.substr(3);
+    }
+    const int err = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(err, 0);
+    const pid_t penumbra = spawn(args, -1, err);
+    close(err);
+    auto staged_files = [&] {
+      for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.is_directory() && !fs::is_empty(entry.path())) return true;
+      }
+      return false;
+    };
+    const bool started =
+        c.stages ? eventually(staged_files, 120s) : (std::this_thread::sleep_for(3s), true);
+    kill(penumbra, c.signal);
+    int status = 0;
+    waitpid(penumbra, &status, 0);
+    const std::string what = args[0] + " with signal " + std::to_string(c.signal);
+    ASSERT_TRUE(started) << what << ": wrote nothing within 120 s";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == c.signal)
+        << what << ": status " << status;
+    EXPECT_TRUE(fs::is_empty(dir)) << what << " left " << fs::directory_iterator(dir)->path();
+    // Progress lines may come first; the error is one line, the last.
+    const std::string text = read_text(log);
+    const std::size_t last = text.rfind('\n', text.size() >= 2 ? text.size() - 2 : 0);
+    const std::string last_line = text.substr(last == std::string::npos ? 0 : last + 1);
+    EXPECT_TRUE(
+        one_error_line(last_line, "internal error (signal " + std::to_string(c.signal) + ": "))
+        << what << ":\n"
+        << text;
+    EXPECT_NE(last_line.find("please report it"), std::string::npos) << what << ":\n" << text;
+    EXPECT_EQ(text.find("penumbra: error"), text.rfind("penumbra: error")) << what << ":\n" << text;
+  }
+}
+
+// 11c. Coordinates at the edges of float's range: decimals too small for
+// a float read as zero (as assimp reads them), and finite coordinates near
+// 3.4e38, in OBJ or PLY, are one error naming the file rather than a blank
+// image.
+TEST(Hostile, ModelCoordinatesAtTheEdgesOfFloat) {
+  const std::string dir = fresh_dir("float_edges");
+  const std::string tiny = dir + "/tiny.obj";
+  write_text(tiny, "v 1e-50 0 0\nv 1 -2.5e-47 0\nv 0 1 1e-400\nf 1 2 3\n");
+  const Result read =
+      shell("timeout 60 PENUMBRA render --model " + tiny + kSmall + " -o " + dir + "/tiny.png");
+  EXPECT_EQ(read.status, 0) << read.err;
+  EXPECT_TRUE(fs::exists(dir + "/tiny.png"));
+
+  const std::string huge_obj = dir + "/huge.obj";
+  write_text(huge_obj, "v 0 0 0\nv 3.4e38 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string huge_ply = dir + "/huge.ply";
+  write_text(huge_ply,
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+             "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+             "end_header\n0 0 0\n3.4e38 0 0\n0 3.4e38 0\n3 0 1 2\n");
+  for (const std::string& model : {huge_obj, huge_ply}) {
+    const Result r =
+        shell("timeout 60 PENUMBRA render --model " + model + kSmall + " -o " + dir + "/huge.png");
+    EXPECT_EQ(r.status, 1) << model << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, model + ": coordinates span")) << r.err;
+    EXPECT_NE(r.err.find("too large to frame"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/huge.png"));
+  }
+}
+
+// 11c2. A PLY header line over the reader's 1 MiB limit (a huge comment)
+// is said as such, not as a header without end_header.
+TEST(Hostile, LongPlyHeaderLineIsSaid) {
+  const std::string dir = fresh_dir("ply_comment");
+  const std::string ply = dir + "/comment.ply";
+  write_text(ply, "ply\nformat binary_little_endian 1.0\ncomment " +
+                      std::string((1u << 20) + 10, 'c') +
+                      "\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+                      "z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n");
+  const Result r =
+      shell("timeout 60 PENUMBRA render --model " + ply + kSmall + " -o " + dir + "/x.png");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(one_error_line(r.err, ply + ": header line 3 is longer than 1 MiB")) << r.err;
+}
+
+// 11d. A glTF camera glTF itself forbids (yfov <= 0, a negative
+// aspectRatio) or whose field of view penumbra cannot show (under 1 or
+// over 170 degrees) is one error naming the file, the camera and the
+// value, not a blank image.
+TEST(Hostile, DegenerateGltfCamerasAreErrors) {
+  const std::string dir = fresh_dir("gltf_cameras");
+  struct Case {
+    float yfov, aspect_ratio;
+    std::string culprit;
+  };
+  for (const Case& c : {Case{0.0f, 0.0f, "yfov 0 radians"}, Case{1e-6f, 0.0f, "yfov 1e-06"},
+                        Case{-0.5f, 0.0f, "yfov -0.5"}, Case{3.2f, 0.0f, "yfov 3.2"},
+                        Case{0.8f, -1.5f, "aspectRatio -1.5"}}) {
+    testing::GltfSpec spec;
+    spec.materials.push_back({});
+    spec.quads.push_back({{{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}}});
+    testing::GltfCameraSpec camera;
+    camera.position = {0.0f, 2.0f, 3.0f};
+    camera.target = {0.0f, 0.0f, 0.0f};
+    camera.yfov = c.yfov;
+    camera.aspect_ratio = c.aspect_ratio;
+    spec.cameras.push_back(camera);
+    const std::string path = testing::write_gltf("hostile-camera.gltf", spec);
+    const Result r =
+        shell("timeout 60 PENUMBRA render --scene " + path + kSmall + " -o " + dir + "/camera.png");
+    EXPECT_EQ(r.status, 1) << c.culprit << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, path + ": camera '")) << r.err;
+    EXPECT_NE(r.err.find(c.culprit), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/camera.png"));
+  }
+}
+
+// 11e. Whole numbers are decimal digits: hex (0x10), octal-looking (010
+// is ten, not eight), exponents (1e3) and fractions are read or refused
+// the same way for every integer option.
+TEST(Hostile, WholeNumbersAreDecimal) {
+  for (const std::string option : {"--accumulate", "--width", "--blur", "--camera-index"}) {
+    for (const std::string value : {"0x10", "1e3", "5.0", "' 5'"}) {
+      const Result r = shell("timeout 60 PENUMBRA render " + option + " " + value + " -o x.png");
+      EXPECT_EQ(r.status, 2) << option << " " << value << "\n" << r.err;
+      EXPECT_TRUE(one_error_line(r.err, option + ": ")) << r.err;
+      EXPECT_NE(r.err.find("is not a whole number in decimal digits"), std::string::npos) << r.err;
+    }
+  }
+  // 010 is ten: 10 sub-frames where CLI11 alone would run 8 (bench says).
+  const Result bench = shell(
+      "timeout 120 PENUMBRA bench --technique hard --accumulate 010 "
+      "--frames 1 --warmup 0" +
+      kSmall);
+  EXPECT_EQ(bench.status, 0) << bench.err;
+  EXPECT_NE(bench.out.find("10 sub-frames"), std::string::npos) << bench.out;
+}
+
+// 11e2. Textures penumbra will not decode: a PNG whose header claims more
+// than 8192 texels a side, an image file of 8 GiB (sparse), a data: URI
+// that is not base64. Each is one warning naming it, the material keeps
+// its flat colour, and the scene draws.
+TEST(Hostile, OversizedTexturesAreWarningsNotFailures) {
+  // A PNG signature and an IHDR chunk of 11585 x 11585 RGBA: what
+  // stb_image reads for the size (the pixels never come).
+  std::string png = "\x89PNG\r\n\x1a\n";
+  png += std::string("\0\0\0\x0d", 4) + "IHDR";
+  png += std::string("\0\0\x2d\x41\0\0\x2d\x41\x08\x06\0\0\0", 13);
+  png += std::string("\0\0\0\0", 4);
+  testing::write_model_file("hostile-huge-texture.png", png);
+  const std::string sparse = testing::write_model_file("hostile-sparse-texture.png", "");
+  fs::resize_file(sparse, std::uintmax_t{8} << 30);
+  testing::GltfSpec spec;
+  for (const std::string image :
+       {"hostile-huge-texture.png", "hostile-sparse-texture.png", "data:image/png,notbase64"}) {
+    testing::GltfMaterialSpec material;
+    material.image = image;
+    material.base_color = {0.5f, 0.6f, 0.7f, 1.0f};
+    spec.materials.push_back(material);
+  }
+  for (int q = 0; q < 3; ++q) {
+    const float x = static_cast<float>(q) * 2.0f;
+    spec.quads.push_back({{{x - 1, 0, 1}, {x + 1, 0, 1}, {x + 1, 0, -1}, {x - 1, 0, -1}}, q});
+  }
+  const std::string path = testing::write_gltf("hostile-textures.gltf", spec);
+  const std::string dir = fresh_dir("textures");
+  const Result r = shell("timeout 120 PENUMBRA render --scene " + path + kSmall + " -o " + dir +
+                         "/textures.png");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/textures.png"));
+  for (const std::string said :
+       {"11585x11585 is larger than 8192 texels a side; using the material's flat colour",
+        "hostile-sparse-texture.png: the file is larger than the 512 MiB",
+        "data: URI that is not base64"}) {
+    EXPECT_NE(r.err.find(said), std::string::npos) << said << "\n" << r.err;
+  }
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 3) << r.err;
+  fs::remove(sparse);
+}
+
+// 11e3. A glTF whose JSON is malformed, holds NaN or overflows a double,
+// or a GLB without its JSON chunk: one error saying what is wrong, not
+// assimp's "no suitable reader found".
+TEST(Hostile, MalformedGltfIsSaidAsSuch) {
+  const std::string dir = fresh_dir("malformed_gltf");
+  struct Case {
+    std::string name, content, said;
+  };
+  for (const Case& c : {Case{"cut.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"scenes\": [",
+                             "not valid glTF JSON: parse error"},
+                        Case{"nan.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"x\": NaN}",
+                             "not valid glTF JSON: parse error"},
+                        Case{"huge.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"x\": 1e400}",
+                             "not valid glTF JSON: number overflow"},
+                        Case{"bad.glb", std::string("glTF\x02\0\0\0\x20\0\0\0garbagegarbage", 26),
+                             "the binary glTF has no JSON chunk"}}) {
+    const std::string path = dir + "/" + c.name;
+    write_text(path, c.content);
+    for (const std::string how : {"--scene", "--model"}) {
+      const Result r = shell("timeout 60 PENUMBRA render " + how + " " + path + kSmall + " -o " +
+                             dir + "/x.png");
+      EXPECT_EQ(r.status, 1) << c.name << "\n" << r.err;
+      EXPECT_TRUE(one_error_line(r.err, path + ": " + c.said)) << r.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir + "/x.png"));
+}
+
+// 11f. A glTF with thousands of lights: the lights penumbra cannot draw
+// are counted in one short warning, not listed by the thousand.
+TEST(Hostile, ManyGltfLightsAreOneShortWarning) {
+  testing::GltfSpec spec;
+  spec.materials.push_back({});
+  spec.quads.push_back({{{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}}});
+  for (int i = 0; i < 2000; ++i) {
+    testing::GltfLightSpec light;
+    light.name = "light" + std::to_string(i);
+    light.type = "point";
+    light.position = {0.0f, 2.0f + 1e-4f * static_cast<float>(i), 0.0f};
+    spec.lights.push_back(light);
+  }
+  const std::string path = testing::write_gltf("hostile-many-lights.gltf", spec);
+  const std::string dir = fresh_dir("many_lights");
+  const Result r =
+      shell("timeout 120 PENUMBRA render --scene " + path + kSmall + " -o " + dir + "/lights.png");
+  EXPECT_EQ(r.status, 0) << r.err.substr(0, 1000);
+  EXPECT_LT(r.err.size(), 1000u) << r.err.substr(0, 1000);
+  EXPECT_NE(r.err.find(" more"), std::string::npos) << r.err.substr(0, 1000);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err.substr(0, 1000);
+}
+
 // 12. Empty values are usage errors, not "not given".
 TEST(Hostile, EmptyValuesAreUsageErrors) {
   const std::string dir = fresh_dir("empty");
@@ -341,6 +598,14 @@ TEST(Hostile, MessagesAreOneCleanLine) {
       shell("timeout 20 PENUMBRA render --scene \"$(printf 'bad\\n\\033[31m.json')\" -o x.png");
   EXPECT_EQ(name.status, 1);
   EXPECT_TRUE(one_error_line(name.err, "'bad\\n\\x1b[31m.json'")) << name.err;
+  // The same name in front of a JSON path inside the file.
+  const std::string named = fresh_dir("control_name");
+  const Result path = shell("cd " + named +
+                            " && f=\"$(printf 'bad\\nname.json')\" && echo "
+                            "'{\"lights\": [{\"type\": \"nope\"}]}' > \"$f\" && timeout 20 "
+                            "PENUMBRA render --scene \"$f\" -o x.png");
+  EXPECT_EQ(path.status, 1) << path.err;
+  EXPECT_TRUE(one_error_line(path.err, "bad\\nname.json: /lights/0/type: ")) << path.err;
 
   const std::string dir = fresh_dir("cache_folder");
   const std::string compare =
@@ -354,6 +619,12 @@ TEST(Hostile, MessagesAreOneCleanLine) {
   EXPECT_EQ(std::count(folder.err.begin(), folder.err.end(), '\n'), 1) << folder.err;
   EXPECT_NE(folder.err.find("it is a folder"), std::string::npos) << folder.err;
   EXPECT_EQ(folder.err.find("Success"), std::string::npos) << folder.err;
+
+  // A cache folder Mesa cannot make: no shader-cache chatter on stderr.
+  const Result cache = shell("HOME=/proc XDG_CACHE_HOME=/proc/none timeout 60 PENUMBRA render" +
+                             kSmall + " -o " + fresh_dir("no_cache_home") + "/x.png");
+  EXPECT_EQ(cache.status, 0) << cache.err;
+  EXPECT_TRUE(cache.err.empty()) << cache.err;
 
   // Too little memory for the driver to load: one line, no loader chatter.
   const Result egl = shell("ulimit -v 150000; timeout 60 PENUMBRA render" + kSmall + " -o x.png");

@@ -1,7 +1,8 @@
 // Correlated multi-jittered sampling keeps its stratification (Kensler
 // 2013): one point per 1/N column in y for any N, and where N = m n, one
-// per cell of the m x n grid and one per 1/N column in x too.
-#include "reference/light_sampling.hpp"
+// per cell of the m x n grid and one per 1/N column in x too; the
+// equal-area cells of square_cell hold one sample each for any N.
+#include "core/light_sampling.hpp"
 
 #include <gtest/gtest.h>
 
@@ -74,6 +75,72 @@ TEST(LightSampling, PointSetHoldsTheSamePointsAsCmjSample) {
       EXPECT_EQ(listed, sampled) << "n " << n << " pattern " << pattern;
     }
   }
+}
+
+// The cells of square_cell partition the square for every count: each
+// has area 1/n and lies inside the square, and every point of a fine grid
+// over the square lies in exactly one of them (no gap, no overlap). The
+// cells stay near square.
+TEST(LightSampling, SquareCellsPartitionTheSquareForAnyCount) {
+  std::vector<std::uint32_t> counts;
+  for (std::uint32_t n = 1; n <= 80; ++n) counts.push_back(n);
+  for (std::uint32_t n : {127u, 128u, 255u, 1000u}) counts.push_back(n);
+  constexpr int kGrid = 97;  // points off the cells' edges
+  for (std::uint32_t n : counts) {
+    std::vector<SquareCell> cells;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const SquareCell c = square_cell(i, n);
+      EXPECT_NEAR(c.size.x * c.size.y, 1.0f / static_cast<float>(n), 1e-6f) << n << " " << i;
+      EXPECT_GE(c.origin.x, 0.0f);
+      EXPECT_GE(c.origin.y, 0.0f);
+      EXPECT_LE(c.origin.x + c.size.x, 1.0f + 1e-6f);
+      EXPECT_LE(c.origin.y + c.size.y, 1.0f + 1e-6f);
+      EXPECT_LT(c.row, c.rows);
+      EXPECT_LT(c.column, c.columns);
+      const float aspect = c.size.x / c.size.y;
+      EXPECT_LE(std::max(aspect, 1.0f / aspect), 3.0f) << n << " " << i;
+      cells.push_back(c);
+    }
+    for (int gx = 0; gx < kGrid; ++gx) {
+      for (int gy = 0; gy < kGrid; ++gy) {
+        const glm::vec2 p((gx + 0.37f) / kGrid, (gy + 0.61f) / kGrid);
+        int holding = 0;
+        for (const SquareCell& c : cells) {
+          holding += p.x >= c.origin.x && p.x < c.origin.x + c.size.x && p.y >= c.origin.y &&
+                     p.y < c.origin.y + c.size.y;
+        }
+        ASSERT_EQ(holding, 1) << "n " << n << " point " << p.x << ", " << p.y;
+      }
+    }
+  }
+}
+
+// The n stratified samples of a pattern visit every cell of the partition
+// once whatever n is (where Kensler's cmj_sample points leave cells of its
+// m x ceil(n/m) grid empty: n = 10 fills 5 of 6 columns' worth), each
+// point lies in its cell, and the points' x coordinates fill the n columns
+// of width 1/n once.
+TEST(LightSampling, StratifiedSamplesVisitEveryCellOnce) {
+  for (std::uint32_t n : {1u, 2u, 3u, 5u, 9u, 10u, 12u, 16u, 30u, 32u, 35u, 64u, 99u, 1000u}) {
+    for (std::uint32_t pattern : {0u, 7u, 0xdeadbeefu}) {
+      std::set<std::pair<float, float>> cells;
+      std::set<std::uint32_t> columns_x;
+      for (std::uint32_t k = 0; k < n; ++k) {
+        const CellSample s = stratified_sample(k, n, pattern);
+        cells.insert({s.cell.origin.x, s.cell.origin.y});
+        const glm::vec2 lo = s.cell.origin - 1e-6f, hi = s.cell.origin + s.cell.size + 1e-6f;
+        EXPECT_TRUE(s.point.x >= lo.x && s.point.x <= hi.x && s.point.y >= lo.y &&
+                    s.point.y <= hi.y)
+            << "n " << n << " k " << k;
+        EXPECT_LT(s.point.x, 1.0f);
+        EXPECT_LT(s.point.y, 1.0f);
+        columns_x.insert(static_cast<std::uint32_t>(s.point.x * static_cast<float>(n)));
+      }
+      EXPECT_EQ(cells.size(), n) << "n " << n << " pattern " << pattern;
+      EXPECT_EQ(columns_x.size(), n) << "n " << n << " pattern " << pattern;
+    }
+  }
+  EXPECT_NE(stratified_sample(0, 16, 0).point, stratified_sample(0, 16, 1).point);
 }
 
 // The cone map is uniform in solid angle: on a 64 x 64 grid of the

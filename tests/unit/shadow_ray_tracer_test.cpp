@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "scene/builtin_scenes.hpp"
@@ -305,6 +306,68 @@ TEST(ShadowRayTracer, RaysStartAboveThePositionErrorBound) {
   const Image image = tracer.trace(s, spot_down(2.0f, 0.0f), 1);
   EXPECT_EQ(image.pixel(0, 0)[0], 1.0f);
   EXPECT_EQ(image.pixel(1, 0)[0], 0.0f);
+}
+
+// Surface points that are not finite, or absurd (far outside the scene, or
+// with an error bound larger than it), are not traced: nothing aborts
+// inside Embree, and they are not judged. Their neighbours, in the same
+// packets, keep their answers. Each case with a point light and with a
+// square one.
+TEST(ShadowRayTracer, NonFiniteAndAbsurdPointsAreNotJudged) {
+  TriangleMesh mesh;
+  add_quad(mesh, -5.0f, 0.0f, -2.5f, 2.5f, 1.0f);  // shadows x < 0
+  add_quad(mesh, -5.0f, 5.0f, -5.0f, 5.0f, 0.0f);  // the ground
+  const ShadowRayTracer tracer(mesh);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  struct Bad {
+    glm::vec3 position, normal;
+    float error;
+  };
+  const std::vector<Bad> bad = {
+      {{nan, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.0f},
+      {{0.5f, inf, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.0f},
+      {{0.5f, 0.0f, -inf}, {0.0f, 1.0f, 0.0f}, 0.0f},
+      {{1e38f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.0f},
+      {{-1e38f, 1e38f, 1e38f}, {0.0f, 1.0f, 0.0f}, 0.0f},
+      {{0.5f, 0.0f, 0.0f}, {nan, 1.0f, 0.0f}, 0.0f},
+      {{0.5f, 0.0f, 0.0f}, {0.0f, inf, 0.0f}, 0.0f},
+      {{0.5f, 0.0f, 0.0f}, {0.0f, 1e38f, 0.0f}, 0.0f},
+      {{0.5f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.0f},
+      {{0.5f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, nan},
+      {{0.5f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, inf},
+      {{0.5f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 1e38f},
+      {{0.5f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 1e3f},
+      {{0.5f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, -1.0f},
+  };
+  // Bad points between good ones: a good point at x = -1 (shadowed) and
+  // x = 1 (lit) before each.
+  SurfacePoints s(static_cast<int>(3 * bad.size()), 1);
+  for (std::size_t b = 0; b < bad.size(); ++b) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      s.position[3 * b + k] = {k == 0 ? -1.0f : 1.0f, 0.0f, 0.1f * static_cast<float>(b)};
+      s.normal[3 * b + k] = {0.0f, 1.0f, 0.0f};
+      s.covered[3 * b + k] = 1;
+    }
+    s.position[3 * b + 2] = bad[b].position;
+    s.normal[3 * b + 2] = bad[b].normal;
+    s.position_error[3 * b + 2] = bad[b].error;
+    s.covered[3 * b + 2] = 1;
+  }
+  EXPECT_EQ(untraceable_points(s, mesh_extent(mesh)), static_cast<long>(bad.size()));
+  for (const float size : {0.0f, 0.3f}) {
+    TraceStats stats;
+    const Image image = tracer.trace(s, spot_down(3.0f, size), 16, {}, &stats);
+    EXPECT_EQ(stats.untraceable, static_cast<long>(bad.size()));
+    for (std::size_t b = 0; b < bad.size(); ++b) {
+      const int x = static_cast<int>(3 * b);
+      EXPECT_EQ(image.pixel(x, 0)[0], 0.0f) << "case " << b << ", size " << size;
+      EXPECT_EQ(image.pixel(x + 1, 0)[0], 1.0f) << "case " << b << ", size " << size;
+      EXPECT_EQ(image.pixel(x + 1, 0)[3], 1.0f) << "case " << b << ", size " << size;
+      EXPECT_EQ(image.pixel(x + 2, 0)[3], 0.0f) << "case " << b << " is judged, size " << size;
+      EXPECT_EQ(image.pixel(x + 2, 0)[0], 0.0f) << "case " << b << ", size " << size;
+    }
+  }
 }
 
 // Rays travel in packets of 16 that mix pixels and rows: every pixel gets

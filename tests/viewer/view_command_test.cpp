@@ -256,6 +256,24 @@ TEST_F(ViewWindow, MapViewMatchesRender) {
 // panel beside it) is made to fit: the view takes what the panel leaves.
 // Nothing changes between the scripted frames, so one is rendered and the
 // rest only drawn.
+// A crash in the window's loop (a failed assert inside a library raises
+// SIGABRT) ends in one "internal error" line and the signal's own status,
+// like every other command's (hostile_test.cpp).
+TEST_F(ViewWindow, ACrashEndsInOneLine) {
+  const std::string err = out("crash-stderr.txt");
+  const std::string script = display() + " " + std::string(PENUMBRA_BINARY) + " view " + kSettings +
+                             " 2>" + err + " & p=$!; sleep 3; kill -ABRT $p; wait $p";
+  const int raw = std::system(("bash -c '" + script + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 128 + SIGABRT);
+  std::ifstream in(err);
+  const std::string text{std::istreambuf_iterator<char>(in), {}};
+  ASSERT_NE(text.find("penumbra: error: internal error (signal 6: "), std::string::npos) << text;
+  EXPECT_EQ(text.find("penumbra: error: internal error (signal 6: "), text.rfind("penumbra: error"))
+      << text;
+  EXPECT_NE(text.find("please report it\n"), std::string::npos) << text;
+}
+
 TEST(ViewSmallScreen, TheWindowFitsAndAnUnchangedFrameIsNotRenderedAgain) {
   const XvfbServer xvfb("1280x720x24");
   ASSERT_TRUE(xvfb.error().empty()) << xvfb.error();

@@ -1,4 +1,4 @@
-#include "reference/light_sampling.hpp"
+#include "core/light_sampling.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -117,6 +117,49 @@ void CmjPointSet::generate(std::uint32_t n, std::uint32_t pattern) {
       points_[s] = cmj_point(s, column_[c], row_[r], n, m, rows, seeds);
     }
   }
+}
+
+SquareCell square_cell(std::uint32_t index, std::uint32_t n) {
+  SquareCell cell;
+  cell.columns = cmj_columns(n);
+  const std::uint32_t fewer = n / cell.columns;  // cells of the narrower columns
+  const std::uint32_t wider = n % cell.columns;  // columns of fewer + 1 cells, first
+  const std::uint32_t in_wider = wider * (fewer + 1);
+  std::uint32_t before = 0;  // cells of the columns to the left
+  if (index < in_wider) {
+    cell.rows = fewer + 1;
+    cell.column = index / cell.rows;
+    before = cell.column * cell.rows;
+  } else {
+    cell.rows = fewer;
+    cell.column = wider + (index - in_wider) / cell.rows;
+    before = in_wider + (cell.column - wider) * cell.rows;
+  }
+  cell.row = index - before;
+  const auto nf = static_cast<float>(n), rows = static_cast<float>(cell.rows);
+  cell.origin = {static_cast<float>(before) / nf, static_cast<float>(cell.row) / rows};
+  cell.size = {rows / nf, 1.0f / rows};
+  return cell;
+}
+
+CellSample stratified_sample(std::uint32_t k, std::uint32_t n, std::uint32_t pattern) {
+  const CmjSeeds seeds(pattern);
+  const std::uint32_t s = permute(k, n, seeds.order);
+  CellSample sample;
+  sample.cell = square_cell(s, n);
+  const SquareCell& c = sample.cell;
+  // The column's cells take distinct 1/n-wide sub-columns of it (each
+  // column its own permutation), the column's m sub-rows of their cells
+  // one each across the columns.
+  const std::uint32_t sub_column = permute(c.row, c.rows, seeds.column + c.column * 0x9e3779b9u);
+  const std::uint32_t sub_row = permute(c.column, c.columns, seeds.row);
+  const float jx = randfloat(s, seeds.jitter_x);
+  const float jy = randfloat(s, seeds.jitter_y);
+  const float x = c.origin.x + (static_cast<float>(sub_column) + jx) / static_cast<float>(n);
+  const float y =
+      c.origin.y + (static_cast<float>(sub_row) + jy) / static_cast<float>(c.columns) * c.size.y;
+  sample.point = glm::min(glm::vec2(x, y), glm::vec2(1.0f - 0x1p-24f));
+  return sample;
 }
 
 glm::vec2 concentric_disk(glm::vec2 u) {

@@ -1,5 +1,7 @@
 #pragma once
-// Stratified points on the unit square for sampling an area light:
+// Stratified points on the unit square for sampling an area light, shared
+// by the renderer (--accumulate's source points) and the traced reference
+// (its rays), so both sample the same sources the same way:
 // correlated multi-jittered sampling (Kensler, "Correlated Multi-Jittered
 // Sampling", Pixar Technical Memo 13-01, 2013). For any count N, each of
 // the N rows of height 1/N holds one point; where N = m n (m =
@@ -32,6 +34,42 @@ class CmjPointSet {
   std::vector<std::uint32_t> column_, row_;  // the permuted strata
   std::vector<glm::vec2> points_;
 };
+
+// A partition of the unit square into n cells of equal area, for any n:
+// m = floor(sqrt(n)) columns side by side, the first (n mod m) holding
+// ceil(n / m) cells stacked in y and the others floor(n / m); a column of
+// c cells is c / n wide, so each of its cells (1 / c high) has area 1 / n.
+// Kensler's any-n layout (cmj_sample, one point per 1/n row in y) puts
+// points in only some cells of its m x ceil(n / m) grid when n is not
+// m ceil(n / m), and two in others; an estimator that spreads each
+// point's weight over its cell (the dithered --accumulate of
+// shaders/shadow/accumulate.glsl) is then biased. Here every cell is
+// sampled exactly once and the cells stay near square (their sides differ
+// by at most a factor (m + 2) / m).
+struct SquareCell {
+  glm::vec2 origin{0.0f};                 // lower corner, in [0, 1)^2
+  glm::vec2 size{1.0f};                   // width and height
+  std::uint32_t column = 0, columns = 1;  // its column, of the partition's m
+  std::uint32_t row = 0, rows = 1;        // its row, of the rows its column holds
+};
+
+// Cell `index` (0 <= index < n) of the partition of n, column by column,
+// bottom to top.
+SquareCell square_cell(std::uint32_t index, std::uint32_t n);
+
+// Sample k (0 <= k < n) of pattern `pattern`'s n stratified samples: as k
+// runs over 0 .. n-1 it visits every cell of square_cell's partition once,
+// in an order the pattern shuffles (Kensler 2013, Listing 3's
+// permutation), and a jittered point in it. The points are multi-jittered
+// as Kensler's are (Chiu, Shirley and Wang 1994): in the column of c
+// cells, the cells' points fall in distinct 1/n-wide sub-columns, so the
+// n points' x coordinates fill the n 1/n-wide columns of the square once;
+// and each column's points lie in its own of m sub-rows of their cells.
+struct CellSample {
+  SquareCell cell;
+  glm::vec2 point{0.5f};  // inside cell, in [0, 1)^2
+};
+CellSample stratified_sample(std::uint32_t k, std::uint32_t n, std::uint32_t pattern);
 
 // A point of the unit disk from a point of the unit square, area-uniform
 // and keeping strata apart (Shirley & Chiu, "A Low Distortion Map Between
