@@ -1,6 +1,7 @@
 #pragma once
 // One table of (value, name) per enum, used for parsing, printing and help
 // text alike, so names are never duplicated by hand.
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
@@ -12,10 +13,21 @@ namespace penumbra {
 template <class E>
 using EnumTable = std::span<const std::pair<E, std::string_view>>;
 
+// Names compare without regard to ASCII case: documents spell techniques
+// "PCSS" and "MSM", the tables spell them "pcss" and "msm".
+inline bool names_equal(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; };
+    if (lower(a[i]) != lower(b[i])) return false;
+  }
+  return true;
+}
+
 template <class E>
 std::optional<E> parse_enum(EnumTable<E> table, std::string_view name) {
   for (const auto& [value, n] : table) {
-    if (n == name) return value;
+    if (names_equal(n, name)) return value;
   }
   return std::nullopt;
 }

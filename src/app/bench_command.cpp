@@ -1,6 +1,8 @@
 #include "app/bench_command.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -13,6 +15,7 @@
 #include "app/scene_source.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
+#include "io/progress_bar.hpp"
 #include "penumbra/error.hpp"
 #include "penumbra/filter/summed_area_table_pass.hpp"
 #include "penumbra/gl/context.hpp"
@@ -191,6 +194,29 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
   return j;
 }
 
+// How long the whole plan will take, before it starts: two frames of the
+// first configuration, the first of which compiles its shaders as every
+// configuration's first frame does; the rest are frames like the second.
+// Techniques differ in cost, so this is an estimate, and says so.
+void print_estimate(Renderer& renderer, const BenchArgs& args,
+                    const std::vector<ShadowSettings>& plan) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  const PassTimes probe = measure_pass_times(renderer, args.render, plan.front(), 1, 1);
+  const double probe_s = std::chrono::duration<double>(Clock::now() - start).count();
+  const double steady_s =
+      probe.total.wall_ms.empty() ? probe_s / 2.0 : probe.total.wall_ms.front() * 1e-3;
+  const double first_s = std::max(steady_s, probe_s - steady_s);
+  const int frames = args.frames + args.warmup;
+  const double total_s = static_cast<double>(plan.size()) * (first_s + (frames - 1) * steady_s);
+  std::printf(
+      "estimate: about %.*f s for %zu configuration%s of %d frames (%d warm-up), from two frames "
+      "of the first (%.2f s with its shaders compiled, then %.3f s a frame)\n",
+      total_s < 10.0 ? 1 : 0, total_s, plan.size(), plan.size() == 1 ? "" : "s", frames,
+      args.warmup, first_s, steady_s);
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 void add_bench_command_options(CLI::App& command, BenchArgs& args) {
@@ -262,8 +288,15 @@ int run_bench_command(BenchArgs& args) {
                                                 : "one thread per line (a CPU rasterizer)");
   }
   Renderer renderer(scene);
+  print_estimate(renderer, args, plan);
+  // One line per configuration on stderr where it is not a terminal (a
+  // log shows where the time goes), a bar with the time left where it is.
+  ProgressBar progress("bench");
   std::vector<PassTimes> runs;
-  for (const ShadowSettings& settings : plan) {
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const ShadowSettings& settings = plan[i];
+    progress.step(describe(settings), static_cast<std::int64_t>(i),
+                  static_cast<std::int64_t>(plan.size()));
     PassTimes run = measure_pass_times(renderer, args.render, settings, args.frames, args.warmup);
     if (context->error_count() > 0) {
       throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
@@ -271,8 +304,11 @@ int run_bench_command(BenchArgs& args) {
     }
     print_run(run, args.frames, timer_clock);
     print_traffic(run, timer_clock, bandwidth);
+    // Each result as it is measured, also when stdout is a file.
+    std::fflush(stdout);
     runs.push_back(std::move(run));
   }
+  progress.finish();
 
   if (!args.json.empty()) {
     nlohmann::json j;

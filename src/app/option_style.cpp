@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/suggestions.hpp"
+#include "penumbra/enum_names.hpp"
 
 namespace penumbra {
 
@@ -74,12 +75,15 @@ CLI::Validator finite_range(T min, T max) {
 CLI::Validator names_validator(const std::vector<std::string>& choices, bool list) {
   return CLI::Validator(
       [choices, list](std::string& input) -> std::string {
-        if (list && input == "all") return {};
+        if (list && names_equal(input, "all")) return {};
         std::stringstream in(input);
         for (std::string name; std::getline(in, name, list ? ',' : '\0');) {
           name.erase(0, name.find_first_not_of(" \t"));
           name.erase(name.find_last_not_of(" \t") + 1);
-          if (std::find(choices.begin(), choices.end(), name) != choices.end()) continue;
+          if (std::any_of(choices.begin(), choices.end(),
+                          [&](const std::string& c) { return names_equal(c, name); })) {
+            continue;
+          }
           return "unknown name '" + name + "' (" +
                  (list ? "all, or a comma-separated list of " : "one of ") + joined(choices, ", ") +
                  ")" + did_you_mean(name, choices);

@@ -56,7 +56,7 @@ template <class E, std::size_t N>
 std::vector<E> parse_list(const std::string& list, const std::string& flag, const char* what,
                           const std::array<std::pair<E, std::string_view>, N>& table,
                           const std::vector<E>& all) {
-  if (list == "all") return all;
+  if (names_equal(list, "all")) return all;
   std::vector<E> values;
   for (const std::string& name : split_list(list)) {
     const std::optional<E> value = parse_enum<E>(table, name);

@@ -1,6 +1,7 @@
 #include "app/render_command.hpp"
 
 #include <cstdio>
+#include <string>
 
 #include "app/help_formatter.hpp"
 #include "app/light_choice.hpp"
@@ -26,6 +27,9 @@ void add_render_command_options(CLI::App& command, RenderArgs& args) {
                ->type_name("FILE"),
            OptionGroup::Output);
   in_group(command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages"),
+           OptionGroup::Output);
+  in_group(command.add_flag("--quiet", args.quiet,
+                            "print nothing on success (by default one line: the file written)"),
            OptionGroup::Output);
   add_render_options(command, args.render, args.named);
   add_shadow_options(command, args.shadow, args.named);
@@ -65,6 +69,13 @@ int run_render_command(RenderArgs& args) {
                        " error(s); last: " + context->last_error());
   }
   write_image(image, args.output, png_encoding_for(args.render.view));
+  if (!args.quiet) {
+    // One line on stdout, so a script can read the path and a person sees
+    // that something was written and what.
+    std::printf("wrote %s (%dx%d, %s, technique %s)\n", args.output.c_str(), image.width,
+                image.height, std::string(enum_name<View>(kViewNames, args.render.view)).c_str(),
+                std::string(enum_name<Technique>(kTechniqueNames, args.shadow.technique)).c_str());
+  }
   return 0;
 }
 

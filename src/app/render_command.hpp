@@ -17,6 +17,7 @@ struct RenderArgs {
   std::string light;      // --light: one light of this type alone (empty: the scene's lights)
   std::string output;
   bool verbose = false;
+  bool quiet = false;  // --quiet: no "wrote ..." line on success
   RenderSettings render;
   ShadowSettings shadow;
   SsaoSettings ssao;

@@ -1,8 +1,20 @@
 #include "app/suggestions.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace penumbra {
+
+namespace {
+
+std::string lowercase(std::string_view word) {
+  std::string out(word);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+}  // namespace
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   // d[i][j]: distance between the first i characters of a and the first j of b.
@@ -28,10 +40,12 @@ std::optional<std::string> closest_name(std::string_view typed,
   // as "x" from "y".
   const std::size_t dashes = std::min(typed.find_first_not_of('-'), typed.size());
   const std::size_t allowed = std::max<std::size_t>(1, (typed.size() - dashes) / 3);
+  // Case does not count: names parse without regard to it ("PCSS").
+  const std::string lower_typed = lowercase(typed);
   std::optional<std::string> best;
   std::size_t best_distance = allowed + 1;
   for (const std::string& candidate : candidates) {
-    const std::size_t distance = edit_distance(typed, candidate);
+    const std::size_t distance = edit_distance(lower_typed, lowercase(candidate));
     if (distance < best_distance) {
       best = candidate;
       best_distance = distance;
@@ -40,7 +54,8 @@ std::optional<std::string> closest_name(std::string_view typed,
   if (best || typed.size() <= dashes) return best;
   std::vector<std::string> extensions;
   for (const std::string& candidate : candidates) {
-    if (candidate.size() > typed.size() && candidate.compare(0, typed.size(), typed) == 0) {
+    if (candidate.size() > typed.size() &&
+        lowercase(candidate).compare(0, typed.size(), lower_typed) == 0) {
       extensions.push_back(candidate);
     }
   }

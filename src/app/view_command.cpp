@@ -114,7 +114,9 @@ void apply_key(KeyAction action, ViewerState& state, PanelActions& actions, bool
 void add_view_command_options(CLI::App& command, ViewArgs& args) {
   add_scene_source_options(command, args.scene, args.model, args.camera_index, args.ground);
   add_light_choice_option(command, args.light);
-  in_group(command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages"),
+  in_group(command.add_flag("--verbose", args.verbose,
+                            "print the GPU in use and driver messages, and on closing the "
+                            "frames drawn and the panel's last GPU times"),
            OptionGroup::Output);
   add_number(command, "frames", args.frames,
              "scripted mode: render this many frames ignoring mouse and keys, then close (0: run "
@@ -203,6 +205,7 @@ int run_view_command(ViewArgs& args) {
   // again.
   std::vector<std::string> shown_args;
   int drawn_frames = 0, rendered_frames = 0;
+  std::vector<std::string> timing_rows;  // the panel's GPU times, as last drawn
   // Frames to draw before waiting for events again: Dear ImGui settles a
   // change (a hover, an opened list) over a few frames.
   int busy_frames = 3;
@@ -254,6 +257,7 @@ int run_view_command(ViewArgs& args) {
     if (panel_visible) {
       status.frame = shown ? &*shown : nullptr;
       const PanelActions clicked = draw_panel(state, status, kPanelWidth);
+      timing_rows = clicked.timing_rows;
       actions.screenshot |= clicked.screenshot;
       actions.copy_command |= clicked.copy_command;
       actions.reset |= clicked.reset;
@@ -353,6 +357,8 @@ int run_view_command(ViewArgs& args) {
 
   if (args.verbose) {
     std::fprintf(stderr, "penumbra: %d frames drawn, %d rendered\n", drawn_frames, rendered_frames);
+    // The last frame's GPU times as the panel showed them.
+    for (const std::string& row : timing_rows) std::fprintf(stderr, "penumbra: %s\n", row.c_str());
   }
   if (!args.screenshot.empty()) {
     if (!shown) throw RuntimeError("no frame was rendered for --screenshot");

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <limits>
 
@@ -18,6 +19,13 @@ namespace {
 constexpr const char* kSoftwareTimingNote =
     "software renderer: these times are of the CPU emulating the GPU (compute passes run "
     "outside the timer queries), not GPU times";
+
+// The longest pass name, the width of the time rows' name column.
+constexpr int kPassNameWidth = [] {
+  std::size_t width = 0;
+  for (const std::string_view name : gl::kGpuPassNames) width = std::max(width, name.size());
+  return static_cast<int>(width);
+}();
 
 void tooltip(std::string_view text) {
   if (!text.empty() && ImGui::IsItemHovered()) {
@@ -145,7 +153,7 @@ void camera_section(ViewerState& state) {
   if (changed) set_camera(state, camera);
 }
 
-void timing_section(const PanelStatus& status) {
+void timing_section(const PanelStatus& status, std::vector<std::string>& rows) {
   ImGui::Text("frame %.1f ms (%.1f fps while changing)", status.frame_ms,
               status.frame_ms > 0.0 ? 1000.0 / status.frame_ms : 0.0);
   if (is_software_renderer(status.renderer)) {
@@ -163,23 +171,20 @@ void timing_section(const PanelStatus& status) {
     ImGui::TextDisabled("GPU times: waiting for the first results");
     return;
   }
-  if (ImGui::BeginTable("gpu", 2, ImGuiTableFlags_SizingStretchProp)) {
-    for (std::size_t p = 0; p < status.gpu->pass_ms.size(); ++p) {
-      if (!status.gpu->ran[p]) continue;
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      const std::string name(gl::kGpuPassNames[p]);
-      ImGui::TextUnformatted(name.c_str());
-      ImGui::TableNextColumn();
-      ImGui::Text("%8.3f ms", status.gpu->pass_ms[p]);
-    }
-    ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted("GPU frame");
-    ImGui::TableNextColumn();
-    ImGui::Text("%8.3f ms", status.gpu->total_ms);
-    ImGui::EndTable();
+  // One line of text per pass, name and milliseconds padded to columns in
+  // the panel's monospaced font: no table column can clip a name or a
+  // time to its first letters.
+  auto row = [&](std::string_view name, double ms) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%-*.*s %9.3f ms", kPassNameWidth,
+                  static_cast<int>(name.size()), name.data(), ms);
+    ImGui::TextUnformatted(text);
+    rows.emplace_back(text);
+  };
+  for (std::size_t p = 0; p < status.gpu->pass_ms.size(); ++p) {
+    if (status.gpu->ran[p]) row(gl::kGpuPassNames[p], status.gpu->pass_ms[p]);
   }
+  row("GPU frame", status.gpu->total_ms);
 }
 
 void help_section() {
@@ -206,7 +211,7 @@ float status_section_height(const PanelStatus& status) {
   if (is_software_renderer(status.renderer)) height += text_height(kSoftwareTimingNote);
   if (status.gpu) {
     const auto rows = std::count(status.gpu->ran.begin(), status.gpu->ran.end(), true) + 1;
-    height += static_cast<float>(rows) * (line + style.CellPadding.y * 2.0f);
+    height += static_cast<float>(rows) * line;
   } else {
     height += line;
   }
@@ -299,7 +304,7 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
 
   ImGui::BeginChild("status");
   ImGui::Separator();
-  timing_section(status);
+  timing_section(status, actions.timing_rows);
   actions.copy_command = ImGui::Button("Copy as command");
   ImGui::SameLine();
   actions.screenshot = ImGui::Button("Screenshot");

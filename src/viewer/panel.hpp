@@ -36,6 +36,9 @@ struct PanelActions {
   // times, command) ended, in screen units: what tests check.
   std::vector<std::string> parameters;
   float status_bottom = 0.0f;
+  // The GPU time rows as drawn ("shadow depth   4.123 ms"), the frame's
+  // total last; empty until the first times arrive.
+  std::vector<std::string> timing_rows;
 };
 
 // Draws the panel at the window's right edge, `width` screen units wide,

@@ -245,6 +245,51 @@ TEST(Cli, RendersEveryTechnique) {
   EXPECT_EQ(r.status, 0) << r.err;
 }
 
+// One line on stdout names the file written, its size, view and
+// technique (as the command line spelled it or not); --quiet prints nothing.
+TEST(Cli, RenderSaysWhatItWroteUnlessQuiet) {
+  const std::string png = out_path("said.png");
+  const Result r =
+      run("render --width 48 --height 32 --shadow-map-size 128 --technique PCSS -o " + png);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(png));
+  EXPECT_EQ(r.out, "wrote " + png + " (48x32, final, technique pcss)\n");
+  EXPECT_EQ(r.err, "");
+  const std::string quiet_png = out_path("quiet.png");
+  const Result quiet =
+      run("render --width 48 --height 32 --shadow-map-size 128 --quiet -o " + quiet_png);
+  ASSERT_EQ(quiet.status, 0) << quiet.err;
+  EXPECT_TRUE(fs::exists(quiet_png));
+  EXPECT_EQ(quiet.out, "");
+}
+
+// With its output in a file (no terminal), bench says up front how long it
+// expects to take, then one line on stderr as each configuration starts.
+TEST(Cli, BenchEstimatesAndReportsProgressOffATerminal) {
+  const Result r =
+      run("bench --technique HARD,pcf,vsm --frames 2 --warmup 1 --width 32 --height 24 "
+          "--shadow-map-size 64");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::regex estimate(
+      "estimate: about [0-9.]+ s for 3 configurations of 3 frames \\(1 warm-up\\)");
+  EXPECT_TRUE(std::regex_search(r.out, estimate)) << r.out;
+  // The estimate comes before the first result.
+  EXPECT_LT(r.out.find("estimate:"), r.out.find("\nhard")) << r.out;
+  std::size_t at = 0;
+  int index = 0;
+  for (const char* technique : {"hard", "pcf", "vsm"}) {
+    const std::string line = std::string("bench: ") + technique;
+    const std::size_t found = r.err.find(line, at);
+    ASSERT_NE(found, std::string::npos) << line << "\n" << r.err;
+    std::string done = "(";
+    done += std::to_string(index);
+    done += " of 3 items done";
+    EXPECT_NE(r.err.find(done, found), std::string::npos) << r.err;
+    at = found + line.size();
+    ++index;
+  }
+}
+
 TEST(Cli, RendersEveryFilteredTechnique) {
   for (const char* technique : {"vsm", "esm", "msm", "msm16", "evsm2", "evsm4"}) {
     for (const char* filter : {"gaussian", "sat"}) {

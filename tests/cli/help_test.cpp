@@ -14,6 +14,7 @@
 
 #include "app/cli.hpp"
 #include "app/option_style.hpp"
+#include "app/options.hpp"
 #include "cli/cli_run.hpp"
 #include "penumbra/settings.hpp"
 
@@ -285,6 +286,28 @@ TEST(Suggestions, AMistypedNameIsNamedWithTheNearestOne) {
   EXPECT_NE(parse_error("compare --technique hard,vsn").find("did you mean 'vsm'?"),
             std::string::npos);
   EXPECT_NE(parse_error("render -o x.png --view shadwo").find("did you mean 'shadow'?"),
+            std::string::npos);
+}
+
+// The README and the report spell techniques "PCSS" and "MSM": names
+// parse without regard to case wherever they are read, and a mistyped one
+// in capitals gets its suggestion like any other.
+TEST(Suggestions, NamesIgnoreCase) {
+  for (const char* line :
+       {"render -o x.png --technique PCSS", "render -o x.png --technique Msm16",
+        "render -o x.png --filter SAT --view Shadow", "compare --technique HARD,Pcss,msm",
+        "bench --techniques ALL", "view --technique EVSM4"}) {
+    EXPECT_EQ(parse_error(line), "") << line;
+  }
+  EXPECT_EQ(parse_technique_list("HARD,Pcss,msm16", "--technique"),
+            (std::vector<Technique>{Technique::Hard, Technique::Pcss, Technique::Msm16}));
+  EXPECT_EQ(parse_technique_list("All", "--technique").size(), technique_names().size() - 1);
+  EXPECT_EQ(parse_enum<Technique>(kTechniqueNames, "PcSs"), Technique::Pcss);
+  EXPECT_EQ(parse_enum<Filter>(kFilterNames, "Gaussian"), Filter::Gaussian);
+  EXPECT_EQ(parse_enum<Technique>(kTechniqueNames, "pcss "), std::nullopt);
+  EXPECT_NE(parse_error("render -o x.png --technique PCSX").find("did you mean 'pcss'?"),
+            std::string::npos);
+  EXPECT_NE(parse_error("compare --technique HARD,VSMM").find("did you mean 'vsm'?"),
             std::string::npos);
 }
 

@@ -137,6 +137,30 @@ TEST_F(PanelTest, TimesAndCommandStayOnA720PixelScreen) {
   }
 }
 
+// Each GPU time is one row: the pass's whole name, then its milliseconds,
+// in a line that fits the panel (nothing clipped), the frame's total last.
+TEST_F(PanelTest, TimesShowPassNamesAndMilliseconds) {
+  status_.gpu->pass_ms[static_cast<std::size_t>(gl::GpuPass::ShadowDepth)] = 4.25;
+  status_.gpu->pass_ms[static_cast<std::size_t>(gl::GpuPass::Lighting)] = 12.5;
+  status_.gpu->total_ms = 31.0;
+  const PanelActions a = draw();
+  ASSERT_EQ(a.timing_rows.size(), 9u);  // the 8 passes that ran, and the total
+  std::size_t row = 0;
+  for (std::size_t p = 0; p < status_.gpu->ran.size(); ++p) {
+    if (!status_.gpu->ran[p]) continue;
+    const std::string name(gl::kGpuPassNames[p]);
+    EXPECT_EQ(a.timing_rows[row].rfind(name + " ", 0), 0u) << a.timing_rows[row];
+    ++row;
+  }
+  EXPECT_EQ(a.timing_rows[0], "shadow depth               4.250 ms");
+  EXPECT_EQ(a.timing_rows[7], "lighting                  12.500 ms");
+  EXPECT_EQ(a.timing_rows[8], "GPU frame                 31.000 ms");
+  const float inside = 400.0f - 2.0f * ImGui::GetStyle().WindowPadding.x;
+  for (const std::string& text : a.timing_rows) {
+    EXPECT_LE(ImGui::CalcTextSize(text.c_str()).x, inside) << text;
+  }
+}
+
 TEST(PanelRelevance, UnknownParametersAreShown) {
   EXPECT_TRUE(parameter_applies("a-parameter-added-later", ShadowSettings{}, SsaoSettings{}, {}));
 }

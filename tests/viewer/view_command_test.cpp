@@ -14,10 +14,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "io/image.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
 
 namespace {
 
@@ -285,6 +288,32 @@ TEST(ViewSmallScreen, TheWindowFitsAndAnUnchangedFrameIsNotRenderedAgain) {
   const Image captured = penumbra::read_png(window);
   EXPECT_LE(captured.width, 1280);
   EXPECT_LE(captured.height, 720);
+}
+
+// The panel's GPU times in a real window: every row it drew names a whole
+// pass and its milliseconds (read back from the rows --verbose prints).
+TEST(ViewPanel, TimesNamePassesInMilliseconds) {
+  const XvfbServer xvfb("1280x720x24");
+  ASSERT_TRUE(xvfb.error().empty()) << xvfb.error();
+  const Result r = run("DISPLAY=" + xvfb.display(),
+                       "view --frames 8 --verbose --width 320 --height 240 --shadow-map-size 256 "
+                       "--ssao-samples 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<std::string> rows;
+  const std::regex row("penumbra: (\\S.*?) +([0-9]+\\.[0-9]{3}) ms\n");
+  for (std::sregex_iterator m(r.err.begin(), r.err.end(), row), end; m != end; ++m) {
+    rows.push_back((*m)[1]);
+  }
+  ASSERT_FALSE(rows.empty()) << r.err;
+  for (const std::string& name : rows) {
+    const bool known = name == "GPU frame" || std::find(penumbra::gl::kGpuPassNames.begin(),
+                                                        penumbra::gl::kGpuPassNames.end(),
+                                                        name) != penumbra::gl::kGpuPassNames.end();
+    EXPECT_TRUE(known) << "'" << name << "' is not a pass\n" << r.err;
+  }
+  for (const char* pass : {"shadow depth", "G-buffer", "lighting", "GPU frame"}) {
+    EXPECT_NE(std::find(rows.begin(), rows.end(), pass), rows.end()) << pass << "\n" << r.err;
+  }
 }
 
 TEST(ViewCommand, WithoutADisplayItSaysSoInOneLine) {
