@@ -214,7 +214,7 @@ void print_estimate(Renderer& renderer, const BenchArgs& args,
       "of the first (%.2f s with its shaders compiled, then %.3f s a frame)\n",
       total_s < 10.0 ? 1 : 0, total_s, plan.size(), plan.size() == 1 ? "" : "s", frames,
       args.warmup, first_s, steady_s);
-  std::fflush(stdout);
+  flush_standard_output();
 }
 
 }  // namespace
@@ -304,8 +304,9 @@ int run_bench_command(BenchArgs& args) {
     }
     print_run(run, args.frames, timer_clock);
     print_traffic(run, timer_clock, bandwidth);
-    // Each result as it is measured, also when stdout is a file.
-    std::fflush(stdout);
+    // Each result as it is measured, also when stdout is a file (a full
+    // device or a closed pipe is an error here, with its reason).
+    flush_standard_output();
     runs.push_back(std::move(run));
   }
   progress.finish();

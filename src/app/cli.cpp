@@ -57,12 +57,15 @@ void reject_empty_values(const CLI::App& command) {
 // Standard output is checked once the command is done: a full device or a
 // reader that went away is an error, not a silent loss.
 int check_standard_output(int status) {
+  // A command that failed has said why in its one line already (a write
+  // to standard output that failed mid-run among the reasons).
+  if (status != 0) return status;
   errno = 0;
   if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
     const int error = errno;
     print_error(std::string("cannot write to standard output") +
                 (error != 0 ? std::string(": ") + std::strerror(error) : std::string()));
-    return status == 0 ? 1 : status;
+    return 1;
   }
   return status;
 }

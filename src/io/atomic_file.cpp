@@ -112,8 +112,15 @@ std::string temporary_name(const std::string& path) {
 }
 
 void write_standard_output(std::string_view bytes) {
-  if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size() ||
-      std::fflush(stdout) != 0) {
+  if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size()) {
+    const int error = errno;
+    throw RuntimeError(std::string("cannot write to standard output: ") + std::strerror(error));
+  }
+  flush_standard_output();
+}
+
+void flush_standard_output() {
+  if (std::fflush(stdout) != 0) {
     const int error = errno;
     throw RuntimeError(std::string("cannot write to standard output: ") + std::strerror(error));
   }

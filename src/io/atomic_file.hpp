@@ -38,4 +38,8 @@ void write_file_atomically(const std::string& path, std::string_view bytes,
 // on a write error (a full device, a closed pipe).
 void write_standard_output(std::string_view bytes);
 
+// Flushes standard output (what printf wrote so far). Throws RuntimeError
+// "cannot write to standard output: <reason>" if it cannot.
+void flush_standard_output();
+
 }  // namespace penumbra

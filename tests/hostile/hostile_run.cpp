@@ -106,6 +106,24 @@ bool one_error_line(const std::string& text, const std::string& culprit) {
          std::count(text.begin(), text.end(), '\n') == 1 && text.find(culprit) != std::string::npos;
 }
 
+bool ends_in_one_error_line(const std::string& text, const std::string& culprit) {
+  const std::size_t last = text.size() >= 2 ? text.rfind('\n', text.size() - 2) : std::string::npos;
+  const std::string last_line = text.substr(last == std::string::npos ? 0 : last + 1);
+  return one_error_line(last_line, culprit) &&
+         text.find("penumbra: error: ") == text.rfind("penumbra: error: ");
+}
+
+long lines_starting_with(const std::string& text, const std::string& prefix) {
+  long count = 0;
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = text.find('\n', start);
+    count += text.compare(start, prefix.size(), prefix) == 0;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return count;
+}
+
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;

@@ -37,6 +37,14 @@ bool running(pid_t pid);
 // True if `text` is one line "penumbra: error: ..." containing `culprit`.
 bool one_error_line(const std::string& text, const std::string& culprit);
 
+// The same for stderr that may start with progress lines (a command off a
+// terminal reports its progress there): the error is the one
+// "penumbra: error: " line, and the last.
+bool ends_in_one_error_line(const std::string& text, const std::string& culprit);
+
+// The lines of `text` that start with `prefix` ("penumbra: warning: ").
+long lines_starting_with(const std::string& text, const std::string& prefix);
+
 // Writes `text` to `path`.
 void write_text(const std::string& path, const std::string& text);
 

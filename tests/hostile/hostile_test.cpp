@@ -308,14 +308,11 @@ TEST(Hostile, CrashSignalsEndInOneLineAndLeaveNothing) {
     EXPECT_TRUE(fs::is_empty(dir)) << what << " left " << fs::directory_iterator(dir)->path();
     // Progress lines may come first; the error is one line, the last.
     const std::string text = read_text(log);
-    const std::size_t last = text.rfind('\n', text.size() >= 2 ? text.size() - 2 : 0);
-    const std::string last_line = text.substr(last == std::string::npos ? 0 : last + 1);
     EXPECT_TRUE(
-        one_error_line(last_line, "internal error (signal " + std::to_string(c.signal) + ": "))
+        ends_in_one_error_line(text, "internal error (signal " + std::to_string(c.signal) + ": "))
         << what << ":\n"
         << text;
-    EXPECT_NE(last_line.find("please report it"), std::string::npos) << what << ":\n" << text;
-    EXPECT_EQ(text.find("penumbra: error"), text.rfind("penumbra: error")) << what << ":\n" << text;
+    EXPECT_NE(text.find("please report it"), std::string::npos) << what << ":\n" << text;
   }
 }
 
@@ -455,7 +452,7 @@ TEST(Hostile, OversizedTexturesAreWarningsNotFailures) {
         "data: URI that is not base64"}) {
     EXPECT_NE(r.err.find(said), std::string::npos) << said << "\n" << r.err;
   }
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 3) << r.err;
+  EXPECT_EQ(lines_starting_with(r.err, "penumbra: warning: "), 3) << r.err;
   fs::remove(sparse);
 }
 
@@ -507,7 +504,7 @@ TEST(Hostile, ManyGltfLightsAreOneShortWarning) {
   EXPECT_EQ(r.status, 0) << r.err.substr(0, 1000);
   EXPECT_LT(r.err.size(), 1000u) << r.err.substr(0, 1000);
   EXPECT_NE(r.err.find(" more"), std::string::npos) << r.err.substr(0, 1000);
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err.substr(0, 1000);
+  EXPECT_EQ(lines_starting_with(r.err, "penumbra: warning: "), 1) << r.err.substr(0, 1000);
 }
 
 // 12. Empty values are usage errors, not "not given".
@@ -544,7 +541,8 @@ TEST(Hostile, StandardOutputErrorsAreReported) {
       "timeout 60 PENUMBRA bench --frames 1 --warmup 0 --technique hard" + kSmall;
   const Result full = shell(bench + " > /dev/full");
   EXPECT_EQ(full.status, 1) << full.err;
-  EXPECT_TRUE(one_error_line(full.err, "standard output: No space left on device")) << full.err;
+  EXPECT_TRUE(ends_in_one_error_line(full.err, "standard output: No space left on device"))
+      << full.err;
   const Result compare =
       shell("timeout 60 PENUMBRA compare --techniques hard --no-cache" + kSmall + " > /dev/full");
   EXPECT_EQ(compare.status, 1) << compare.err;
