@@ -20,6 +20,25 @@ namespace {
 
 using testing::GpuTest;
 
+// The shadow view of `width` x `height` pixels, hard shadows in 1024^2
+// maps from a spot light 1.5 wide: the default scene's setting of the
+// tests below.
+RenderSettings shadow_view(int width, int height) {
+  RenderSettings rs;
+  rs.width = width;
+  rs.height = height;
+  rs.view = View::Shadow;
+  return rs;
+}
+
+ShadowSettings wide_hard_shadows() {
+  ShadowSettings shadow;
+  shadow.technique = Technique::Hard;
+  shadow.map_size = 1024;
+  shadow.light_size = 1.5f;
+  return shadow;
+}
+
 // On the default scene with a 1.5-wide spot light, 32 dithered hard
 // sub-frames come within 0.018 RMSE of the traced reference (measured
 // 0.0083 at this small size, most of it the dither's noise; 0.0148 while
@@ -29,14 +48,8 @@ using testing::GpuTest;
 TEST_F(GpuTest, AccumulatedHardShadowsApproachTheReference) {
   const Scene scene = *builtin_scene("default");
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 160;
-  rs.height = 96;
-  rs.view = View::Shadow;
-  ShadowSettings shadow;
-  shadow.technique = Technique::Hard;
-  shadow.map_size = 1024;
-  shadow.light_size = 1.5f;
+  const RenderSettings rs = shadow_view(160, 96);
+  ShadowSettings shadow = wide_hard_shadows();
   const TracedReference reference = traced_reference(renderer, rs, shadow, 256, "");
 
   renderer.render(rs, shadow);
@@ -80,14 +93,8 @@ double penumbra_rmse(const Image& image, const Image& reference) {
 TEST_F(GpuTest, AccumulatedErrorFallsAsSubFramesGrowForEveryCount) {
   const Scene scene = *builtin_scene("default");
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 160;
-  rs.height = 90;
-  rs.view = View::Shadow;
-  ShadowSettings shadow;
-  shadow.technique = Technique::Hard;
-  shadow.map_size = 1024;
-  shadow.light_size = 1.5f;
+  const RenderSettings rs = shadow_view(160, 90);
+  ShadowSettings shadow = wide_hard_shadows();
   const TracedReference reference = traced_reference(renderer, rs, shadow, 1024, "");
   double previous = 1.0;
   int previous_n = 0;
@@ -148,10 +155,7 @@ TEST_F(GpuTest, AccumulatedShadowsOfThinBarsDoNotLeak) {
   const float texel_at_bars = 4.0f * 2.0f * std::tan(glm::radians(30.0f)) / 512.0f;
   const Scene scene = thin_bar_scene(1.5f * texel_at_bars);
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 128;
-  rs.height = 96;
-  rs.view = View::Shadow;
+  RenderSettings rs = shadow_view(128, 96);
   ShadowSettings shadow;
   shadow.technique = Technique::Hard;
   shadow.map_size = 512;
@@ -201,10 +205,7 @@ TEST_F(GpuTest, SubFramesCarryTheirSourceWeights) {
   scene.camera.position = {0.0f, 6.0f, 3.0f};
   scene.camera.target = {0.0f, 0.0f, 0.0f};
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 48;
-  rs.height = 32;
-  rs.view = View::Shadow;
+  RenderSettings rs = shadow_view(48, 32);
   ShadowSettings shadow;
   shadow.technique = Technique::Hard;
   shadow.map_size = 256;
