@@ -191,6 +191,7 @@ int run_view_command(ViewArgs& args) {
       make_viewer_state(args.scene, std::move(loaded), start, args.render, args.shadow, args.ssao);
   state.model_argument = args.model;
   state.camera_index = args.camera_index;
+  state.ground = args.ground;
   state.light_choice = args.light;
   OrbitCamera orbit(state.camera);
   MouseControls mouse(renderer.mesh().bounds().center());

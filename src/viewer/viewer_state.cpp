@@ -202,6 +202,7 @@ std::vector<std::string> render_command_for(const ViewerState& state, const Fram
                               .model_argument = state.model_argument,
                               .light = state.light_choice,
                               .camera_index = state.camera_index,
+                              .ground = state.ground,
                               .render = frame.render,
                               .shadow = frame.shadow,
                               .ssao = frame.ssao,

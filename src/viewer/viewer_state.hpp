@@ -19,6 +19,7 @@ struct ViewerState {
   std::string scene_argument;  // --scene as given, for "Copy as command"
   std::string model_argument;  // --model as given, which replaces --scene
   int camera_index = -1;       // --camera-index as given (-1: not given)
+  bool ground = false;         // --ground as given
   std::string light_choice;    // --light as given (empty: not given), for the same
   Scene loaded;                // the scene as loaded, before any change
   RenderSettings render;       // width and height follow the window

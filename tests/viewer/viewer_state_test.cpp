@@ -191,6 +191,17 @@ TEST_F(ViewerStateTest, CopiedCommandRendersTheSameImage) {
   EXPECT_EQ(again.rgba, shown.rgba);
 }
 
+// A glTF scene viewed with --ground is copied with --ground.
+TEST_F(ViewerStateTest, CopiedCommandKeepsTheGround) {
+  const FrameInput input = frame_input(state_, kWidth, kHeight, 16384);
+  const auto has_ground = [](const std::vector<std::string>& args) {
+    return std::find(args.begin(), args.end(), "--ground") != args.end();
+  };
+  EXPECT_FALSE(has_ground(render_command_for(state_, input, "copy.png")));
+  state_.ground = true;
+  EXPECT_TRUE(has_ground(render_command_for(state_, input, "copy.png")));
+}
+
 TEST(ScreenshotName, SaysWhatIsShown) {
   ViewerState state;
   state.scene_argument = "scenes/room.json";
