@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include "penumbra/error.hpp"
 #include "penumbra/shared/bindings.h"
@@ -28,6 +29,20 @@ GltfExtensions read_gltf_extensions_checked(const std::string& path) {
     return read_gltf_extensions(path);
   } catch (const RuntimeError&) {
     return {};
+  }
+}
+
+// Bounds from which a camera, lights or a ground are made (`what`): their
+// size times the ground's 10 must stay a float, or (coordinates near
+// 3.4e38) the scene would be drawn empty.
+void check_frameable(const std::string& path, const Bounds& bounds, const char* what) {
+  const float size = glm::length(bounds.max - bounds.min);
+  if (!std::isfinite(10.0f * size)) {
+    const glm::vec3 reach = glm::max(glm::abs(bounds.min), glm::abs(bounds.max));
+    std::ostringstream text;
+    text << path << ": coordinates reach " << std::max({reach.x, reach.y, reach.z})
+         << ", too large to make " << what << " for (a float's range ends at 3.4e+38)";
+    throw RuntimeError(text.str());
   }
 }
 
@@ -101,6 +116,7 @@ Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& note
     scene.camera = camera.camera;
   } else {
     if (model.bounds.empty()) throw RuntimeError(path + ": the file holds no triangles");
+    check_frameable(path, model.bounds, "a camera");
     scene.camera = framing_camera(model.bounds);
     notes.assumptions.push_back(path +
                                 " has no camera: looking at it from the front left, 40 "
@@ -109,6 +125,7 @@ Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& note
   }
 
   if (model.lights.empty()) {
+    check_frameable(path, model.bounds, "lights");
     scene.lights = framing_lights(model.bounds);
     notes.assumptions.push_back(path +
                                 " has no lights: lit by a spot light from the right and a "
@@ -138,6 +155,7 @@ Scene gltf_scene(const std::string& path, int camera_index, GltfSceneNotes& note
 
   if (!has_ground(model.mesh, model.bounds)) {
     if (ground) {
+      check_frameable(path, model.bounds, "a ground");
       add_ground(scene, model.bounds);
       notes.assumptions.push_back(path + " has no ground: added a grey plane under it (--ground)");
     } else {

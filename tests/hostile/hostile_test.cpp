@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <tuple>
 
 #include "gltf_files.hpp"
 #include "hostile/hostile_run.hpp"
@@ -343,6 +344,34 @@ TEST(Hostile, ModelCoordinatesAtTheEdgesOfFloat) {
     EXPECT_TRUE(one_error_line(r.err, model + ": coordinates span")) << r.err;
     EXPECT_NE(r.err.find("too large to frame"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir + "/huge.png"));
+  }
+}
+
+// 11c1. A glTF scene at its own scale with coordinates near 3.4e38: the
+// camera, lights or ground made for it would overflow, so it is one error
+// naming the file.
+TEST(Hostile, GltfCoordinatesNearFloatsLimitAreOneError) {
+  testing::GltfSpec spec;
+  spec.materials.push_back({});
+  spec.quads.push_back(
+      {{{-3e38f, 0, 3e38f}, {3e38f, 0, 3e38f}, {3e38f, 1, -3e38f}, {-3e38f, 1, -3e38f}}});
+  const std::string bare = testing::write_gltf("hostile-huge-coordinates.gltf", spec);
+  // With its own camera and light, only the ground asked for is made.
+  testing::GltfCameraSpec camera;
+  camera.position = {0.0f, 10.0f, 10.0f};
+  spec.cameras.push_back(camera);
+  spec.lights.push_back({});
+  const std::string lit = testing::write_gltf("hostile-huge-coordinates-lit.gltf", spec);
+  const std::string dir = fresh_dir("gltf_huge");
+  for (const auto& [path, extra, what] :
+       {std::tuple<std::string, std::string, std::string>{bare, "", "a camera"},
+        {lit, " --ground", "a ground"}}) {
+    const Result r = shell("timeout 60 PENUMBRA render --scene " + path + extra + kSmall + " -o " +
+                           dir + "/x.png");
+    EXPECT_EQ(r.status, 1) << extra << "\n" << r.err;
+    EXPECT_TRUE(ends_in_one_error_line(r.err, path + ": coordinates reach 3e+38")) << r.err;
+    EXPECT_NE(r.err.find("too large to make " + what), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/x.png"));
   }
 }
 
