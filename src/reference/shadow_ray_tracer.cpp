@@ -331,12 +331,20 @@ bool traceable_point(const glm::vec3& p, const glm::vec3& n, float error, float 
   return inside && normal && error >= 0.0f && error <= limit;
 }
 
+namespace {
+
+// Whether pixel i of `surfaces` sees geometry it can trace from.
+bool traceable_pixel(const SurfacePoints& surfaces, std::size_t i, float extent) {
+  return surfaces.covered[i] &&
+         traceable_point(surfaces.position[i], surfaces.normal[i], surfaces.error_bound(i), extent);
+}
+
+}  // namespace
+
 std::int64_t untraceable_points(const SurfacePoints& surfaces, float extent) {
   std::int64_t count = 0;
   for (std::size_t i = 0; i < surfaces.size(); ++i) {
-    if (!surfaces.covered[i]) continue;
-    const float error = i < surfaces.position_error.size() ? surfaces.position_error[i] : 0.0f;
-    count += !traceable_point(surfaces.position[i], surfaces.normal[i], error, extent);
+    count += surfaces.covered[i] && !traceable_pixel(surfaces, i, extent);
   }
   return count;
 }
@@ -348,14 +356,13 @@ ShadowRayTracer::ShadowRayTracer(const TriangleMesh& mesh, const std::vector<Mat
   if (CasterCutouts cutouts(mesh, materials); cutouts.any()) {
     cutouts_ = std::make_unique<CasterCutouts>(mesh, materials);
   }
-  device_ = rtcNewDevice(embree_device_config());
+  const char* config = embree_device_config();
+  device_ = rtcNewDevice(config);
   if (device_ == nullptr) {
-    const char* config = embree_device_config();
-    throw RuntimeError(embree_error(nullptr, config == nullptr
-                                                 ? std::string("creating a device")
-                                                 : std::string("creating a device "
-                                                               "with PENUMBRA_EMBREE_CONFIG=") +
-                                                       config));
+    throw RuntimeError(embree_error(
+        nullptr, config == nullptr
+                     ? std::string("creating a device")
+                     : std::string("creating a device with PENUMBRA_EMBREE_CONFIG=") + config));
   }
   rtcSetDeviceErrorFunction(device_, on_embree_error, nullptr);
 
@@ -535,7 +542,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
     Receiver r;
     r.p = surfaces.position[i];
     r.n = surfaces.normal[i];
-    const float error = i < surfaces.position_error.size() ? surfaces.position_error[i] : 0.0f;
+    const float error = surfaces.error_bound(i);
     // pbrt-v4's spawned ray origin: p moved along the normal by the bound
     // of its error, so that the ray starts on the light's side of the
     // surface it lies on however the rounding fell.
@@ -595,11 +602,7 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       const std::size_t row = static_cast<std::size_t>(y) * width;
       for (int x = 0; x < width; ++x) {
         const std::size_t i = row + x;
-        traced[x] =
-            surfaces.covered[i] &&
-            traceable_point(surfaces.position[i], surfaces.normal[i],
-                            i < surfaces.position_error.size() ? surfaces.position_error[i] : 0.0f,
-                            max_coordinate_);
+        traced[x] = traceable_pixel(surfaces, i, max_coordinate_);
         if (surfaces.covered[i] && !traced[x]) ++untraceable;
         if (!traced[x]) continue;
         Receiver& r = receivers[x];

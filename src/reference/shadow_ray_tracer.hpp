@@ -116,9 +116,10 @@ class ShadowRayTracer {
   // factor is undefined and reads 0 (as the `shadow` view has surfaces
   // facing away), and so it does where the surface point is not
   // traceable (traceable_point: not finite, or absurd); background pixels
-  // read (1, 1, 1, 0), as in the `shadow` view. `samples` rays per pixel for an area light, 1 for a
-  // point. Shadow rays start above the surface by the surface point's position_error plus the
-  // rounding bound below. Uses every core; fills `stats` if given.
+  // read (1, 1, 1, 0), as in the `shadow` view. `samples` rays per pixel
+  // for an area light, 1 for a point. Shadow rays start above the surface
+  // by the surface point's position_error plus the rounding bound below.
+  // Uses every core; fills `stats` if given.
   [[nodiscard]] Image trace(const SurfacePoints& surfaces, const ReferenceLight& light, int samples,
                             const TraceProgress& progress = {}, TraceStats* stats = nullptr) const;
 

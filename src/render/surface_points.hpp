@@ -33,6 +33,10 @@ struct SurfacePoints {
         covered(static_cast<std::size_t>(w) * h, 0),
         position_error(static_cast<std::size_t>(w) * h, 0) {}
   [[nodiscard]] std::size_t size() const { return covered.size(); }
+  // position_error[i], or 0 where the points were built without bounds.
+  [[nodiscard]] float error_bound(std::size_t i) const {
+    return i < position_error.size() ? position_error[i] : 0.0f;
+  }
 };
 
 }  // namespace penumbra
