@@ -447,10 +447,7 @@ int run_compare_command(CompareArgs& args) {
   Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index, args.ground);
   apply_light_choice(args.light, scene);
   const int light_index = args.render.light_index;
-  if (light_index >= static_cast<int>(scene.lights.size())) {
-    throw UsageError("--light-index " + std::to_string(light_index) + ": scene '" + scene.name +
-                     "' has " + std::to_string(scene.lights.size()) + " light(s)");
-  }
+  check_light_index(light_index, scene);
   apply_scene_options(args.scene_options, light_index, scene);
   const std::string cache_dir =
       !args.cache ? std::string() : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
