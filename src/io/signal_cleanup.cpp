@@ -79,16 +79,14 @@ void write_text(const char* text) {
 // The decimal digits of a small non-negative number, for the handler
 // (snprintf is not async-signal-safe).
 void write_number(int value) {
-  char digits[12];
-  int n = 0;
-  do {
-    digits[n++] = static_cast<char>('0' + value % 10);
-    value /= 10;
-  } while (value > 0 && n < 11);
   char text[12];
-  for (int i = 0; i < n; ++i) text[i] = digits[n - 1 - i];
-  text[n] = '\0';
-  write_text(text);
+  char* first = text + sizeof text - 1;  // written backwards from the end
+  *first = '\0';
+  do {
+    *--first = static_cast<char>('0' + value % 10);
+    value /= 10;
+  } while (value > 0 && first > text);
+  write_text(first);
 }
 
 // A crash (a failed assert in a library, or a driver under memory
