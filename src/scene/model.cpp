@@ -30,6 +30,7 @@
 #include "scene/direct_readers.hpp"
 #include "scene/gltf_extensions.hpp"
 #include "scene/gltf_lights.hpp"
+#include "scene/gltf_scene.hpp"
 #include "scene/smooth_normals.hpp"
 #include "scene/texture.hpp"
 
@@ -77,15 +78,12 @@ std::string one_line(std::string text) {
 
 // Assimp catches std::bad_alloc and reports it as its error text; it is
 // rethrown, so the reader reports the memory limit.
-bool has_extension(const std::string& path, const char* extension);
-
 [[noreturn]] void fail_import(const std::string& path, const Assimp::Importer& importer) {
   const std::string error = one_line(importer.GetErrorString());
   if (error.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
   // Assimp says "no suitable reader found" for a glTF whose JSON (or GLB
   // header) it cannot parse: say what is wrong with it instead.
-  if (error.find("No suitable reader") != std::string::npos &&
-      (has_extension(path, ".gltf") || has_extension(path, ".glb"))) {
+  if (error.find("No suitable reader") != std::string::npos && is_gltf_path(path)) {
     read_gltf_extensions(path);  // throws "<path>: not valid glTF JSON: ..."
   }
   fail(path, "cannot read the model: " + error);
