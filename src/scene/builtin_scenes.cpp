@@ -149,20 +149,13 @@ Scene framed_model_scene(const std::string& path) {
   const Bounds& b = model.model->bounds;
   const glm::vec3 extent = b.max - b.min;
   const float largest = std::max({extent.x, extent.y, extent.z});
-  if (!std::isfinite(largest)) throw RuntimeError(path + ": the model is too large to frame");
+  // Bounds that pass leave the scale a normal float too (a GPU flushes
+  // smaller ones to zero): largest < 3.4e37, so scale > 5.9e-38.
+  check_frameable(path, b, "a framed view");
   if (largest <= 0.0f) {
     throw RuntimeError(path + ": the model has no extent (every vertex is at one point)");
   }
   const float scale = kFramedModelSize / largest;
-  // Finite coordinates near float's limit (3.4e38) overflow the framing:
-  // the bounding sphere, or a scale too small for a normal float (which a
-  // GPU flushes to zero), would leave nothing in view.
-  if (!std::isfinite(glm::length(extent)) || !std::isnormal(scale)) {
-    std::ostringstream what;
-    what << path << ": coordinates span " << largest
-         << " units, too large to frame (a float's range ends at 3.4e+38)";
-    throw RuntimeError(what.str());
-  }
   model.scale = glm::vec3(scale);
   // Centred over the origin, its lowest point on the ground.
   model.position = {-scale * b.center().x, -scale * b.min.y, -scale * b.center().z};
@@ -208,6 +201,17 @@ glm::vec3 key_shadow_direction() {
 }
 
 }  // namespace
+
+void check_frameable(const std::string& path, const Bounds& bounds, const char* what) {
+  const float size = glm::length(bounds.max - bounds.min);
+  if (!std::isfinite(10.0f * size)) {
+    const glm::vec3 reach = glm::max(glm::abs(bounds.min), glm::abs(bounds.max));
+    std::ostringstream text;
+    text << path << ": coordinates reach " << std::max({reach.x, reach.y, reach.z})
+         << ", too large to make " << what << " for (a float's range ends at 3.4e+38)";
+    throw RuntimeError(text.str());
+  }
+}
 
 Camera framing_camera(const Bounds& bounds) {
   const glm::vec3 extent = bounds.max - bounds.min;

@@ -23,6 +23,12 @@ std::optional<Scene> builtin_scene(const std::string& name);
 inline constexpr float kFramedModelSize = 2.0f;
 Scene framed_model_scene(const std::string& path);
 
+// Throws RuntimeError "<path>: coordinates reach X, too large to make
+// <what> for ..." where the bounds' size, times the ground's 10, overflows
+// a float (coordinates near 3.4e38): the camera, lights or ground made
+// from them below would leave nothing in view.
+void check_frameable(const std::string& path, const Bounds& bounds, const char* what);
+
 // The camera framed_model_scene aims at a model, for any world-space
 // bounds: from the front left (35 degrees round from the front), 40
 // degrees above the horizon, the bounding sphere filling 80% of the

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 #include "penumbra/error.hpp"
 #include "penumbra/shared/bindings.h"
@@ -29,20 +28,6 @@ GltfExtensions read_gltf_extensions_checked(const std::string& path) {
     return read_gltf_extensions(path);
   } catch (const RuntimeError&) {
     return {};
-  }
-}
-
-// Bounds from which a camera, lights or a ground are made (`what`): their
-// size times the ground's 10 must stay a float, or (coordinates near
-// 3.4e38) the scene would be drawn empty.
-void check_frameable(const std::string& path, const Bounds& bounds, const char* what) {
-  const float size = glm::length(bounds.max - bounds.min);
-  if (!std::isfinite(10.0f * size)) {
-    const glm::vec3 reach = glm::max(glm::abs(bounds.min), glm::abs(bounds.max));
-    std::ostringstream text;
-    text << path << ": coordinates reach " << std::max({reach.x, reach.y, reach.z})
-         << ", too large to make " << what << " for (a float's range ends at 3.4e+38)";
-    throw RuntimeError(text.str());
   }
 }
 
