@@ -69,34 +69,29 @@ gl::Texture upload(const TextureImage& image, float cutoff) {
   return texture;
 }
 
-gl::Sampler make_sampler(TextureWrap s, TextureWrap t, bool nearest) {
-  gl::Sampler sampler(
-      gl::SamplerInfo{.min_filter = GL_LINEAR_MIPMAP_LINEAR,
-                      .mag_filter = static_cast<GLenum>(nearest ? GL_NEAREST : GL_LINEAR),
-                      .wrap = gl_wrap(s),
-                      .label = "base colour"});
+// What a batch's texture is sampled for: its colour, trilinear and
+// anisotropic (the ground and leaf cards are seen at grazing angles), or
+// the alpha test, bilinear within the nearest level and not anisotropic,
+// so that the coverage each level keeps is the coverage the test sees
+// (shaders/scene/surface.glsl).
+enum class SampledFor { Colour, AlphaTest };
+
+gl::Sampler make_sampler(TextureWrap s, TextureWrap t, bool nearest, SampledFor use) {
+  const bool colour = use == SampledFor::Colour;
+  gl::Sampler sampler(gl::SamplerInfo{
+      .min_filter =
+          static_cast<GLenum>(colour ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST),
+      .mag_filter = static_cast<GLenum>(nearest ? GL_NEAREST : GL_LINEAR),
+      .wrap = gl_wrap(s),
+      .label = colour ? "base colour" : "base alpha"});
   glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(gl_wrap(t)));
-  // Anisotropic filtering (core in OpenGL 4.6; an extension before): the
-  // ground and leaf cards are seen at grazing angles.
-  if (epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
-      epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic")) {
+  // Anisotropic filtering: core in OpenGL 4.6, an extension before.
+  if (colour && (epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
+                 epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))) {
     float most = 1.0f;
     glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &most);
     glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(16.0f, most));
   }
-  return sampler;
-}
-
-// The alpha test's sampler: bilinear within the nearest level only, not
-// anisotropic, so that the coverage each level keeps is the coverage the
-// test sees (shaders/scene/surface.glsl).
-gl::Sampler make_alpha_sampler(TextureWrap s, TextureWrap t, bool nearest) {
-  gl::Sampler sampler(
-      gl::SamplerInfo{.min_filter = GL_LINEAR_MIPMAP_NEAREST,
-                      .mag_filter = static_cast<GLenum>(nearest ? GL_NEAREST : GL_LINEAR),
-                      .wrap = gl_wrap(s),
-                      .label = "base alpha"});
-  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(gl_wrap(t)));
   return sampler;
 }
 
@@ -153,9 +148,10 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
   const auto batch_for = [&](const Key& key) {
     auto [b, added] = batch_index.try_emplace(key, batches_.size());
     if (added) {
-      samplers_.push_back(make_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key)));
-      alpha_samplers_.push_back(
-          make_alpha_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key)));
+      samplers_.push_back(
+          make_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key), SampledFor::Colour));
+      alpha_samplers_.push_back(make_sampler(std::get<1>(key), std::get<2>(key), std::get<3>(key),
+                                             SampledFor::AlphaTest));
       batches_.push_back({.cut_out = std::get<4>(key)});
     }
     return b->second;
