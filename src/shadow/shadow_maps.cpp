@@ -4,6 +4,7 @@
 #include "penumbra/shadow_maps.hpp"
 
 #include <algorithm>
+#include <array>
 #include <glm/gtc/matrix_transform.hpp>
 #include <optional>
 #include <stdexcept>
@@ -24,6 +25,7 @@
 #include "penumbra/shadow/shadow_map_pass.hpp"
 #include "penumbra/shadow/shadow_views.hpp"
 #include "penumbra/version.hpp"
+#include "shadow/gl_state_guard.hpp"
 
 namespace penumbra {
 
@@ -54,7 +56,32 @@ struct ShadowMaps::Impl {
   bool rendered = false;
 };
 
+namespace {
+
+// What render() binds besides the fixed state GlStateGuard always saves:
+// the compute passes' input unit and output images, the block, and the
+// Gaussian's weights.
+constexpr std::array<GLuint, 1> kRenderTextureUnits{UNIT_COMPUTE_INPUT};
+constexpr std::array<GLuint, 2> kRenderImageUnits{IMAGE_OUTPUT, IMAGE_OUTPUT_2};
+constexpr std::array<GLuint, 1> kRenderUniformBuffers{kShadowBlockBinding};
+constexpr std::array<GLuint, 1> kRenderStorageBuffers{BINDING_FILTER_WEIGHTS_SSBO};
+const GlBindingPoints kRenderBindings{kRenderTextureUnits, kRenderImageUnits, kRenderUniformBuffers,
+                                      kRenderStorageBuffers};
+
+// The implementation, or std::logic_error after release() (or a move).
+template <typename ImplPtr>
+auto& live(ImplPtr& impl, const char* call) {
+  if (!impl) {
+    throw std::logic_error(std::string("ShadowMaps::") + call + "() after release()");
+  }
+  return *impl;
+}
+
+}  // namespace
+
 ShadowMaps::ShadowMaps() : impl_(std::make_unique<Impl>()) {}
+// The GL objects' handles delete them only while a context is current
+// (gl::Handle::reset): destroyed without one, they are forgotten.
 ShadowMaps::~ShadowMaps() = default;
 ShadowMaps::ShadowMaps(ShadowMaps&&) noexcept = default;
 ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
@@ -67,7 +94,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
     throw UsageError("ShadowMaps: " + std::to_string(lights.size()) + " lights; at most " +
                      std::to_string(kMaxLights) + " are supported");
   }
-  Impl& m = *impl_;
+  Impl& m = live(impl_, "update");
   m.settings = settings;
   m.fitted.resize(lights.size());
   m.fit_inputs.resize(lights.size());
@@ -102,12 +129,10 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
 }
 
 void ShadowMaps::render(const DrawCasters& draw) {
-  Impl& m = *impl_;
+  Impl& m = live(impl_, "render");
   if (!m.updated) throw std::logic_error("ShadowMaps::render() before update()");
-  GLint framebuffer = 0;
-  GLint viewport[4] = {};
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-  glGetIntegerv(GL_VIEWPORT, viewport);
+  const GlStateGuard saved(kRenderBindings);
+  set_caster_pass_state();
   glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, m.block_buffer.id());
 
   const ShadowSettings& s = m.settings;
@@ -147,14 +172,15 @@ void ShadowMaps::render(const DrawCasters& draw) {
       }
     }
   }
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   m.rendered = true;
 }
 
 void ShadowMaps::bind() const {
-  const Impl& m = *impl_;
+  const Impl& m = live(impl_, "bind");
   if (!m.rendered) throw std::logic_error("ShadowMaps::bind() before render()");
+  // The indexed bindings and units below stay bound; glBindBufferBase
+  // also moves the generic bindings, which the guard puts back.
+  const GenericBufferBindingsGuard saved;
   glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, m.block_buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, m.poisson.id());
   const GLuint depth = m.map_pass.depth_maps().id();
@@ -173,17 +199,21 @@ void ShadowMaps::bind() const {
   glBindTextureUnit(kShadowSatUnit, sat ? m.filtered : 0);
 }
 
+void ShadowMaps::release() {
+  impl_.reset();
+}
+
 const ShadowBlock& ShadowMaps::block() const {
-  return impl_->block;
+  return live(impl_, "block").block;
 }
 int ShadowMaps::view_count() const {
-  return impl_->block.counts.y;
+  return live(impl_, "view_count").block.counts.y;
 }
-GLuint ShadowMaps::depth_maps() const {
-  return impl_->map_pass.depth_maps().id();
+std::uint32_t ShadowMaps::depth_maps() const {
+  return live(impl_, "depth_maps").map_pass.depth_maps().id();
 }
-GLuint ShadowMaps::filtered_maps() const {
-  return impl_->filtered;
+std::uint32_t ShadowMaps::filtered_maps() const {
+  return live(impl_, "filtered_maps").filtered;
 }
 
 std::string shadow_lookup_glsl() {
