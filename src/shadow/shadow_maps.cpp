@@ -58,6 +58,9 @@ struct ShadowMaps::Impl {
 
 namespace {
 
+// The public header's GL-free types stand for these (OpenGL 4.5, table 2.2).
+static_assert(sizeof(GLuint) == sizeof(std::uint32_t) && sizeof(GLint) == sizeof(std::int32_t));
+
 // What render() binds besides the fixed state GlStateGuard always saves:
 // the compute passes' input unit and output images, the block, and the
 // Gaussian's weights.
