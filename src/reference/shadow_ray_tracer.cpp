@@ -131,9 +131,10 @@ struct RayPacket<16> {
 // packet instead of per ray; Embree traverses the packet's rays together,
 // and a pixel's rays to one light share their origin and nearly their
 // direction). N is the widest packet the device's instruction set traces
-// natively (packet_width()): Embree 3 hands a wider packet to its stream
-// fallback, which repacks it lane by lane into native packets and back
-// (measured: rtcOccluded16 on AVX2 costs ... the native rtcOccluded8).
+// natively (packet_width_): Embree 3 hands a wider packet to its stream
+// fallback, which repacks it into native packets and back. (On the
+// default scene with isa=avx2 on a Xeon both ran at 51 M rays per
+// CPU-second; the native width saves the repacking wherever it costs.)
 // Each ray remembers the pixel it serves and the weight of its source
 // point; one that reaches the light adds the weight to that pixel's lit
 // sum, in the order the rays were added, so the sums do not depend on N.
