@@ -33,22 +33,16 @@ std::string map_size_text(int size) {
   return std::to_string(size) + "^2";
 }
 
-// Renders one image into the report folder, or records why it failed.
-// With `shadow_factor`, also the spot light's shadow factor of the same
-// frame (Renderer::shade: its maps are not rendered again), for the
-// measurements of the same setting; nullopt if it failed.
 HtmlFigure Study::figure(const std::string& file, const std::string& caption, RenderSettings render,
                          ShadowSettings shadow, std::optional<Image>* shadow_factor) {
   return figure(renderer_, options_.light_choice, file, caption, render, shadow, shadow_factor);
 }
-// The same with another renderer, made for the scene with `light_choice`.
 HtmlFigure Study::figure(Renderer& renderer, const std::string& light_choice,
                          const std::string& file, const std::string& caption, RenderSettings render,
                          ShadowSettings shadow, std::optional<Image>* shadow_factor) {
   return figure(renderer, options_.scene_argument, options_.model_argument, light_choice, file,
                 caption, render, shadow, shadow_factor);
 }
-// The same for another scene, named by its --scene (or --model) argument.
 HtmlFigure Study::figure(Renderer& renderer, const std::string& scene_argument,
                          const std::string& model_argument, const std::string& light_choice,
                          const std::string& file, const std::string& caption, RenderSettings render,
@@ -85,7 +79,6 @@ HtmlFigure Study::figure(Renderer& renderer, const std::string& scene_argument,
   return f;
 }
 
-// Another view of the frame the renderer made last (Renderer::shade).
 std::optional<Image> Study::shaded(Renderer& renderer, View view) {
   try {
     renderer.shade(view);
@@ -98,7 +91,6 @@ std::optional<Image> Study::shaded(Renderer& renderer, View view) {
   }
 }
 
-// An image the study computed (not rendered by one command) as a figure.
 HtmlFigure Study::written_figure(const Image& image, const std::string& file,
                                  const std::string& caption, PngEncoding encoding) {
   HtmlFigure f;
@@ -119,14 +111,11 @@ std::string Study::path_of(const std::string& file) const {
   return (std::filesystem::path(options_.output_dir) / file).string();
 }
 
-// Starts a section of the page, and the step of the progress it is.
 void Study::section(HtmlPage& page, const std::string& id, const std::string& title) {
   page.section(id, title);
   progress_.step(title, items_, total_items());
 }
 
-// One item done; `weight` counts it as that many frames' worth of work,
-// so the time left is estimated from like units.
 void Study::step(int weight) {
   items_ += weight;
   progress_.update(items_, total_items());
@@ -145,8 +134,6 @@ ShadowSettings Study::with(Technique t) const {
   if (is_filterable(t)) s.blur = 4;
   return s;
 }
-// A moment technique's soft shadows: its summed-area table, each
-// pixel's filter sized from a blocker search.
 ShadowSettings Study::soft(Technique t) const {
   ShadowSettings s = with(t);
   s.filter = Filter::Sat;
@@ -155,8 +142,6 @@ ShadowSettings Study::soft(Technique t) const {
   return s;
 }
 
-// The traced reference of the spot light at the base settings (light
-// size included), traced once.
 const TracedReference* Study::base_traced() {
   if (!traced_tried_) {
     traced_tried_ = true;
@@ -172,7 +157,6 @@ const TracedReference* Study::base_traced() {
   }
   return traced_ ? &*traced_ : nullptr;
 }
-// The spot light's shadow factor against the filtered reference.
 std::optional<ShadowMetrics> Study::measure_against_filtered(
     const ShadowSettings& shadow, const std::optional<Image>& technique) {
   const Image* reference = filtered_reference(shadow);
@@ -180,11 +164,6 @@ std::optional<ShadowMetrics> Study::measure_against_filtered(
   return compare_shadow(*technique, *reference);
 }
 
-// The filtered hard reference of a filterable technique's settings: the
-// depth map's tests averaged with the filter's kernel
-// (filtered_hard_reference in shaders/render/lighting.frag), which reads
-// neither the technique nor its constants (ESM's c), so the study renders
-// it once per kernel, map and bias.
 const Image* Study::filtered_reference(const ShadowSettings& shadow) {
   ShadowSettings key = shadow;
   key.technique = Technique::Vsm;
@@ -203,8 +182,6 @@ const Image* Study::filtered_reference(const ShadowSettings& shadow) {
   return &filtered_references_.back().second;
 }
 
-// A technique's shadow factor at with(t), as section 1 read it, or
-// rendered now.
 std::optional<Image> Study::technique_shadow(Technique t) {
   for (auto& [technique, image] : technique_shadows_) {
     if (technique == t) return image;
@@ -212,7 +189,6 @@ std::optional<Image> Study::technique_shadow(Technique t) {
   return shadow_image(with(t));
 }
 
-// The spot light's shadow factor of a technique, or nullopt on failure.
 std::optional<Image> Study::shadow_image(const ShadowSettings& shadow, View view) {
   return shadow_image(renderer_, base_render_, shadow, view);
 }
