@@ -4,9 +4,7 @@
 
 #include "io/atomic_file.hpp"
 #include "render/pass_timing.hpp"
-#include "report/foliage_scene.hpp"
 #include "report/study_run.hpp"
-#include "scene/gltf_scene.hpp"
 
 namespace penumbra {
 
@@ -36,15 +34,6 @@ Study::Study(const Scene& scene, const StudyOptions& options, gl::Context& conte
   base_render_.width = size.width;
   base_render_.height = size.height;
   base_shadow_.map_size = size.map_size;
-  // The foliage scene's files go into the report's folder, so the commands
-  // under section 8's images run there as they are.
-  try {
-    const std::string file =
-        write_foliage_scene((std::filesystem::path(options_.output_dir) / "foliage").string());
-    foliage_scene_ = gltf_scene(file);
-  } catch (const std::exception& e) {
-    foliage_error_ = e.what();
-  }
 }
 
 int Study::total_items() const {

@@ -196,11 +196,8 @@ class Study {
   std::vector<std::pair<std::string, double>> total_ms_;
   std::list<std::pair<ShadowSettings, Image>> filtered_references_;
   std::vector<std::pair<Technique, Image>> technique_shadows_;  // section 1's, at with(t)
-  // The foliage scene (section 8), read before the sections so that its
-  // lights count in the progress total; nullopt with the reason if it
-  // could not be written or read.
+  // The foliage scene (section 8), once written and read.
   std::optional<Scene> foliage_scene_;
-  std::string foliage_error_;
   // What the verdict is drawn from (a foliage section sets its line).
   StudyFindings findings_;
   ProgressBar progress_{"report"};

@@ -4,9 +4,13 @@
 #include <filesystem>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "reference/error_image.hpp"
 #include "reference/reference_cache.hpp"
+#include "report/foliage_scene.hpp"
 #include "report/svg_plot.hpp"
+#include "scene/gltf_scene.hpp"
 
 namespace penumbra {
 
@@ -29,6 +33,22 @@ std::vector<Technique> foliage_swept_techniques(bool quick) {
   return quick ? std::vector<Technique>{Technique::Hard}
                : std::vector<Technique>{Technique::Hard, Technique::Pcf, Technique::Pcss,
                                         Technique::Vsm, Technique::Msm};
+}
+
+// The lights of the foliage scene's glTF file (KHR_lights_punctual), for
+// the progress total before the section reads the scene.
+int foliage_light_count() {
+  for (const EmbeddedFile& file : foliage_scene_files()) {
+    if (file.name != "foliage.gltf") continue;
+    const nlohmann::json gltf = nlohmann::json::parse(file.bytes, nullptr, false);
+    const auto lights = gltf.is_discarded()
+                            ? nlohmann::json()
+                            : gltf.value("extensions", nlohmann::json::object())
+                                  .value("KHR_lights_punctual", nlohmann::json::object())
+                                  .value("lights", nlohmann::json::array());
+    return lights.is_array() ? static_cast<int>(lights.size()) : 0;
+  }
+  return 0;
 }
 
 // Sum of (1 - technique) over sum of (1 - reference), over the pixels both
@@ -95,8 +115,7 @@ std::string foliage_summary(const std::string& light,
 // The scene's figure; per light its traced reference and a measurement
 // per technique, then the other map sizes' measurements.
 int Study::foliage_items() const {
-  if (!foliage_scene_) return 0;
-  const auto lights = static_cast<int>(foliage_scene_->lights.size());
+  const int lights = foliage_light_count();
   const auto techniques = static_cast<int>(foliage_techniques(options_.quick).size());
   const std::vector<int> sizes = foliage_map_sizes_measured();
   const auto other_sizes =
@@ -113,9 +132,17 @@ void Study::foliage_section(HtmlPage& page) {
   const int samples = traced_samples();
   const std::vector<Technique> techniques = foliage_techniques(options_.quick);
   const std::string scene_argument = "foliage/foliage.gltf";
-  if (!foliage_scene_) {
+  // The scene's files go into the report's folder, so the commands under
+  // the images run there as they are. Written here, not before: an
+  // interrupted report removes its staged folder's files, and the study
+  // writes no folder inside it before it must.
+  try {
+    write_foliage_scene((std::filesystem::path(options_.output_dir) / "foliage").string());
+    foliage_scene_ =
+        gltf_scene((std::filesystem::path(options_.output_dir) / scene_argument).string());
+  } catch (const std::exception& e) {
     ++failed_;
-    page.paragraph("The foliage scene could not be read: " + foliage_error_);
+    page.paragraph(std::string("The foliage scene could not be read: ") + e.what());
     return;
   }
   const Scene* scene = &*foliage_scene_;
