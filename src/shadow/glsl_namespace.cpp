@@ -400,6 +400,39 @@ std::string prefix_declarations(std::string_view text) {
   return out;
 }
 
+std::string drop_unused_macros(std::string_view text) {
+  std::string current(text);
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    const std::vector<Token> tokens = tokenize(current);
+    std::map<std::string_view, int> uses;
+    for (const Token& t : tokens)
+      if (t.kind == Kind::Identifier) ++uses[t.text];
+    std::string out;
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+      if (tokens[i].directive && tokens[i].text == "#") {
+        // The directive's words, and where it ends (its newline included).
+        std::vector<std::size_t> words;
+        std::size_t end = i + 1;
+        for (; end < tokens.size() && tokens[end].directive; ++end) {
+          if (tokens[end].kind != Kind::Space && tokens[end].kind != Kind::Comment)
+            words.push_back(end);
+        }
+        if (words.size() >= 2 && tokens[words[0]].text == "define" &&
+            uses[tokens[words[1]].text] == 1) {
+          dropped = true;
+          if (end < tokens.size() && tokens[end].text == "\n") ++end;
+          i = end - 1;
+          continue;
+        }
+      }
+      out += tokens[i].text;
+    }
+    current = std::move(out);
+  }
+  return current;
+}
+
 std::string strip_cplusplus_sections(std::string_view text) {
   // One entry per open conditional: whether its current branch is C++ only,
   // and whether it is a __cplusplus test at all.

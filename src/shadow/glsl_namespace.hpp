@@ -47,6 +47,11 @@ std::string prefixed_name(std::string_view name);
 // left alone. Throws RuntimeError if a new name is already used in `text`.
 std::string prefix_declarations(std::string_view text);
 
+// `text` without the #define directives of macros it never uses (repeated
+// until none is left: a macro used only by an unused one goes too), so that
+// an engine reading the lookup sees only what it needs. Comments stay.
+std::string drop_unused_macros(std::string_view text);
+
 // `text` without its `#ifdef __cplusplus` sections (the C++ half of the
 // headers shared by C++ and GLSL, which a GLSL compiler skips), their
 // `#else` branches kept; lines removed are left empty.

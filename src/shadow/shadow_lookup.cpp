@@ -21,7 +21,8 @@ namespace {
 // The lookup up to the #line that restores the engine's numbering: a
 // header whose own #line makes the line numbers the driver reports inside
 // the lookup those of this text (of share/penumbra/penumbra_shadows.glsl),
-// the binding macros, then the expanded, prefixed lookup.
+// the binding macros, then the expanded, prefixed lookup (without the
+// macros of bindings.h that only penumbra's renderer uses).
 std::string lookup_text(const ShadowBindings& bindings) {
   check_distinct_units(bindings);
   std::string defines;
@@ -34,7 +35,7 @@ std::string lookup_text(const ShadowBindings& bindings) {
          " shadow lookup (shaders/shadow/penumbra_shadows.glsl, includes expanded, every name\n"
          "// it declares prefixed PENUMBRA_, Penumbra or penumbra_). Ends in \"#line 2\".\n"
          "#line 4\n" +
-         glsl::prefix_declarations(defines + expanded);
+         glsl::drop_unused_macros(glsl::prefix_declarations(defines + expanded));
 }
 
 }  // namespace
