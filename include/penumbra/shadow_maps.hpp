@@ -131,8 +131,9 @@ class ShadowMaps {
 std::string shadow_lookup_glsl(const ShadowBindings& bindings = {});
 
 // `shader` (an engine's GLSL source) with the lookup inserted after its
-// #version line and the #extension lines that follow it, and a #line that
-// restores the shader's own line numbers after it. Throws UsageError if
+// #version line and the #extension and #define PENUMBRA_... lines that
+// follow it (PENUMBRA_NO_FRAGMENT_ENTRY_POINTS), and a #line that restores
+// the shader's own line numbers after it. Throws UsageError if
 // `shader` has no #version line, or as shadow_lookup_glsl().
 std::string insert_shadow_lookup(std::string_view shader, const ShadowBindings& bindings = {});
 

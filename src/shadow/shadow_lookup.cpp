@@ -92,37 +92,35 @@ std::string shadow_lookup_glsl(const ShadowBindings& bindings) {
 }
 
 std::string insert_shadow_lookup(std::string_view source, const ShadowBindings& bindings) {
-  // After the #version line and the #extension lines that follow it (they
-  // must precede every declaration), comments and blank lines between.
-  std::size_t insert_at = std::string_view::npos;  // offset of the first engine line after it
+  // After the #version line, the #extension lines that follow it (they
+  // must precede every declaration) and the engine's #define PENUMBRA_...
+  // lines that configure the lookup (PENUMBRA_NO_FRAGMENT_ENTRY_POINTS);
+  // comments and blank lines may come between.
+  std::size_t insert_at = 0;  // where the engine's first line after the head starts
   int lines_before = 0;
   bool version = false;
-  std::size_t offset = 0;
   int line = 0;
-  while (offset < source.size()) {
+  for (std::size_t offset = 0; offset < source.size();) {
     std::size_t end = source.find('\n', offset);
     end = end == std::string_view::npos ? source.size() : end + 1;
-    const std::string_view text = source.substr(offset, end - offset);
     ++line;
-    std::istringstream words{std::string(text)};
-    std::string first;
-    words >> first;
-    if (first == "#") {
-      std::string directive;
-      words >> directive;
-      first += directive;
-    }
-    if (first == "#version" && !version) {
-      version = true;
-    } else if (version && first == "#extension") {
-    } else if (!first.empty() && !first.starts_with("//")) {
-      break;
-    }
-    if (version && (first == "#version" || first == "#extension")) {
-      insert_at = end;
-      lines_before = line;
+    std::istringstream words{std::string(source.substr(offset, end - offset))};
+    std::string first, second;
+    words >> first >> second;
+    if (first == "#") {  // "# version 450"
+      first += second;
+      words >> second;
     }
     offset = end;
+    if (first.empty() || first.starts_with("//")) continue;
+    const bool head = first == "#version"
+                          ? !version
+                          : version && (first == "#extension" ||
+                                        (first == "#define" && second.starts_with("PENUMBRA_")));
+    if (!head) break;
+    version = true;
+    insert_at = end;
+    lines_before = line;
   }
   if (!version) throw UsageError("insert_shadow_lookup: the shader has no #version line");
   std::string head(source.substr(0, insert_at));

@@ -239,6 +239,13 @@ TEST(ShadowLookupGlsl, InsertsAfterTheVersionAndExtensionsAndRestoresTheLines) {
   const std::string lookup = shadow_lookup_glsl();
   const std::string body = lookup.substr(0, lookup.size() - std::string("#line 2\n").size());
   EXPECT_EQ(out, head + body + "#line 6\nconst int MAX_LIGHTS = 8;\nvoid main() {}\n");
+  // The engine's configuration of the lookup stays before it.
+  const std::string configured = insert_shadow_lookup(
+      "#version 450 core\n#define PENUMBRA_NO_FRAGMENT_ENTRY_POINTS\n#define MINE 1\n");
+  EXPECT_TRUE(configured.starts_with(
+      "#version 450 core\n#define PENUMBRA_NO_FRAGMENT_ENTRY_POINTS\n" + body + "#line 3\n"))
+      << configured.substr(0, 200);
+  EXPECT_TRUE(configured.ends_with("#line 3\n#define MINE 1\n"));
   // No #version: nowhere to put it.
   EXPECT_THROW(insert_shadow_lookup("void main() {}\n"), UsageError);
   // A #version alone, without its newline.
