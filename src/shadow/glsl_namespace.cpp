@@ -401,6 +401,9 @@ std::string prefix_declarations(std::string_view text) {
 }
 
 std::string drop_unused_macros(std::string_view text) {
+  // Each dropped #define becomes a line holding only kDropped, until the
+  // paragraphs are tidied below.
+  constexpr char kDropped = '\x01';
   std::string current(text);
   for (bool dropped = true; dropped;) {
     dropped = false;
@@ -411,7 +414,7 @@ std::string drop_unused_macros(std::string_view text) {
     std::string out;
     for (std::size_t i = 0; i < tokens.size(); ++i) {
       if (tokens[i].directive && tokens[i].text == "#") {
-        // The directive's words, and where it ends (its newline included).
+        // The directive's words, and where it ends (before its newline).
         std::vector<std::size_t> words;
         std::size_t end = i + 1;
         for (; end < tokens.size() && tokens[end].directive; ++end) {
@@ -421,7 +424,7 @@ std::string drop_unused_macros(std::string_view text) {
         if (words.size() >= 2 && tokens[words[0]].text == "define" &&
             uses[tokens[words[1]].text] == 1) {
           dropped = true;
-          if (end < tokens.size() && tokens[end].text == "\n") ++end;
+          out += kDropped;
           i = end - 1;
           continue;
         }
@@ -430,7 +433,41 @@ std::string drop_unused_macros(std::string_view text) {
     }
     current = std::move(out);
   }
-  return current;
+  // A paragraph (lines between blank ones) of nothing but dropped macros
+  // and comments goes whole, with the blank line after it: its comments
+  // were about those macros. Elsewhere only the dropped lines go.
+  std::vector<std::string> lines;
+  std::istringstream in(current);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  const auto blank = [](const std::string& line) {
+    return line.find_first_not_of(" \t") == std::string::npos;
+  };
+  const auto comment = [](const std::string& line) {
+    const std::size_t first = line.find_first_not_of(" \t");
+    return first != std::string::npos && line.compare(first, 2, "//") == 0;
+  };
+  std::string out;
+  for (std::size_t i = 0; i < lines.size();) {
+    if (blank(lines[i])) {
+      out += lines[i++] + "\n";
+      continue;
+    }
+    std::size_t end = i;
+    bool only_dropped_and_comments = true, any_dropped = false;
+    for (; end < lines.size() && !blank(lines[end]); ++end) {
+      const bool is_dropped = lines[end] == std::string(1, kDropped);
+      any_dropped = any_dropped || is_dropped;
+      only_dropped_and_comments = only_dropped_and_comments && (is_dropped || comment(lines[end]));
+    }
+    if (any_dropped && only_dropped_and_comments) {
+      i = end < lines.size() ? end + 1 : end;
+      continue;
+    }
+    for (; i < end; ++i)
+      if (lines[i] != std::string(1, kDropped)) out += lines[i] + "\n";
+  }
+  if (!text.ends_with('\n') && out.ends_with('\n')) out.pop_back();
+  return out;
 }
 
 std::string strip_cplusplus_sections(std::string_view text) {

@@ -123,10 +123,12 @@ TEST(GlslNamespace, DropsTheMacrosNothingUses) {
   const std::string out = glsl::drop_unused_macros(
       "#ifndef GUARD_H\n#define GUARD_H\n#define UNUSED 1 // why\n#define ONLY_BY_UNUSED 2\n"
       "#define CHAIN (ONLY_BY_UNUSED + 1)\n#define USED 3\n#define LONG \\\n  4\n"
-      "// USED, UNUSED in a comment\nint x = USED;\n#endif\n");
+      "// USED, UNUSED in a comment\nint x = USED;\n\n"
+      "// A paragraph about unused macros alone\n#define NOBODY 1\n#define NOR_THIS 2\n\n"
+      "#endif\n");
   EXPECT_EQ(out,
             "#ifndef GUARD_H\n#define GUARD_H\n#define USED 3\n"
-            "// USED, UNUSED in a comment\nint x = USED;\n#endif\n");
+            "// USED, UNUSED in a comment\nint x = USED;\n\n#endif\n");
 }
 
 // The lookup as an engine gets it declares nothing outside the namespace
