@@ -24,14 +24,18 @@
 #include "penumbra/shadow/shadow_block_data.hpp"
 #include "penumbra/shadow/shadow_map_pass.hpp"
 #include "penumbra/shadow/shadow_views.hpp"
-#include "penumbra/version.hpp"
 #include "shadow/gl_state_guard.hpp"
+#include "shadow/shadow_lookup.hpp"
 
 namespace penumbra {
 
 struct ShadowMaps::Impl {
-  gl::Program caster_program =
-      gl::Program::graphics("shadow/caster_depth.vert", "shadow/caster_depth.frag");
+  explicit Impl(const ShadowBindings& b) : bindings(b) {}
+
+  ShadowBindings bindings;
+  // The caster program declares the block at the engine's binding.
+  gl::Program caster_program = gl::Program::graphics(
+      "shadow/caster_depth.vert", "shadow/caster_depth.frag", shadow_binding_defines(bindings));
   ShadowMapPass map_pass;
   MomentResolvePass resolve_pass;
   GaussianBlurPass blur_pass;
@@ -61,16 +65,6 @@ namespace {
 // The public header's GL-free types stand for these (OpenGL 4.5, table 2.2).
 static_assert(sizeof(GLuint) == sizeof(std::uint32_t) && sizeof(GLint) == sizeof(std::int32_t));
 
-// What render() binds besides the fixed state GlStateGuard always saves:
-// the compute passes' input unit and output images, the block, and the
-// Gaussian's weights.
-constexpr std::array<GLuint, 1> kRenderTextureUnits{UNIT_COMPUTE_INPUT};
-constexpr std::array<GLuint, 2> kRenderImageUnits{IMAGE_OUTPUT, IMAGE_OUTPUT_2};
-constexpr std::array<GLuint, 1> kRenderUniformBuffers{kShadowBlockBinding};
-constexpr std::array<GLuint, 1> kRenderStorageBuffers{BINDING_FILTER_WEIGHTS_SSBO};
-const GlBindingPoints kRenderBindings{kRenderTextureUnits, kRenderImageUnits, kRenderUniformBuffers,
-                                      kRenderStorageBuffers};
-
 // The implementation, or std::logic_error after release() (or a move).
 template <typename ImplPtr>
 auto& live(ImplPtr& impl, const char* call) {
@@ -82,7 +76,8 @@ auto& live(ImplPtr& impl, const char* call) {
 
 }  // namespace
 
-ShadowMaps::ShadowMaps() : impl_(std::make_unique<Impl>()) {}
+ShadowMaps::ShadowMaps(const ShadowBindings& bindings)
+    : impl_(std::make_unique<Impl>(checked_bindings(bindings))) {}
 // The GL objects' handles delete them only while a context is current
 // (gl::Handle::reset): destroyed without one, they are forgotten.
 ShadowMaps::~ShadowMaps() = default;
@@ -134,9 +129,15 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
 void ShadowMaps::render(const DrawCasters& draw) {
   Impl& m = live(impl_, "render");
   if (!m.updated) throw std::logic_error("ShadowMaps::render() before update()");
-  const GlStateGuard saved(kRenderBindings);
+  // Saved besides the fixed state GlStateGuard always saves: the compute
+  // passes' input unit and output images, the block, the Gaussian's weights.
+  const std::array<GLuint, 1> texture_units{UNIT_COMPUTE_INPUT};
+  const std::array<GLuint, 2> image_units{IMAGE_OUTPUT, IMAGE_OUTPUT_2};
+  const std::array<GLuint, 1> uniform_buffers{m.bindings.block};
+  const std::array<GLuint, 1> storage_buffers{BINDING_FILTER_WEIGHTS_SSBO};
+  const GlStateGuard saved({texture_units, image_units, uniform_buffers, storage_buffers});
   set_caster_pass_state();
-  glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, m.block_buffer.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, m.bindings.block, m.block_buffer.id());
 
   const ShadowSettings& s = m.settings;
   const int view_count = m.block.counts.y;
@@ -184,22 +185,27 @@ void ShadowMaps::bind() const {
   // The indexed bindings and units below stay bound; glBindBufferBase
   // also moves the generic bindings, which the guard puts back.
   const GenericBufferBindingsGuard saved;
-  glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, m.block_buffer.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, m.poisson.id());
+  const ShadowBindings& b = m.bindings;
+  glBindBufferBase(GL_UNIFORM_BUFFER, b.block, m.block_buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b.poisson_buffer, m.poisson.id());
   const GLuint depth = m.map_pass.depth_maps().id();
-  glBindTextureUnit(kShadowDepthUnit, depth);
-  glBindSampler(kShadowDepthUnit, m.nearest.id());
-  glBindTextureUnit(kShadowCompareUnit, depth);
-  glBindSampler(kShadowCompareUnit, m.compare.id());
+  glBindTextureUnit(b.depth_unit, depth);
+  glBindSampler(b.depth_unit, m.nearest.id());
+  glBindTextureUnit(b.compare_unit, depth);
+  glBindSampler(b.compare_unit, m.compare.id());
   // The techniques that read no filtered map (or the summed-area tables
   // instead) have the depth maps stand in, so the sampler2DArray the
   // lookup declares is never left unbound.
   const bool sat = m.block.params.filter_type == FILTER_SAT;
   const bool filtered = m.filtered != 0 && !sat;
-  glBindTextureUnit(kShadowFilteredUnit, filtered ? m.filtered : depth);
-  glBindSampler(kShadowFilteredUnit, filtered ? m.bilinear.id() : m.nearest.id());
+  glBindTextureUnit(b.filtered_unit, filtered ? m.filtered : depth);
+  glBindSampler(b.filtered_unit, filtered ? m.bilinear.id() : m.nearest.id());
   // The tables are read texel by texel (texelFetch: no sampler applies).
-  glBindTextureUnit(kShadowSatUnit, sat ? m.filtered : 0);
+  glBindTextureUnit(b.sat_unit, sat ? m.filtered : 0);
+}
+
+const ShadowBindings& ShadowMaps::bindings() const {
+  return live(impl_, "bindings").bindings;
 }
 
 void ShadowMaps::release() {
@@ -217,12 +223,6 @@ std::uint32_t ShadowMaps::depth_maps() const {
 }
 std::uint32_t ShadowMaps::filtered_maps() const {
   return live(impl_, "filtered_maps").filtered;
-}
-
-std::string shadow_lookup_glsl() {
-  return "// penumbra " PENUMBRA_VERSION_STRING
-         " shadow lookup (shaders/shadow/penumbra_shadows.glsl, includes expanded)\n" +
-         gl::expand_shader_includes("shadow/penumbra_shadows.glsl");
 }
 
 }  // namespace penumbra

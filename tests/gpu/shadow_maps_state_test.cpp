@@ -404,14 +404,15 @@ TEST_F(GpuTest, RenderAndBindLeaveTheEnginesStateAsTheyFoundIt) {
     // What bind() documents that it leaves bound: the block, the units the
     // lookup reads and their samplers, PCF's sample set.
     std::set<std::string> bound;
+    const ShadowBindings& b = maps.bindings();
     for (const char* field : {" buffer", " start", " size"}) {
-      bound.insert("uniform buffer " + std::to_string(kShadowBlockBinding) + field);
-      bound.insert("storage buffer " + std::to_string(BINDING_POISSON_SSBO) + field);
+      bound.insert("uniform buffer " + std::to_string(b.block) + field);
+      bound.insert("storage buffer " + std::to_string(b.poisson_buffer) + field);
     }
-    for (unsigned unit :
-         {kShadowDepthUnit, kShadowFilteredUnit, kShadowCompareUnit, kShadowSatUnit}) {
-      for (auto [pname, name] : kTextureBindings)
+    for (unsigned unit : {b.depth_unit, b.filtered_unit, b.compare_unit, b.sat_unit}) {
+      for (auto [pname, name] : kTextureBindings) {
         bound.insert("unit " + std::to_string(unit) + " " + name);
+      }
       bound.insert("unit " + std::to_string(unit) + " sampler");
     }
     const Snapshot after_bind = snapshot();
