@@ -16,6 +16,7 @@
 #include "core/light_sampling.hpp"
 #include "penumbra/error.hpp"
 #include "reference/source_point_sets.hpp"
+#include "reference/terminator_offset.hpp"
 
 namespace penumbra {
 
@@ -163,7 +164,6 @@ class FacetPackets {
     const int lane = size_;
     set_ray(hits_.ray, lane, p + reach * n, -n, 2.0f * reach);
     hits_.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-    point_[lane] = p;
     normal_[lane] = n;
     index_[lane] = index;
     if (++size_ == kWidth) flush();
@@ -180,8 +180,7 @@ class FacetPackets {
         const glm::vec3 g(hits_.hit.Ng_x[lane], hits_.hit.Ng_y[lane], hits_.hit.Ng_z[lane]);
         const float length = glm::length(g);
         if (length > 0.0f) ng = glm::dot(g, n) < 0.0f ? -g / length : g / length;
-        lift = terminator_lift(hits_.hit.primID[lane], hits_.hit.u[lane], hits_.hit.v[lane],
-                               point_[lane], n);
+        lift = terminator_lift(hits_.hit.primID[lane], hits_.hit.u[lane], hits_.hit.v[lane], n);
       }
       normals_[index_[lane]] = ng;
       lifts_[index_[lane]] = lift;
@@ -190,31 +189,21 @@ class FacetPackets {
   }
 
  private:
-  // How far the point p of triangle `triangle` (barycentrics 1 - u - v, u,
-  // v) moves to lie on the smooth surface its vertex normals describe:
-  // below each corner's tangent plane by h_i, it rises by the barycentric
-  // mean of h_i n_i (Hanika, "Hacking the Shadow Terminator", Ray Tracing
-  // Gems II, 2021, ch. 4). A shadow ray from there clears the flat
-  // triangles' own facets at a terminator, as a path tracer's does (Cycles
-  // applies this near terminators by default, its "shadow terminator
-  // geometry offset"); on a flat mesh, whose vertex normals are the
-  // triangles', it is 0. Corner normals facing away from n (a two-sided
-  // surface seen from its back) are turned to n's side.
-  glm::vec3 terminator_lift(unsigned triangle, float u, float v, const glm::vec3& p,
-                            const glm::vec3& n) const {
+  // The rise of triangle `triangle`'s point at barycentrics (1 - u - v, u,
+  // v) to the smooth surface its vertex normals describe, as a vector
+  // along its shading normal n (reference/terminator_offset.hpp);
+  // trace() applies the part of it the light's direction calls for. 0 on a
+  // flat mesh, whose vertex normals are the triangles'.
+  glm::vec3 terminator_lift(unsigned triangle, float u, float v, const glm::vec3& n) const {
     if (mesh_.positions == nullptr || mesh_.indices == nullptr) return glm::vec3(0.0f);
-    const float weights[3] = {1.0f - u - v, u, v};
-    glm::vec3 lift(0.0f);
+    glm::vec3 corners[3], normals[3];
     for (std::size_t c = 0; c < 3; ++c) {
       const std::uint32_t vertex = mesh_.indices[3 * static_cast<std::size_t>(triangle) + c];
       const float* position = mesh_.positions + 3 * static_cast<std::size_t>(vertex);
-      glm::vec3 corner_normal = mesh_.normals[vertex];
-      if (glm::dot(corner_normal, n) < 0.0f) corner_normal = -corner_normal;
-      const float below =
-          glm::dot(glm::vec3(position[0], position[1], position[2]) - p, corner_normal);
-      if (below > 0.0f) lift += weights[c] * below * corner_normal;
+      corners[c] = glm::vec3(position[0], position[1], position[2]);
+      normals[c] = mesh_.normals[vertex];
     }
-    return lift;
+    return smooth_surface_rise(corners, normals, glm::vec3(1.0f - u - v, u, v), n) * n;
   }
 
   RTCScene scene_;
@@ -223,7 +212,6 @@ class FacetPackets {
   glm::vec3* lifts_;
   RTCRayHit16 hits_{};
   alignas(64) int valid_[kWidth] = {};
-  glm::vec3 point_[kWidth];
   glm::vec3 normal_[kWidth];
   int index_[kWidth] = {};
   int size_ = 0;
@@ -537,6 +525,13 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
   const std::uint32_t count = sources.count();
   std::atomic<std::int64_t> rows_done{0}, rays_traced{0}, untraceable{0};
 
+  // The direction from p to the source's centre, which decides how much
+  // of the terminator lift a receiver's rays get.
+  auto light_centre_direction = [&](const glm::vec3& p) {
+    return light.type == LightType::Directional ? -light.direction
+                                                : glm::normalize(light.position - p);
+  };
+
   // Receiver i as far as it needs no ray: its facet normal comes later.
   auto receiver = [&](std::size_t i) {
     Receiver r;
@@ -622,7 +617,9 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
       for (int x = 0; x < width; ++x) {
         if (!traced[x]) continue;
         receivers[x].ng = facets[x];
-        receivers[x].origin += lifts[x];
+        receivers[x].origin += terminator_offset_amount(receivers[x].n, facets[x],
+                                                        light_centre_direction(receivers[x].p)) *
+                               lifts[x];
         sample_pixel(row + x, x, receivers[x], rays, total[x], lit[x], packets);
       }
       packets.flush();
