@@ -23,10 +23,13 @@ TEST(TerminatorOffset, AFlatTriangleDoesNotRise) {
 }
 
 // A triangle of a coarse sphere (an icosahedron's face on the unit
-// sphere, vertex normals its positions): the rise reaches towards the
-// sphere, from the face's centre 0.2056 below it, and never above it; the
-// same from the back, with every normal turned.
-TEST(TerminatorOffset, ACoarseSphereRisesTowardsTheSphere) {
+// sphere, vertex normals its positions): on a convex mesh the corners'
+// tangent planes pass above the corners, so the rise is the lowest plane's
+// height over the point, along the interpolated normal: from the face's
+// centre, 0.2056 below the sphere, it clears the sphere and stays under
+// every corner's tangent plane. The same from the back, with every normal
+// turned.
+TEST(TerminatorOffset, ACoarseSphereRisesUnderItsCornersTangentPlanes) {
   const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
   glm::vec3 corners[3] = {glm::normalize(glm::vec3(-1, t, 0)), glm::normalize(glm::vec3(0, 1, t)),
                           glm::normalize(glm::vec3(1, t, 0))};
@@ -35,8 +38,8 @@ TEST(TerminatorOffset, ACoarseSphereRisesTowardsTheSphere) {
   const float gap = 1.0f - glm::length(p);
   const float rise = smooth_surface_rise(corners, corners, glm::vec3(1.0f / 3.0f), n);
   EXPECT_NEAR(gap, 0.2056f, 1e-3f);
-  EXPECT_GT(rise, 0.5f * gap);
-  EXPECT_LE(rise, gap);
+  EXPECT_GE(rise, gap);
+  for (const glm::vec3& corner : corners) EXPECT_LE(rise, glm::dot(corner - p, corner));
   const glm::vec3 turned[3] = {-corners[0], -corners[1], -corners[2]};
   EXPECT_FLOAT_EQ(smooth_surface_rise(corners, turned, glm::vec3(1.0f / 3.0f), n), rise);
 }
