@@ -418,6 +418,10 @@ def main():
         "rmse_ground": rmse(ground_lit) if ground_lit else 0.0,
         "pixels_cycles_lit": len(cycles_lit),
         "unjudged_but_lit": len(unjudged_lit),
+        # Each as (x, y from the bottom, Cycles' factor, its unshadowed light
+        # over the median).
+        "unjudged_but_lit_pixels": [(i % width, i // width, factor[i], unshadowed[4 * i] / median)
+                                    for i in unjudged_lit[:50]],
     }
     print("PATHTRACE-CHECK " + json.dumps(result))
 

@@ -404,12 +404,11 @@ vec3 lifted_point(GpuLight light, vec3 world, vec3 n, vec4 facet) {
 // computes (src/reference/traced_reference.hpp). cos theta_source
 // cos theta_receiver / d^2 for a spot light's square or a point light's
 // sphere, cos theta_receiver for a direction of the sun's disc; 0 behind
-// the source, or below the tangent plane of the shading normal n or of the
-// triangle (facet_normal), as the reference excludes such points.
-float accumulate_source_weight(GpuLight light, vec3 world, vec3 n, vec3 facet_normal) {
+// the source, or below the tangent plane of the shading normal n, as the
+// reference excludes such points.
+float accumulate_source_weight(GpuLight light, vec3 world, vec3 n) {
   if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
-    vec3 w = -light.direction_cos_outer.xyz;
-    return dot(facet_normal, w) > 0.0 ? max(dot(n, w), 0.0) : 0.0;
+    return max(dot(n, -light.direction_cos_outer.xyz), 0.0);
   }
   vec3 d = light.position_type.xyz - world;
   float distance2 = dot(d, d);
@@ -419,7 +418,7 @@ float accumulate_source_weight(GpuLight light, vec3 world, vec3 n, vec3 facet_no
                             shadow_params.accumulate_normal_z);
   float cos_receiver = dot(n, w);
   float cos_source = -dot(source_normal, w);
-  if (cos_receiver <= 0.0 || cos_source <= 0.0 || dot(facet_normal, w) <= 0.0) return 0.0;
+  if (cos_receiver <= 0.0 || cos_source <= 0.0) return 0.0;
   return cos_source * cos_receiver / distance2;
 }
 
@@ -478,21 +477,20 @@ void main() {
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {
-    // Where no point of the source is above the surface's horizon (the
-    // shading normal's or the triangle's) no light arrives, occluders or
-    // not: 0, and alpha 0 (not judged, as the traced reference marks it).
-    // Elsewhere the technique decides, also on surfaces turned away from
-    // the light's centre, which an area light's source still reaches over
-    // their horizon.
+    // Where no point of the source is above the horizon of the shading
+    // normal no light arrives, occluders or not: 0, and alpha 0 (not
+    // judged, as the traced reference marks it). Elsewhere the technique
+    // decides, also on surfaces turned away from the light's centre, which
+    // an area light's source still reaches over their horizon, and below
+    // their triangle's plane (from the point the terminator model lifts).
     int i = frame.options.z;
-    if (!source_above_horizon(lights[i], world, n) ||
-        !source_above_horizon(lights[i], world, facet_normal)) {
+    if (!source_above_horizon(lights[i], world, n)) {
       out_color = vec4(0.0);
       return;
     }
     float lit = shadow_factor(i, lifted_point(lights[i], world, n, facet), facet_normal,
                               view == VIEW_SHADOW_REFERENCE, rotation, footprint);
-    float weight = accumulate_source_weight(lights[i], world, n, facet_normal);
+    float weight = accumulate_source_weight(lights[i], world, n);
     out_color = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)
                                                        : vec4(vec3(lit), 1.0);
     return;

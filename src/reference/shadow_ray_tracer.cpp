@@ -419,9 +419,9 @@ float keep_if(bool keep, float value) {
 // origin towards the point (the direction is not normalized: t = tfar
 // reaches the point; the sun's rays are unit and unbounded) and the
 // point's weight in the irradiance, 0 where it sends the receiver no
-// light with or without occluders: the part of the source below either
-// tangent plane (the shading normal's, or the triangle's), or the source's
-// back. Struct of arrays, written by branch-free loops the compiler
+// light with or without occluders: the part of the source below the
+// shading normal's tangent plane (Cycles' test for reflection, whatever
+// the triangle's plane), or the source's back. Struct of arrays, written by branch-free loops the compiler
 // vectorizes (the arrays are passed as restrict parameters so that it
 // knows they do not overlap).
 struct PixelRays {
@@ -439,16 +439,15 @@ void square_rays(const float* __restrict sx, const float* __restrict sy, const f
                  std::uint32_t count, const Receiver& r, glm::vec3 facing, float* __restrict x,
                  float* __restrict y, float* __restrict z, float* __restrict tfar,
                  float* __restrict weight) {
-  const glm::vec3 n = r.n, ng = r.ng, p = r.p, o = r.origin, l = facing;
+  const glm::vec3 n = r.n, p = r.p, o = r.origin, l = facing;
   for (std::uint32_t s = 0; s < count; ++s) {
     const float tx = sx[s] - p.x, ty = sy[s] - p.y, tz = sz[s] - p.z;
     const float d2 = tx * tx + ty * ty + tz * tz;
     const float receiver = n.x * tx + n.y * ty + n.z * tz;  // d cos(theta_receiver)
-    const float facet = ng.x * tx + ng.y * ty + ng.z * tz;
     const float source = kOneSided ? -(l.x * tx + l.y * ty + l.z * tz) : std::sqrt(d2);
     const float inv_d2 = 1.0f / d2;
     // Bitwise, not short-circuit: no branch in the loop.
-    const bool lit = (receiver > 0.0f) & (facet > 0.0f) & (source > 0.0f);
+    const bool lit = (receiver > 0.0f) & (source > 0.0f);
     weight[s] = keep_if(lit, (source * inv_d2) * (receiver * inv_d2));
     // Aim from the raised origin at the same point of the source.
     x[s] = sx[s] - o.x;
@@ -463,13 +462,12 @@ void square_rays(const float* __restrict sx, const float* __restrict sy, const f
 void sun_rays(const float* __restrict sx, const float* __restrict sy, const float* __restrict sz,
               std::uint32_t count, const Receiver& r, float* __restrict x, float* __restrict y,
               float* __restrict z, float* __restrict tfar, float* __restrict weight) {
-  const glm::vec3 n = r.n, ng = r.ng;
+  const glm::vec3 n = r.n;
   const float infinity = std::numeric_limits<float>::infinity();
   for (std::uint32_t s = 0; s < count; ++s) {
     const float wx = sx[s], wy = sy[s], wz = sz[s];
     const float receiver = n.x * wx + n.y * wy + n.z * wz;
-    const float facet = ng.x * wx + ng.y * wy + ng.z * wz;
-    weight[s] = keep_if((receiver > 0.0f) & (facet > 0.0f), receiver);
+    weight[s] = keep_if(receiver > 0.0f, receiver);
     x[s] = wx;
     y[s] = wy;
     z[s] = wz;
@@ -500,7 +498,7 @@ bool sphere_rays(const ReferenceLight& light, const SourcePointSets::Set& set, s
     const float distance =
         along - std::sqrt(std::max(0.0f, radius * radius - (d * d - along * along)));
     const float receiver = glm::dot(r.n, direction);
-    out.weight[s] = receiver > 0.0f && glm::dot(r.ng, direction) > 0.0f ? receiver : 0.0f;
+    out.weight[s] = receiver > 0.0f ? receiver : 0.0f;
     // Aim from the raised origin at the same point of the sphere.
     const glm::vec3 to_target = r.p + distance * direction - r.origin;
     out.x[s] = to_target.x;
@@ -605,12 +603,9 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
         // The G-buffer's normal is interpolated from the vertices' (a
         // smooth sphere's), while the rays meet the flat triangles: near a
         // terminator a direction above the shading normal's tangent plane
-        // can be below the triangle's own, and would be shadowed by the
-        // object's far side (the "shadow terminator" artefact; Hanika,
-        // "Hacking the Shadow Terminator", Ray Tracing Gems II, 2021).
-        // Such directions send no light with or without occluders, as a
-        // path tracer's reflection treats them (Cycles: no reflection
-        // below the geometric normal).
+        // can be below the triangle's own (the "shadow terminator"
+        // artefact). The triangle's normal decides how far the rays start
+        // above it (the terminator model, reference/terminator_offset.hpp).
         facet_packets.add(r.p, r.n, 2.0f * r.offset + 1e-6f, x);
       }
       facet_packets.flush();
@@ -631,11 +626,10 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
           out[3] = 0.0f;
           continue;
         }
-        // No light reaches the point, occluders or not: the ratio is
-        // undefined (not judged). On a smooth mesh's terminator the
-        // triangle can face away from all of the source while the
-        // interpolated normal a rasterizer shades with sees some of it.
-        // An untraceable point has no rays, so it is not judged either.
+        // No light reaches the point, occluders or not (all of the source
+        // is below the shading normal's horizon): the ratio is undefined
+        // (not judged). An untraceable point has no rays, so it is not
+        // judged either.
         const bool reached = traced[x] && total[x] > 0.0;
         out[0] = out[1] = out[2] = reached ? static_cast<float>(lit[x] / total[x]) : 0.0f;
         const bool inside_cone = !spot || !reached ||

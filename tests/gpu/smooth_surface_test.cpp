@@ -6,10 +6,10 @@
 // the vertex normals describe where the light grazes it, on its triangle
 // elsewhere, and compared against the triangle's own plane
 // (shaders/scene/smooth_surface.glsl), which the map holds, with the
-// default biases. The lit side stays lit where the reference lights it.
-// Where the light is below the triangle's own plane, though above the
-// interpolated normal's, no light arrives with or without occluders: the
-// shadow view leaves such pixels unjudged, as the reference does.
+// default biases. The lit side stays lit where the reference lights it,
+// and the shadow view judges the same pixels as the reference: every one
+// with some of the source above its shading normal's horizon, also where
+// the light is below the triangle's own plane (as Cycles does).
 #include <array>
 #include <cmath>
 #include <cstdio>
