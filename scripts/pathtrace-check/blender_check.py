@@ -397,6 +397,7 @@ def main():
 
     errors = [ref[4 * i] - factor[i] for i in lit]
     objects_lit = [i for i in lit if on_object(i)]
+    objects_judged = [i for i in aligned if on_object(i)]
     ground_lit = [i for i in lit if not on_object(i)]
     # Pixels penumbra leaves unjudged as reached by no light (0, alpha 0)
     # where Cycles lights the same surface, against every pixel Cycles lights.
@@ -414,6 +415,7 @@ def main():
         "max_error": max(abs(e) for e in errors),
         "pixels_objects": len(objects_lit),
         "rmse_objects": rmse(objects_lit) if objects_lit else 0.0,
+        "rmse_objects_all": rmse(objects_judged) if objects_judged else 0.0,
         "pixels_ground": len(ground_lit),
         "rmse_ground": rmse(ground_lit) if ground_lit else 0.0,
         "pixels_cycles_lit": len(cycles_lit),
