@@ -421,9 +421,9 @@ float keep_if(bool keep, float value) {
 // point's weight in the irradiance, 0 where it sends the receiver no
 // light with or without occluders: the part of the source below the
 // shading normal's tangent plane (Cycles' test for reflection, whatever
-// the triangle's plane), or the source's back. Struct of arrays, written by branch-free loops the compiler
-// vectorizes (the arrays are passed as restrict parameters so that it
-// knows they do not overlap).
+// the triangle's plane), or the source's back. Struct of arrays, written
+// by branch-free loops the compiler vectorizes (the arrays are passed as
+// restrict parameters so that it knows they do not overlap).
 struct PixelRays {
   std::vector<float> x, y, z, tfar, weight;
   explicit PixelRays(std::size_t n) : x(n), y(n), z(n), tfar(n), weight(n) {}
