@@ -386,7 +386,7 @@ bool source_above_horizon(GpuLight light, vec3 world, vec3 n) {
   return dot(n, light.position_type.xyz - world) > -radius;
 }
 
-// Where the shadow lookups of light i start for the point `world` with
+// Where the shadow lookups of `light` start for the point `world` with
 // shading normal n: raised along n by the part of its rise to the smooth
 // surface (facet.w) that the direction to the source's centre calls for,
 // against its triangle's plane, as the traced reference starts its rays
