@@ -23,13 +23,17 @@
 #include "light.hpp"
 #include "position_span.hpp"
 #include "settings.hpp"
+#include "shadow/view_cache.hpp"
 #include "shadow_block.hpp"
 
 namespace penumbra {
 
 // The casters (and receivers) the views are fitted to, in world space: a
-// triangle list over the engine's vertex positions. Coarse stand-ins (the
-// bounding boxes of its objects) fit views as well as the real meshes.
+// triangle list over the engine's vertex positions, indexed by 32-bit
+// vertex numbers (an engine with 16-bit indices widens them, or passes
+// boxes: the update() overload over CasterBounds). Coarse stand-ins fit
+// views as well as the real meshes. update() hashes them: when they change
+// it refits every light and draws every view again.
 struct CasterGeometry {
   PositionSpan positions;
   std::span<const std::uint32_t> indices;  // three per triangle
@@ -42,9 +46,13 @@ struct CasterView {
   glm::mat4 view_projection{1.0f};  // world -> clip, for the engine's own culling
   // penumbra's caster program, bound: its vertex shader reads the position
   // at attribute location 0 and places it in the world with the mat4
-  // uniform at location kModelLocation (identity until the callback sets it).
+  // uniform "model" at location kModelLocation (identity until the
+  // callback sets it, for each view). set_model() sets it; so does an
+  // engine's glUniformMatrix4fv(glGetUniformLocation(program, "model"), ...).
   GLuint program = 0;
   static constexpr GLint kModelLocation = 1;
+  // Places the next draws' vertices in the world (object -> world).
+  void set_model(const glm::mat4& model) const;
 };
 
 // Draws the engine's casters for one view: binds its vertex arrays (and
@@ -73,9 +81,27 @@ class ShadowMaps {
   // renderer's: it renders the maps once per point of the light's source).
   void update(std::span<const Light> lights, const CameraFrustum& camera,
               const CasterGeometry& casters, const ShadowSettings& settings);
+  // The same with the casters' world-space bounding boxes, one per object
+  // (its index is the caster's id): the views are fitted to the boxes, and
+  // a caster whose box changed since the last update() has the views that
+  // see it (before or after) drawn again, and no other.
+  void update(std::span<const Light> lights, const CameraFrustum& camera,
+              std::span<const CasterBounds> casters, const ShadowSettings& settings);
+  // Caster `id` of the bounds form changed inside an unchanged box (it
+  // turned, or its mesh changed): the views that see it are drawn again at
+  // the next update() and render(). Throws UsageError for an id the last
+  // update() did not have.
+  void moved(int caster);
+  // The next update() refits every light and render() draws every view:
+  // for casters that changed in a way update() cannot see.
+  void invalidate();
 
-  // Renders the maps for the last update(): draw(view) for every view,
-  // then the technique's resolve and filter passes (compute).
+  // Renders the maps for the last update(): draw(view) for every view
+  // whose depths changed (its light or its fit changed, a caster it sees
+  // moved, the map size or the view count changed; every view on the
+  // first call), then, when a view was drawn or the settings changed, the
+  // technique's resolve and filter passes (compute). A frame where nothing
+  // changed draws nothing (views_drawn() says how many it drew).
   // Changes, and leaves: the current program, the depth state (test on,
   // LESS, writes on), face culling (off), texture unit 0, image units 0
   // and 1, storage-buffer binding 1, the uniform-buffer binding
@@ -97,6 +123,8 @@ class ShadowMaps {
   // names owned by ShadowMaps), for an engine that binds them itself.
   [[nodiscard]] const ShadowBlock& block() const;
   [[nodiscard]] int view_count() const;
+  // The views the last render() drew (0: every map was cached).
+  [[nodiscard]] int views_drawn() const;
   [[nodiscard]] GLuint depth_maps() const;
   // The filtered maps, or with --filter sat the summed-area tables (an
   // unsigned-integer array); 0 for the techniques that read depth maps.
