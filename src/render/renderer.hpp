@@ -166,8 +166,10 @@ class Renderer {
 
  private:
   Scene scene_;
+  // Shape i's vertices: [i], [i + 1]); filled by mesh_'s initializer, so
+  // declared before it.
+  std::vector<std::size_t> shape_first_vertex_;
   TriangleMesh mesh_;
-  std::vector<std::size_t> shape_first_vertex_;  // shape i's vertices: [i], [i + 1])
   Bounds bounds_;
   GpuScene gpu_scene_;
   SceneShadowCasters shadow_casters_;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gpu_fixture.hpp"
+#include "penumbra/error.hpp"
 #include "penumbra/gl/resources.hpp"
 #include "penumbra/shadow_maps.hpp"
 
