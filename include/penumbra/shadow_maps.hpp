@@ -21,9 +21,9 @@
 #include <string>
 
 #include "light.hpp"
+#include "penumbra/shadow/view_cache.hpp"
 #include "position_span.hpp"
 #include "settings.hpp"
-#include "shadow/view_cache.hpp"
 #include "shadow_block.hpp"
 
 namespace penumbra {
