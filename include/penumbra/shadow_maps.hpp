@@ -58,7 +58,9 @@ struct CasterView {
 // Draws the engine's casters for one view: binds its vertex arrays (and
 // sets the model matrix per object) and issues its draws. The program,
 // the framebuffer (the view's layer, cleared) and the viewport are set;
-// the callback must not change them.
+// the callback must not change them. Called only for the views whose maps
+// must be drawn again (render()); it draws every caster the view sees,
+// static ones included.
 using DrawCasters = std::function<void(const CasterView&)>;
 
 class ShadowMaps {
