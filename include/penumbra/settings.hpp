@@ -226,6 +226,7 @@ struct ShadowSettings {
   // filter's reach plus a margin, in texels, so a filter near a face's edge
   // reads the scene from its own face (no seams between faces).
   bool guard_band = true;
+  bool operator==(const ShadowSettings&) const = default;
 };
 
 // Screen-space ambient obscurance (seed 003, Task 6) over the G-buffer: k

@@ -28,6 +28,7 @@
 #include <string_view>
 
 #include "light.hpp"
+#include "penumbra/shadow/view_cache.hpp"
 #include "position_span.hpp"
 #include "settings.hpp"
 #include "shadow_block.hpp"
@@ -35,8 +36,11 @@
 namespace penumbra {
 
 // The casters (and receivers) the views are fitted to, in world space: a
-// triangle list over the engine's vertex positions. Coarse stand-ins (the
-// bounding boxes of its objects) fit views as well as the real meshes.
+// triangle list over the engine's vertex positions, indexed by 32-bit
+// vertex numbers (an engine with 16-bit indices widens them, or passes
+// boxes: the update() overload over CasterBounds). Coarse stand-ins fit
+// views as well as the real meshes. update() hashes them: when they change
+// it refits every light and draws every view again.
 struct CasterGeometry {
   PositionSpan positions;
   std::span<const std::uint32_t> indices;  // three per triangle
@@ -49,15 +53,21 @@ struct CasterView {
   glm::mat4 view_projection{1.0f};  // world -> clip, for the engine's own culling
   // penumbra's caster program, bound: its vertex shader reads the position
   // at attribute location 0 and places it in the world with the mat4
-  // uniform at location kModelLocation (identity until the callback sets it).
+  // uniform "model" at location kModelLocation (identity until the
+  // callback sets it, for each view). set_model() sets it; so does an
+  // engine's glUniformMatrix4fv(glGetUniformLocation(program, "model"), ...).
   std::uint32_t program = 0;                         // a GLuint
   static constexpr std::int32_t kModelLocation = 1;  // a GLint
+  // Places the next draws' vertices in the world (object -> world).
+  void set_model(const glm::mat4& model) const;
 };
 
 // Draws the engine's casters for one view: binds its vertex arrays (and
 // sets the model matrix per object) and issues its draws. The program,
 // the framebuffer (the view's layer, cleared) and the viewport are set;
-// the callback must not change them.
+// the callback must not change them. Called only for the views whose maps
+// must be drawn again (render()); it draws every caster the view sees,
+// static ones included.
 using DrawCasters = std::function<void(const CasterView&)>;
 
 class ShadowMaps {
@@ -88,9 +98,27 @@ class ShadowMaps {
   // renderer's: it renders the maps once per point of the light's source).
   void update(std::span<const Light> lights, const CameraFrustum& camera,
               const CasterGeometry& casters, const ShadowSettings& settings);
+  // The same with the casters' world-space bounding boxes, one per object
+  // (its index is the caster's id): the views are fitted to the boxes, and
+  // a caster whose box changed since the last update() has the views that
+  // see it (before or after) drawn again, and no other.
+  void update(std::span<const Light> lights, const CameraFrustum& camera,
+              std::span<const CasterBounds> casters, const ShadowSettings& settings);
+  // Caster `id` of the bounds form changed inside an unchanged box (it
+  // turned, or its mesh changed): the views that see it are drawn again at
+  // the next update() and render(). Throws UsageError for an id the last
+  // update() did not have.
+  void moved(int caster);
+  // The next update() refits every light and render() draws every view:
+  // for casters that changed in a way update() cannot see.
+  void invalidate();
 
-  // Renders the maps for the last update(): draw(view) for every view,
-  // then the technique's resolve and filter passes (compute). Sets the
+  // Renders the maps for the last update(): draw(view) for every view
+  // whose depths changed (its light or its fit changed, a caster it sees
+  // moved, the map size or the view count changed; every view on the
+  // first call), then, when a view was drawn or the settings changed, the
+  // technique's resolve and filter passes (compute). A frame where nothing
+  // changed draws nothing (views_drawn() says how many it drew). Sets the
   // state it needs (scissor and rasterizer discard off, fill, depth test
   // LESS with writes, no culling, no polygon offset or depth clamp, clip
   // control lower-left / -1..1, depth range 0..1, colour writes on) and
@@ -122,6 +150,8 @@ class ShadowMaps {
   // names owned by ShadowMaps), for an engine that binds them itself.
   [[nodiscard]] const ShadowBlock& block() const;
   [[nodiscard]] int view_count() const;
+  // The views the last render() drew (0: every map was cached).
+  [[nodiscard]] int views_drawn() const;
   [[nodiscard]] std::uint32_t depth_maps() const;
   // The filtered maps, or with --filter sat the summed-area tables (an
   // unsigned-integer array); 0 for the techniques that read depth maps.

@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "app/help_formatter.hpp"
@@ -194,6 +196,47 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
   return j;
 }
 
+// The frames of the cached-maps measurement: medians of a few suffice to
+// tell a static frame's nothing from a moving one's views.
+constexpr int kMaxCachedFrames = 10;
+
+// The shadow passes of a frame drawing every view, of a static frame and
+// of one where a shape moved, on the ratios' clock (the timers miss
+// llvmpipe's compute passes).
+void print_cached(const CachedShadowTimes& cached, int frames, bool timer) {
+  auto median = [timer](const Samples& s) {
+    return spread_of(timer ? s.timer_ms : s.wall_ms).median;
+  };
+  const double full = median(cached.full), still = median(cached.still);
+  std::printf(
+      "  cached shadow maps (%d frames each; depth + resolve + filters + mips, median ms, %s):\n",
+      frames, timer ? "timer" : "wall clock");
+  std::printf("  %-34s %9.3f  (%d views drawn)\n", "every view drawn", full, cached.views);
+  std::printf("  %-34s %9.3f  (%d views drawn; %.1f %% of every view)\n", "static frame", still,
+              cached.still_views, full > 0.0 ? 100.0 * still / full : 0.0);
+  std::printf("  %-34s %9.3f  (%d of %d views drawn)\n",
+              ("shape " + std::to_string(cached.shape) + " moving").c_str(), median(cached.moving),
+              cached.moving_views, cached.views);
+}
+
+nlohmann::json cached_json(const CachedShadowTimes& cached, int frames, bool timer) {
+  auto samples_json = [](const Samples& samples) {
+    const Spread t = spread_of(samples.timer_ms), w = spread_of(samples.wall_ms);
+    return nlohmann::json{{"median_ms", t.median}, {"wall_median_ms", w.median}};
+  };
+  const double full = spread_of(timer ? cached.full.timer_ms : cached.full.wall_ms).median;
+  const double still = spread_of(timer ? cached.still.timer_ms : cached.still.wall_ms).median;
+  return {{"frames", frames},
+          {"views", cached.views},
+          {"full", samples_json(cached.full)},
+          {"static", samples_json(cached.still)},
+          {"static_views_drawn", cached.still_views},
+          {"static_fraction_of_full", full > 0.0 ? still / full : 0.0},
+          {"moving_shape", cached.shape},
+          {"moving", samples_json(cached.moving)},
+          {"moving_views_drawn", cached.moving_views}};
+}
+
 // How long the whole plan will take, before it starts: two frames of the
 // first configuration, the first of which compiles its shaders as every
 // configuration's first frame does; the rest are frames like the second.
@@ -293,6 +336,9 @@ int run_bench_command(BenchArgs& args) {
   // log shows where the time goes), a bar with the time left where it is.
   ProgressBar progress("bench");
   std::vector<PassTimes> runs;
+  std::vector<std::optional<CachedShadowTimes>> cached_runs;
+  const std::optional<std::size_t> moving = movable_shape(scene);
+  const int cached_frames = std::min(args.frames, kMaxCachedFrames);
   for (std::size_t i = 0; i < plan.size(); ++i) {
     const ShadowSettings& settings = plan[i];
     progress.step(describe(settings), static_cast<std::int64_t>(i),
@@ -304,6 +350,14 @@ int run_bench_command(BenchArgs& args) {
     }
     print_run(run, args.frames, timer_clock);
     print_traffic(run, timer_clock, bandwidth);
+    // An --accumulate sub-frame draws every view from another point of the
+    // source: nothing to cache.
+    std::optional<CachedShadowTimes> cached;
+    if (moving && settings.accumulate == 1 && settings.technique != Technique::None) {
+      cached = measure_cached_shadow_pass(renderer, args.render, settings, cached_frames, *moving);
+      print_cached(*cached, cached_frames, timer_clock);
+    }
+    cached_runs.push_back(cached);
     // Each result as it is measured, also when stdout is a file (a full
     // device or a closed pipe is an error here, with its reason).
     flush_standard_output();
@@ -326,8 +380,13 @@ int run_bench_command(BenchArgs& args) {
     j["bandwidth_source"] =
         bandwidth.source.empty() ? nlohmann::json(nullptr) : nlohmann::json(bandwidth.source);
     j["runs"] = nlohmann::json::array();
-    for (const PassTimes& run : runs)
-      j["runs"].push_back(run_json(run, args.frames, timer_clock, bandwidth));
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      nlohmann::json run = run_json(runs[i], args.frames, timer_clock, bandwidth);
+      run["cached_shadow_maps"] = cached_runs[i]
+                                      ? cached_json(*cached_runs[i], cached_frames, timer_clock)
+                                      : nlohmann::json(nullptr);
+      j["runs"].push_back(std::move(run));
+    }
     write_file_atomically(args.json, j.dump(2) + "\n");
   }
   return 0;

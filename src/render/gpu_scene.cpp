@@ -113,7 +113,8 @@ GpuMaterial gpu_material(const Material& m) {
 
 GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
                    std::int64_t max_storage_block_bytes)
-    : vertices_(gl::Buffer::from(std::span<const Vertex>(mesh.vertices), "scene vertices")),
+    : vertices_(mesh.vertices.size() * sizeof(Vertex), mesh.vertices.data(), true,
+                "scene vertices"),
       vao_("scene"),
       index_count_(mesh.indices.size()) {
   if (max_storage_block_bytes < 0) {
@@ -224,6 +225,10 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
   glEnableVertexArrayAttrib(vao, 4);
   glVertexArrayAttribFormat(vao, 4, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(Vertex, color));
   glVertexArrayAttribBinding(vao, 4, 0);
+}
+
+void GpuScene::update_vertices(std::size_t first, std::span<const Vertex> vertices) {
+  vertices_.update(vertices.data(), vertices.size_bytes(), first * sizeof(Vertex));
 }
 
 void GpuScene::draw(SurfaceSet set, Corners corners) const {

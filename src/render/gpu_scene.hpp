@@ -2,6 +2,7 @@
 // A scene's triangles, materials and base-colour textures on the GPU, drawn
 // with one call per texture.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "penumbra/gl/resources.hpp"
@@ -46,6 +47,8 @@ class GpuScene {
   // LOCATION_FIRST_INDEX.
   enum class Corners { Unread, Read };
   void draw(SurfaceSet set = SurfaceSet::All, Corners corners = Corners::Unread) const;
+  // Replaces vertices [first, first + vertices.size()) (a shape moved).
+  void update_vertices(std::size_t first, std::span<const Vertex> vertices);
   [[nodiscard]] std::size_t triangle_count() const { return index_count_ / 3; }
   // Whether the vertices and indices each fit in one storage block, so
   // that shaders can read a triangle's corners (else draw() passes

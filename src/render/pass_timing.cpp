@@ -97,8 +97,10 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
   if (accumulating) accumulator.emplace();
   for (int frame = 0; frame < warmup + frames; ++frame) {
     // Every frame times every pass, the camera's included (render() would
-    // reuse them for the same camera).
+    // reuse them for the same camera, and the shadow maps for the same
+    // lights).
     renderer.forget_surfaces();
+    renderer.forget_shadow_maps();
     profiler.begin_frame();
     if (accumulating) {
       render_subframe(renderer, lights, render, shadow, {}, frame % shadow.accumulate, &profiler);
@@ -132,6 +134,52 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
   glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared_bytes);
   run.traffic = shadow_map_traffic(shadow, maps.width(), maps.height(), shared_bytes);
   return run;
+}
+
+CachedShadowTimes measure_cached_shadow_pass(Renderer& renderer, const RenderSettings& render,
+                                             const ShadowSettings& shadow, int frames,
+                                             std::size_t shape) {
+  gl::GpuProfiler profiler(2, /*serialize=*/true);
+  CachedShadowTimes result;
+  result.shape = shape;
+  // The passes over the shadow maps: the depth pass through the mip chain.
+  auto timed_frame = [&](Samples& into) {
+    profiler.begin_frame();
+    renderer.render(render, shadow, {}, &profiler);
+    profiler.end_frame();
+    const std::optional<gl::GpuFrameTimes> times = profiler.read(true);
+    if (!times) return;
+    double timer_ms = 0.0, wall_ms = 0.0;
+    for (std::size_t p = 0; p <= static_cast<std::size_t>(GpuPass::Mips); ++p) {
+      if (!times->ran[p]) continue;
+      timer_ms += times->pass_ms[p];
+      wall_ms += times->pass_wall_ms[p];
+    }
+    into.timer_ms.push_back(timer_ms);
+    into.wall_ms.push_back(wall_ms);
+  };
+  const Bounds bounds = renderer.shape_bounds(shape);
+  const glm::vec3 step(0.05f * std::max(bounds.max.x - bounds.min.x, 1e-3f), 0.0f, 0.0f);
+  renderer.render(render, shadow);  // shaders compiled, maps drawn
+  for (int frame = 0; frame < frames; ++frame) {
+    renderer.forget_shadow_maps();
+    timed_frame(result.full);
+    result.views = std::max(result.views, renderer.shadow_views_drawn());
+    timed_frame(result.still);
+    result.still_views = std::max(result.still_views, renderer.shadow_views_drawn());
+    renderer.move_shape(shape, frame % 2 == 0 ? step : -step);
+    timed_frame(result.moving);
+    result.moving_views = std::max(result.moving_views, renderer.shadow_views_drawn());
+  }
+  if (frames % 2 == 1) renderer.move_shape(shape, -step);  // back where it was
+  return result;
+}
+
+std::optional<std::size_t> movable_shape(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
+    if (scene.shapes[i].kind != ShapeKind::Plane) return i;
+  }
+  return std::nullopt;
 }
 
 bool is_software_renderer(std::string_view renderer) {

@@ -66,6 +66,25 @@ double achieved_gb_per_second(const PassTimes& run, std::size_t pass, bool timer
 PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
                              const ShadowSettings& shadow, int frames, int warmup);
 
+// What the cached shadow maps cost (Renderer::forget_shadow_maps()): the
+// shadow passes (depth, resolve, filters, mips) of a frame that draws
+// every view, of a static frame (nothing changed since the one before: no
+// view drawn) and of a frame where scene shape `shape` moved (a small step
+// along x, back and forth), `frames` of each, with a serializing profiler.
+struct CachedShadowTimes {
+  Samples full, still, moving;
+  int views = 0;          // the views a full frame draws
+  int still_views = 0;    // the most a static frame drew (0)
+  int moving_views = 0;   // the most a moving frame drew
+  std::size_t shape = 0;  // the shape moved
+};
+CachedShadowTimes measure_cached_shadow_pass(Renderer& renderer, const RenderSettings& render,
+                                             const ShadowSettings& shadow, int frames,
+                                             std::size_t shape);
+// The shape such a measurement moves: the scene's first that is not a
+// plane (planes are grounds and walls), or nullopt.
+std::optional<std::size_t> movable_shape(const Scene& scene);
+
 // Software rasterizers run compute dispatches outside their timer queries
 // (llvmpipe's read near 0 across them): there only the serialized wall
 // clock measures the passes. On a GPU the timers do, without the latency

@@ -79,7 +79,7 @@ PngEncoding png_encoding_for(View view) {
 
 Renderer::Renderer(const Scene& scene)
     : scene_(scene),
-      mesh_(build_scene_mesh(scene)),
+      mesh_(build_scene_mesh(scene, &shape_first_vertex_)),
       bounds_(mesh_.bounds()),
       gpu_scene_(scene_, mesh_),
       frame_ubo_(sizeof(gpu::GpuFrame), nullptr, true, "frame block"),
@@ -102,6 +102,34 @@ void Renderer::set_lights(const std::vector<Light>& lights) {
                      " lights; at most " + std::to_string(MAX_LIGHTS) + " are supported");
   }
   scene_.lights = lights;
+}
+
+Bounds Renderer::shape_bounds(std::size_t shape) const {
+  if (shape >= scene_.shapes.size()) {
+    throw UsageError("scene '" + scene_.name + "' has no shape " + std::to_string(shape));
+  }
+  Bounds bounds;
+  for (std::size_t v = shape_first_vertex_[shape]; v < shape_first_vertex_[shape + 1]; ++v) {
+    bounds.extend(mesh_.vertices[v].position);
+  }
+  return bounds;
+}
+
+void Renderer::move_shape(std::size_t shape, const glm::vec3& offset) {
+  const Bounds before = shape_bounds(shape);
+  const std::size_t first = shape_first_vertex_[shape];
+  const std::size_t count = shape_first_vertex_[shape + 1] - first;
+  for (std::size_t v = first; v < first + count; ++v) mesh_.vertices[v].position += offset;
+  scene_.shapes[shape].position += offset;
+  gpu_scene_.update_vertices(first, std::span<const Vertex>(mesh_.vertices).subspan(first, count));
+  const Bounds after = shape_bounds(shape);
+  shadow_cache_.caster_moved({before.min, before.max}, {after.min, after.max});
+  bounds_ = mesh_.bounds();
+  // Every fit read the old position: the lights' views, the camera's
+  // depth range, and the G-buffer drawn from it.
+  std::fill(fit_inputs_.begin(), fit_inputs_.end(), std::nullopt);
+  depth_range_.valid = false;
+  forget_surfaces();
 }
 
 glm::mat4 Renderer::camera_view() const {
@@ -244,15 +272,25 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   bind_frame_blocks();
 
   const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
+  shadow_views_drawn_ = 0;
   if (shadows) {
+    // Only the views whose depths changed (view_cache.hpp).
+    const std::vector<std::uint8_t> stale = shadow_cache_.stale_views(
+        std::span<const gpu::GpuShadowView>(views, static_cast<std::size_t>(view_count_)),
+        shadow.map_size);
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
-    shadow_pass_.execute([this](int view) { shadow_casters_.draw(gpu_scene_, view); }, view_count_,
-                         shadow.map_size);
+    shadow_views_drawn_ =
+        shadow_pass_.execute([this](int view) { shadow_casters_.draw(gpu_scene_, view); },
+                             view_count_, shadow.map_size, stale);
   }
+  // The resolve and the filters read every layer: they run again when a
+  // view was drawn or the settings changed, else their output is current.
+  const bool filter_maps = shadow_views_drawn_ > 0 || filtered_for_ != shadow;
+  filtered_for_ = shadow;
   const gl::Texture* filtered = nullptr;
   const bool fused = is_filterable(shadow.technique) && uses_fused_filter(shadow);
   if (fused) {
-    {
+    if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::FusedFilter);
       fused_pass_.execute(shadow_pass_.depth_maps(), shadow);
     }
@@ -261,7 +299,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     // fused pass never writes.
     if (render.view == View::Moments) resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
   } else if (is_filterable(shadow.technique)) {
-    {
+    if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
       resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
     }
@@ -269,16 +307,18 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     filtered = &representation;
     const int filter = filter_define(shadow);
     if (filter == FILTER_GAUSSIAN) {
-      blur_pass_.execute(
-          representation, shadow.blur, profiler,
-          filtered_map_levels(shadow, representation.width(), representation.height()));
+      if (filter_maps) {
+        blur_pass_.execute(
+            representation, shadow.blur, profiler,
+            filtered_map_levels(shadow, representation.width(), representation.height()));
+      }
       filtered = &blur_pass_.output();
     } else if (filter == FILTER_SAT) {
-      sat_pass_.execute(representation, profiler);
+      if (filter_maps) sat_pass_.execute(representation, profiler);
       filtered = &sat_pass_.table();
     }
   }
-  if (filtered != nullptr && uses_shadow_mips(shadow)) {
+  if (filtered != nullptr && uses_shadow_mips(shadow) && filter_maps) {
     gl::GpuPassScope timed(profiler, gl::GpuPass::Mips);
     mip_pass_.execute(*filtered);
   }

@@ -18,6 +18,7 @@
 #include "penumbra/shadow/moment_resolve_pass.hpp"
 #include "penumbra/shadow/shadow_map_pass.hpp"
 #include "penumbra/shadow/shadow_views.hpp"
+#include "penumbra/shadow/view_cache.hpp"
 #include "penumbra/shared/bindings.h"
 #include "penumbra/shared/gpu_types.h"
 #include "render/gbuffer_pass.hpp"
@@ -82,6 +83,24 @@ class Renderer {
     gbuffer_for_.reset();
     ao_for_.reset();
   }
+  // The shadow maps are cached: render() draws a shadow view again only
+  // when its view (its light, its fit, the map size) changed or a shape it
+  // sees moved (move_shape), and runs the resolve and filter passes only
+  // when a view was drawn or the shadow settings changed. The next
+  // render() draws them all anew: for timing the full shadow pass.
+  void forget_shadow_maps() {
+    shadow_cache_.invalidate();
+    filtered_for_.reset();
+  }
+  // The shadow views the last render() drew (0: the maps were cached).
+  [[nodiscard]] int shadow_views_drawn() const { return shadow_views_drawn_; }
+
+  // Moves scene shape `shape` by `offset` (world units): its vertices on
+  // the CPU and the GPU, the lights' fits, and the shadow views that see it
+  // before or after. Throws UsageError for a shape the scene lacks.
+  void move_shape(std::size_t shape, const glm::vec3& offset);
+  // The world-space bounds of scene shape `shape`'s triangles.
+  [[nodiscard]] Bounds shape_bounds(std::size_t shape) const;
 
   // Shades the last render()'s camera view again as `view`, from the
   // shadow maps, the filter's output and the G-buffer it left, without
@@ -119,7 +138,7 @@ class Renderer {
   [[nodiscard]] const gl::Texture& shadow_maps() const;
 
   // The camera and the lights may change between frames (the viewer moves
-  // them); the geometry is fixed at construction. set_lights throws
+  // them), and the shapes' positions (move_shape). set_lights throws
   // UsageError for more lights than the shaders hold.
   void set_camera(const Camera& camera) { scene_.camera = camera; }
   void set_lights(const std::vector<Light>& lights);
@@ -147,6 +166,9 @@ class Renderer {
 
  private:
   Scene scene_;
+  // Shape i's vertices: [i], [i + 1]); filled by mesh_'s initializer, so
+  // declared before it.
+  std::vector<std::size_t> shape_first_vertex_;
   TriangleMesh mesh_;
   Bounds bounds_;
   GpuScene gpu_scene_;
@@ -171,7 +193,7 @@ class Renderer {
   void bind_reference_weights(const ShadowSettings& shadow);
   // Fits clip every triangle of the scene, so each light's views and the
   // camera's depth range are kept and refitted only when what they depend
-  // on changes (the geometry never does).
+  // on changes (the geometry: only through move_shape()).
   std::vector<LightShadowViews> light_views_;
   std::vector<std::optional<ShadowViewInputs>> fit_inputs_;
   struct DepthRange {
@@ -183,6 +205,10 @@ class Renderer {
   mutable DepthRange depth_range_;
   std::vector<int> first_views_;
   int view_count_ = 0;
+  // What the shadow maps and the filtered maps hold (forget_shadow_maps()).
+  ViewCache shadow_cache_;
+  std::optional<ShadowSettings> filtered_for_;
+  int shadow_views_drawn_ = 0;
   RenderSettings last_render_;
   ShadowSettings last_shadow_;
   glm::mat4 last_view_projection_{1.0f};

@@ -244,10 +244,12 @@ std::size_t geometry_budget_bytes() {
   return megabytes << 20;
 }
 
-TriangleMesh build_scene_mesh(const Scene& scene) {
+TriangleMesh build_scene_mesh(const Scene& scene, std::vector<std::size_t>* first_vertex) {
   const std::size_t budget = geometry_budget_bytes();
   TriangleMesh mesh;
+  if (first_vertex != nullptr) first_vertex->clear();
   for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
+    if (first_vertex != nullptr) first_vertex->push_back(mesh.vertices.size());
     append_shape(mesh, scene.shapes[i]);
     // Checked as the mesh grows, so that a scene far over the budget costs
     // no more memory than the budget to refuse.
@@ -261,6 +263,7 @@ TriangleMesh build_scene_mesh(const Scene& scene) {
           kGeometryBudgetVariable + " sets the budget in MiB)");
     }
   }
+  if (first_vertex != nullptr) first_vertex->push_back(mesh.vertices.size());
   return mesh;
 }
 

@@ -48,8 +48,10 @@ std::size_t geometry_budget_bytes();
 std::size_t mesh_bytes(const TriangleMesh& mesh);
 
 // All of a scene's shapes in one mesh. Throws UsageError naming the
-// numbers when the mesh would exceed geometry_budget_bytes().
-TriangleMesh build_scene_mesh(const Scene& scene);
+// numbers when the mesh would exceed geometry_budget_bytes(). With
+// `first_vertex`, also where each shape's vertices begin (one entry per
+// shape, then the vertex count).
+TriangleMesh build_scene_mesh(const Scene& scene, std::vector<std::size_t>* first_vertex = nullptr);
 
 // The shape's model matrix: translate * rotate(z) * rotate(y) * rotate(x) * scale.
 glm::mat4 shape_transform(const Shape& shape);

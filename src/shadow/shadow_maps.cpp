@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <optional>
 #include <stdexcept>
@@ -58,6 +59,23 @@ struct ShadowMaps::Impl {
   GLuint filtered = 0;
   bool updated = false;
   bool rendered = false;
+
+  // What the maps hold, for caching them across frames (view_cache.hpp).
+  ViewCache view_cache;
+  std::optional<std::uint64_t> casters_hash;  // of the geometry last fitted to
+  std::vector<CasterBounds> bounds;           // the bounds form's boxes, by id
+  std::vector<int> moved;                     // ids marked by moved()
+  std::vector<glm::vec3> box_corners;         // the boxes as triangles, for the fit
+  std::vector<std::uint32_t> box_indices;
+  std::optional<ShadowSettings> filtered_for;  // the settings the filtered maps hold
+  int views_drawn = 0;
+
+  bool bounds_form = false;  // the last update() had caster bounds
+
+  void update(std::span<const Light> lights, const CameraFrustum& camera, PositionSpan positions,
+              std::span<const std::uint32_t> indices, const ShadowSettings& settings);
+  // The technique's resolve and filter passes over every layer.
+  void filter(const ShadowSettings& s);
 };
 
 namespace {
@@ -74,7 +92,63 @@ auto& live(ImplPtr& impl, const char* call) {
   return *impl;
 }
 
+// What update() refuses, checked before it changes anything.
+void check_update(std::span<const Light> lights, const ShadowSettings& settings) {
+  validate(settings);
+  if (settings.accumulate > 1) throw UsageError("ShadowMaps: accumulate is the renderer's");
+  if (lights.size() > static_cast<std::size_t>(kMaxLights)) {
+    throw UsageError("ShadowMaps: " + std::to_string(lights.size()) + " lights; at most " +
+                     std::to_string(kMaxLights) + " are supported");
+  }
+}
+
+// A hash of the caster geometry (positions and indices), so that update()
+// refits when the engine's casters change: word by word, FNV-1a's
+// constants on 32-bit words (cheaper than the fit it guards by far).
+std::uint64_t hash_casters(PositionSpan positions, std::span<const std::uint32_t> indices) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  auto mix = [&h](std::uint32_t word) { h = (h ^ word) * 0x100000001b3ull; };
+  auto mix_float = [&mix](float f) {
+    std::uint32_t word = 0;
+    std::memcpy(&word, &f, sizeof word);
+    mix(word);
+  };
+  mix(static_cast<std::uint32_t>(positions.size()));
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const glm::vec3& p = positions[i];
+    mix_float(p.x);
+    mix_float(p.y);
+    mix_float(p.z);
+  }
+  mix(static_cast<std::uint32_t>(indices.size()));
+  for (const std::uint32_t index : indices) mix(index);
+  return h;
+}
+
+// The boxes' twelve triangles each, for the fit (which reads triangles).
+void box_triangles(std::span<const CasterBounds> boxes, std::vector<glm::vec3>& corners,
+                   std::vector<std::uint32_t>& indices) {
+  // The faces of the cube whose corner c has x, y, z from bits 0, 1, 2.
+  static constexpr std::uint32_t kFaces[36] = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6,
+                                               0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7,
+                                               0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  corners.clear();
+  indices.clear();
+  for (const CasterBounds& box : boxes) {
+    const auto first = static_cast<std::uint32_t>(corners.size());
+    for (int c = 0; c < 8; ++c) {
+      corners.emplace_back((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
+                           (c & 4) ? box.max.z : box.min.z);
+    }
+    for (const std::uint32_t corner : kFaces) indices.push_back(first + corner);
+  }
+}
+
 }  // namespace
+
+void CasterView::set_model(const glm::mat4& model) const {
+  glProgramUniformMatrix4fv(program, kModelLocation, 1, GL_FALSE, &model[0][0]);
+}
 
 ShadowMaps::ShadowMaps(const ShadowBindings& bindings)
     : impl_(std::make_unique<Impl>(checked_bindings(bindings))) {}
@@ -86,13 +160,70 @@ ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
 
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
                         const CasterGeometry& casters, const ShadowSettings& settings) {
-  validate(settings);
-  if (settings.accumulate > 1) throw UsageError("ShadowMaps: accumulate is the renderer's");
-  if (lights.size() > static_cast<std::size_t>(kMaxLights)) {
-    throw UsageError("ShadowMaps: " + std::to_string(lights.size()) + " lights; at most " +
-                     std::to_string(kMaxLights) + " are supported");
-  }
+  check_update(lights, settings);
   Impl& m = live(impl_, "update");
+  const std::uint64_t hash = hash_casters(casters.positions, casters.indices);
+  if (m.casters_hash != hash || m.bounds_form) {
+    // No objects to tell apart: every view may see the change.
+    m.view_cache.invalidate();
+    m.fit_inputs.clear();
+    m.casters_hash = hash;
+  }
+  m.bounds_form = false;
+  m.bounds.clear();
+  m.moved.clear();
+  m.update(lights, camera, casters.positions, casters.indices, settings);
+}
+
+void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
+                        std::span<const CasterBounds> casters, const ShadowSettings& settings) {
+  check_update(lights, settings);
+  Impl& m = live(impl_, "update");
+  const bool same_objects = m.bounds_form && m.casters_hash && casters.size() == m.bounds.size();
+  if (!same_objects) {
+    m.view_cache.invalidate();
+    m.fit_inputs.clear();
+  } else {
+    bool changed = false;
+    for (std::size_t id = 0; id < casters.size(); ++id) {
+      const bool marked =
+          std::find(m.moved.begin(), m.moved.end(), static_cast<int>(id)) != m.moved.end();
+      if (casters[id] != m.bounds[id] || marked)
+        m.view_cache.caster_moved(m.bounds[id], casters[id]);
+      changed = changed || casters[id] != m.bounds[id];
+    }
+    // The fit reads the boxes: refitted when one moved.
+    if (changed) m.fit_inputs.clear();
+  }
+  m.bounds_form = true;
+  m.bounds.assign(casters.begin(), casters.end());
+  m.moved.clear();
+  box_triangles(casters, m.box_corners, m.box_indices);
+  m.casters_hash = hash_casters(PositionSpan(m.box_corners), m.box_indices);
+  m.update(lights, camera, PositionSpan(m.box_corners), m.box_indices, settings);
+}
+
+void ShadowMaps::moved(int caster) {
+  Impl& m = live(impl_, "moved");
+  if (caster < 0 || static_cast<std::size_t>(caster) >= m.bounds.size()) {
+    throw UsageError("ShadowMaps::moved(" + std::to_string(caster) + "): the last update() had " +
+                     std::to_string(m.bounds.size()) + " caster bounds");
+  }
+  m.moved.push_back(caster);
+}
+
+void ShadowMaps::invalidate() {
+  Impl& m = live(impl_, "invalidate");
+  m.view_cache.invalidate();
+  m.fit_inputs.clear();
+  m.casters_hash.reset();
+  m.filtered_for.reset();
+}
+
+void ShadowMaps::Impl::update(std::span<const Light> lights, const CameraFrustum& camera,
+                              PositionSpan positions, std::span<const std::uint32_t> indices,
+                              const ShadowSettings& settings) {
+  Impl& m = *this;
   m.settings = settings;
   m.fitted.resize(lights.size());
   m.fit_inputs.resize(lights.size());
@@ -102,7 +233,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
   for (std::size_t i = 0; i < lights.size(); ++i) {
     ShadowViewInputs inputs = shadow_view_inputs(lights[i], camera, settings);
     if (m.fit_inputs[i] != inputs) {
-      m.fitted[i] = fit_shadow_views(inputs, casters.positions, casters.indices);
+      m.fitted[i] = fit_shadow_views(inputs, positions, indices);
       m.fit_inputs[i] = std::move(inputs);
     }
     const LightShadowViews& views = m.fitted[i];
@@ -143,7 +274,14 @@ void ShadowMaps::render(const DrawCasters& draw) {
   const int view_count = m.block.counts.y;
   // An array needs at least one layer: with no lights the lookup reads none.
   const GLuint program = m.caster_program.id();
-  m.map_pass.execute(
+  const int layers = std::max(view_count, 1);
+  const std::vector<std::uint8_t> stale = m.view_cache.stale_views(
+      std::span<const ShadowViewData>(m.block.views, static_cast<std::size_t>(view_count)),
+      s.map_size);
+  // The one layer of an array without views is drawn once, with nothing.
+  std::vector<std::uint8_t> layer_stale = stale;
+  layer_stale.resize(static_cast<std::size_t>(layers), 0);
+  m.views_drawn = m.map_pass.execute(
       [&](int view) {
         const glm::mat4 identity(1.0f);
         glProgramUniform1i(program, 0, view);
@@ -157,26 +295,33 @@ void ShadowMaps::render(const DrawCasters& draw) {
                           .program = program});
         }
       },
-      std::max(view_count, 1), s.map_size);
+      layers, s.map_size, layer_stale);
 
-  m.filtered = 0;
-  if (is_filterable(s.technique)) {
-    if (uses_fused_filter(s)) {
-      m.fused_pass.execute(m.map_pass.depth_maps(), s);
-      m.filtered = m.fused_pass.output().id();
-    } else {
-      m.resolve_pass.execute(m.map_pass.depth_maps(), s);
-      m.filtered = m.resolve_pass.representation().id();
-      if (filter_define(s) == FILTER_GAUSSIAN) {
-        m.blur_pass.execute(m.resolve_pass.representation(), s.blur);
-        m.filtered = m.blur_pass.output().id();
-      } else if (filter_define(s) == FILTER_SAT) {
-        m.sat_pass.execute(m.resolve_pass.representation());
-        m.filtered = m.sat_pass.table().id();
-      }
-    }
-  }
+  // The resolve and the filter read every layer: run again when a view was
+  // drawn or the settings changed, else their output is still current.
+  const bool filters_current = m.views_drawn == 0 && m.filtered_for == s;
+  m.filtered_for = s;
+  if (!filters_current) m.filter(s);
   m.rendered = true;
+}
+
+void ShadowMaps::Impl::filter(const ShadowSettings& s) {
+  filtered = 0;
+  if (!is_filterable(s.technique)) return;
+  if (uses_fused_filter(s)) {
+    fused_pass.execute(map_pass.depth_maps(), s);
+    filtered = fused_pass.output().id();
+    return;
+  }
+  resolve_pass.execute(map_pass.depth_maps(), s);
+  filtered = resolve_pass.representation().id();
+  if (filter_define(s) == FILTER_GAUSSIAN) {
+    blur_pass.execute(resolve_pass.representation(), s.blur);
+    filtered = blur_pass.output().id();
+  } else if (filter_define(s) == FILTER_SAT) {
+    sat_pass.execute(resolve_pass.representation());
+    filtered = sat_pass.table().id();
+  }
 }
 
 void ShadowMaps::bind() const {
@@ -217,6 +362,9 @@ const ShadowBlock& ShadowMaps::block() const {
 }
 int ShadowMaps::view_count() const {
   return live(impl_, "view_count").block.counts.y;
+}
+int ShadowMaps::views_drawn() const {
+  return live(impl_, "views_drawn").views_drawn;
 }
 std::uint32_t ShadowMaps::depth_maps() const {
   return live(impl_, "depth_maps").map_pass.depth_maps().id();

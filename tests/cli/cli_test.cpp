@@ -104,6 +104,32 @@ TEST(Cli, BenchWritesJsonWithEveryPass) {
   EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT columns"));
 }
 
+// Cached shadow maps in the same run: a frame drawing every view, a static
+// frame (no view drawn) and one where an object moved (the views that see
+// it drawn), their times in the JSON.
+TEST(Cli, BenchMeasuresCachedShadowMaps) {
+  const std::string json_path = out_path("bench-cached.json");
+  const Result r =
+      run("bench --frames 2 --warmup 0 --technique hard,vsm --width 64 --height 48 "
+          "--shadow-map-size 256 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("static frame"), std::string::npos) << r.out;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j.at("runs").size(), 2u);
+  for (const auto& run : j.at("runs")) {
+    const auto& cached = run.at("cached_shadow_maps");
+    EXPECT_EQ(cached.at("views").get<int>(), 4);  // the spot light and three cascades
+    EXPECT_EQ(cached.at("static_views_drawn").get<int>(), 0);
+    EXPECT_GE(cached.at("moving_views_drawn").get<int>(), 1);
+    EXPECT_EQ(cached.at("moving_shape").get<int>(), 1);  // the box: shape 0 is the ground
+    for (const char* frame : {"full", "static", "moving"}) {
+      EXPECT_GE(cached.at(frame).at("wall_median_ms").get<double>(), 0.0) << frame;
+    }
+  }
+}
+
 // --fused on (the default) replaces the resolve and both blur passes with
 // one, up to W = 16; past it the two-pass path runs, and the JSON says which.
 TEST(Cli, BenchReportsTheFusedFilterAndItsFallback) {

@@ -5,7 +5,9 @@
 // that writes the relative depth z-bar: penumbra's renderer its scene
 // (render/scene_shadow_casters.hpp), an engine its meshes through
 // ShadowMaps (include/penumbra/shadow_maps.hpp).
+#include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "penumbra/gl/resources.hpp"
@@ -21,9 +23,13 @@ class ShadowMapPass {
   // framebuffer (the view's layer, cleared to 1), depth test LESS on.
   using DrawCasters = std::function<void(int view)>;
 
-  // Calls draw(i) for views 0..view_count-1 with layer i bound. The array
-  // is reallocated only when the view count or the size changes.
-  void execute(const DrawCasters& draw, int view_count, int map_size);
+  // Calls draw(i) for views 0..view_count-1 with layer i bound (cleared
+  // first), or with `stale` (one flag per view: ViewCache) only for the
+  // views flagged; the other layers keep their depths. The array is
+  // reallocated only when the view count or the size changes, and then
+  // every view is drawn. Returns the number of views drawn.
+  int execute(const DrawCasters& draw, int view_count, int map_size,
+              std::span<const std::uint8_t> stale = {});
 
   // DEPTH_COMPONENT32F 2D array holding z-bar, one layer per view. Valid
   // after execute().
