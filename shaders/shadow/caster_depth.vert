@@ -3,6 +3,7 @@
 // the position at attribute location 0; u_model places it in the world.
 #include "../shared/bindings.h"
 #include "../shared/gpu_types.h"
+#include "caster_position.glsl"
 
 layout(std140, binding = PENUMBRA_SHADOW_BLOCK_BINDING) uniform PenumbraShadowBlock {
   GpuShadowBlock penumbra;
@@ -19,5 +20,5 @@ void main() {
   GpuShadowView view = penumbra.views[u_view];
   vec4 world = u_model * vec4(in_position, 1.0);
   v_view_position = (view.view * world).xyz;
-  gl_Position = view.view_projection * world;
+  gl_Position = caster_clip_position(view, world);
 }
