@@ -174,6 +174,10 @@ class Renderer {
   // on changes (the geometry never does).
   std::vector<LightShadowViews> light_views_;
   std::vector<std::optional<ShadowViewInputs>> fit_inputs_;
+  // Bounds over the scene's triangles (in each light's cascade frame, and
+  // the world's for the camera's planes), so that fitting after a camera
+  // move does not grow with the triangle count.
+  mutable CasterBoundsCache caster_bounds_;
   struct DepthRange {
     bool valid = false;
     Camera camera;

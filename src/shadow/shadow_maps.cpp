@@ -28,8 +28,12 @@
 namespace penumbra {
 
 struct ShadowMaps::Impl {
-  gl::Program caster_program =
-      gl::Program::graphics("shadow/caster_depth.vert", "shadow/caster_depth.frag");
+  // Early depth for every view but a point light's faces, which write
+  // their radial depth (shadow/shadow_map_pass.hpp).
+  gl::Program caster_program = gl::Program::graphics(
+      "shadow/caster_depth.vert", "shadow/caster_depth.frag", {{"RADIAL_DEPTH", "0"}});
+  gl::Program radial_caster_program = gl::Program::graphics(
+      "shadow/caster_depth.vert", "shadow/caster_depth.frag", {{"RADIAL_DEPTH", "1"}});
   ShadowMapPass map_pass;
   MomentResolvePass resolve_pass;
   GaussianBlurPass blur_pass;
@@ -49,6 +53,7 @@ struct ShadowMaps::Impl {
   std::vector<int> view_light;  // the light of each view
   std::vector<LightShadowViews> fitted;
   std::vector<std::optional<ShadowViewInputs>> fit_inputs;
+  CasterBoundsCache caster_bounds;  // of the casters last fitted to
   GLuint filtered = 0;
   bool updated = false;
   bool rendered = false;
@@ -77,7 +82,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
   for (std::size_t i = 0; i < lights.size(); ++i) {
     ShadowViewInputs inputs = shadow_view_inputs(lights[i], camera, settings);
     if (m.fit_inputs[i] != inputs) {
-      m.fitted[i] = fit_shadow_views(inputs, casters.positions, casters.indices);
+      m.fitted[i] = fit_shadow_views(inputs, casters.positions, casters.indices, m.caster_bounds);
       m.fit_inputs[i] = std::move(inputs);
     }
     const LightShadowViews& views = m.fitted[i];
@@ -113,22 +118,26 @@ void ShadowMaps::render(const DrawCasters& draw) {
   const ShadowSettings& s = m.settings;
   const int view_count = m.block.counts.y;
   // An array needs at least one layer: with no lights the lookup reads none.
-  const GLuint program = m.caster_program.id();
+  const std::span<const gpu::GpuShadowView> views(m.block.views,
+                                                  static_cast<std::size_t>(view_count));
   m.map_pass.execute(
       [&](int view) {
+        const gl::Program& caster =
+            caster_depth(views[static_cast<std::size_t>(view)]) == CasterDepth::Written
+                ? m.radial_caster_program
+                : m.caster_program;
+        const GLuint program = caster.id();
         const glm::mat4 identity(1.0f);
         glProgramUniform1i(program, 0, view);
         glProgramUniformMatrix4fv(program, CasterView::kModelLocation, 1, GL_FALSE,
                                   &identity[0][0]);
-        m.caster_program.use();
-        if (view < static_cast<int>(m.view_light.size())) {
-          draw(CasterView{.index = view,
-                          .light = m.view_light[static_cast<std::size_t>(view)],
-                          .view_projection = m.block.views[view].view_projection,
-                          .program = program});
-        }
+        caster.use();
+        draw(CasterView{.index = view,
+                        .light = m.view_light[static_cast<std::size_t>(view)],
+                        .view_projection = m.block.views[view].view_projection,
+                        .program = program});
       },
-      std::max(view_count, 1), s.map_size);
+      views, s.map_size);
 
   m.filtered = 0;
   if (is_filterable(s.technique)) {
