@@ -169,9 +169,9 @@ class Renderer {
   // reads (render() fills them; shade() reuses them).
   void bind_frame_blocks();
   void bind_reference_weights(const ShadowSettings& shadow);
-  // Fits clip every triangle of the scene, so each light's views and the
-  // camera's depth range are kept and refitted only when what they depend
-  // on changes (the geometry never does).
+  // Each light's views and the camera's depth range are kept and refitted
+  // only when what they depend on changes (the geometry never does): a spot
+  // or point light's fit clips every triangle of the scene.
   std::vector<LightShadowViews> light_views_;
   std::vector<std::optional<ShadowViewInputs>> fit_inputs_;
   // Bounds over the scene's triangles (in each light's cascade frame, and

@@ -174,9 +174,12 @@ bool CasterBounds::depth_range(PositionSpan vertices, std::span<const std::uint3
       continue;
     }
     // A box inside the region whose bounds are the depth's extremes, or
-    // one whose depth spans less than the tolerance on each end where it
-    // widens the range: its bounds, unopened.
-    const float spread = depth.y - depth.x;
+    // one smaller than the tolerance (in depth and in extent: what it
+    // holds lies within that of the region) on each end where it widens
+    // the range: its bounds, unopened.
+    const glm::vec3 extent = node.hi - node.lo;
+    const float spread =
+        std::max(depth.y - depth.x, std::max(extent.x, std::max(extent.y, extent.z)));
     const bool near_end_within = depth.x >= zmin - below || spread <= below;
     const bool far_end_within = depth.y <= zmax + above || spread <= above;
     if (in_front && inside && exact) {

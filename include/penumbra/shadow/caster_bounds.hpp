@@ -11,7 +11,7 @@
 // extremes), a leaf that crosses a boundary clips its triangles as
 // for_each_clipped_triangle() does, and a crossing box whose depth spans
 // less than the query's tolerance gives its extremes unclipped (a bound
-// that errs by at most the tolerance, outwards).
+// that errs outwards, by about the tolerance).
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -32,10 +32,11 @@ struct CasterBoundsQuery {
   glm::vec4 world_depth{0.0f};
   glm::vec4 frame_depth{0.0f};
   // How far the range may err, outwards, at its near (x) and far (y) end:
-  // tolerance + relative_tolerance * |the depth there|. A box is opened
-  // only where its bounds could widen the range by more; the result errs
-  // by at most twice that. Zero: exact (for a depth the frame holds as a
-  // coordinate).
+  // t = tolerance + relative_tolerance * |the depth there|. A box is
+  // opened only where its bounds could widen the range by more than t, or
+  // while it is larger than t: the range holds that of the parts inside
+  // the region, within that of the parts within t of it widened by 2 t.
+  // Zero: exact (for a depth the frame holds as a coordinate).
   glm::vec2 tolerance{0.0f};
   glm::vec2 relative_tolerance{0.0f};
   // Only depths > 0 count (in front of an eye), as frustum_depth_range()

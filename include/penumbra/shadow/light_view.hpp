@@ -69,8 +69,8 @@ bool frustum_depth_range(const glm::mat4& view, float kx, float ky, PositionSpan
                          std::span<const std::uint32_t> indices, float& zmin, float& zmax);
 // The same through bounds built over the triangles in the world's frame
 // (an identity frame: caster_bounds.hpp), in time that does not grow with
-// the triangle count; outwards (nearer for zmin, farther for zmax) by at
-// most 1/16 of zmin and 1/4 of zmax.
+// the triangle count; outwards (nearer for zmin, farther for zmax), by a
+// few percent of zmin and up to a third or so of zmax.
 bool frustum_depth_range(const glm::mat4& view, float kx, float ky, PositionSpan vertices,
                          std::span<const std::uint32_t> indices, const CasterBounds& bounds,
                          float& zmin, float& zmax);
