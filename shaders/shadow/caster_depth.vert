@@ -6,6 +6,7 @@
 // CasterView::set_model() does by location.
 #include "../shared/bindings.h"
 #include "../shared/gpu_types.h"
+#include "caster_position.glsl"
 
 layout(std140, binding = PENUMBRA_SHADOW_BLOCK_BINDING) uniform PenumbraShadowBlock {
   GpuShadowBlock penumbra;
@@ -22,5 +23,5 @@ void main() {
   GpuShadowView view = penumbra.views[u_view];
   vec4 world = model * vec4(in_position, 1.0);
   v_view_position = (view.view * world).xyz;
-  gl_Position = view.view_projection * world;
+  gl_Position = caster_clip_position(view, world);
 }

@@ -2,6 +2,7 @@
 #include "../common/uniforms.glsl"
 #include "../scene/material.glsl"
 #include "../scene/vertex_input.glsl"
+#include "caster_position.glsl"
 
 layout(location = 0) uniform int u_view;
 
@@ -17,5 +18,5 @@ void main() {
   v_texcoord = texture_coordinate(materials[in_material], in_uv);
   v_alpha = in_color.a;
   v_material = in_material;
-  gl_Position = view.view_projection * world;
+  gl_Position = caster_clip_position(view, world);
 }

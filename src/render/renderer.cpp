@@ -128,6 +128,7 @@ void Renderer::move_shape(std::size_t shape, const glm::vec3& offset) {
   // Every fit read the old position: the lights' views, the camera's
   // depth range, and the G-buffer drawn from it.
   std::fill(fit_inputs_.begin(), fit_inputs_.end(), std::nullopt);
+  caster_bounds_.clear();
   depth_range_.valid = false;
   forget_surfaces();
 }
@@ -154,7 +155,10 @@ void Renderer::camera_depth_range(int width, int height, float& near_plane,
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const float ky = std::tan(0.5f * fov_y);
   float zmin = 1e30f, zmax = 0.0f;
-  if (!frustum_depth_range(view, aspect * ky, ky, mesh_.vertices, mesh_.indices, zmin, zmax)) {
+  const CasterHierarchy& bounds =
+      caster_bounds_.bounds(PositionSpan(mesh_.vertices), mesh_.indices, glm::mat4(1.0f));
+  if (!frustum_depth_range(view, aspect * ky, ky, mesh_.vertices, mesh_.indices, bounds, zmin,
+                           zmax)) {
     zmin = 0.1f;  // nothing in view
     zmax = 1.0f;
   }
@@ -239,7 +243,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     const Light& light = scene_.lights[index];
     ShadowViewInputs inputs = shadow_view_inputs(light, camera, shadow);
     if (fit_inputs_[index] != inputs) {
-      light_views_[index] = fit_shadow_views(inputs, mesh_);
+      light_views_[index] =
+          fit_shadow_views(inputs, PositionSpan(mesh_.vertices), mesh_.indices, caster_bounds_);
       fit_inputs_[index] = std::move(inputs);
     }
     const LightShadowViews& fitted = light_views_[index];
@@ -279,9 +284,12 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
         std::span<const gpu::GpuShadowView>(views, static_cast<std::size_t>(view_count_)),
         shadow.map_size);
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
-    shadow_views_drawn_ =
-        shadow_pass_.execute([this](int view) { shadow_casters_.draw(gpu_scene_, view); },
-                             view_count_, shadow.map_size, stale);
+    const std::span<const gpu::GpuShadowView> drawn(views, static_cast<std::size_t>(view_count_));
+    shadow_views_drawn_ = shadow_pass_.execute(
+        [&](int view) {
+          shadow_casters_.draw(gpu_scene_, view, caster_depth(views[view]) == CasterDepth::Written);
+        },
+        drawn, shadow.map_size, stale);
   }
   // The resolve and the filters read every layer: they run again when a
   // view was drawn or the settings changed, else their output is current.

@@ -191,11 +191,15 @@ class Renderer {
   // reads (render() fills them; shade() reuses them).
   void bind_frame_blocks();
   void bind_reference_weights(const ShadowSettings& shadow);
-  // Fits clip every triangle of the scene, so each light's views and the
-  // camera's depth range are kept and refitted only when what they depend
-  // on changes (the geometry: only through move_shape()).
+  // Each light's views and the camera's depth range are kept and refitted
+  // only when what they depend on changes (the geometry: only through
+  // move_shape(), which also forgets the caster bounds below).
   std::vector<LightShadowViews> light_views_;
   std::vector<std::optional<ShadowViewInputs>> fit_inputs_;
+  // Bounds over the scene's triangles (in each light's cascade frame, and
+  // the world's for the camera's planes), so that fitting after a camera
+  // move does not grow with the triangle count.
+  mutable CasterBoundsCache caster_bounds_;
   struct DepthRange {
     bool valid = false;
     Camera camera;

@@ -2,18 +2,28 @@
 
 namespace penumbra {
 
-SceneShadowCasters::SceneShadowCasters()
-    : program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
-                                     {{"CUT_OUTS", "0"}})),
-      cut_out_program_(gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
-                                             {{"CUT_OUTS", "1"}})) {}
+namespace {
 
-void SceneShadowCasters::draw(const GpuScene& scene, int view) const {
-  glProgramUniform1i(program_.id(), 0, view);
-  glProgramUniform1i(cut_out_program_.id(), 0, view);
-  program_.use();
+gl::Program caster_program(bool radial, bool cut_outs) {
+  return gl::Program::graphics(
+      "shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
+      {{"RADIAL_DEPTH", radial ? "1" : "0"}, {"CUT_OUTS", cut_outs ? "1" : "0"}});
+}
+
+}  // namespace
+
+SceneShadowCasters::SceneShadowCasters()
+    : programs_{{caster_program(false, false), caster_program(false, true)},
+                {caster_program(true, false), caster_program(true, true)}} {}
+
+void SceneShadowCasters::draw(const GpuScene& scene, int view, bool radial) const {
+  const gl::Program& opaque = programs_[radial ? 1 : 0][0];
+  const gl::Program& cut_out = programs_[radial ? 1 : 0][1];
+  glProgramUniform1i(opaque.id(), 0, view);
+  glProgramUniform1i(cut_out.id(), 0, view);
+  opaque.use();
   scene.draw(SurfaceSet::Opaque);
-  cut_out_program_.use();
+  cut_out.use();
   scene.draw(SurfaceSet::CutOut);
 }
 

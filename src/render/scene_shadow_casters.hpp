@@ -2,7 +2,8 @@
 // The renderer's shadow casters: its scene drawn into one shadow view's
 // layer (ShadowMapPass), opaque surfaces and cut-outs (alpha-tested or
 // single-sided, whose fragments may be discarded) each with a program of
-// their own, so opaque ones keep early depth testing.
+// their own, so opaque ones keep early depth testing; and for a point
+// light's faces, whose fragments write their radial depth, a pair more.
 #include "penumbra/gl/program.hpp"
 #include "render/gpu_scene.hpp"
 
@@ -13,12 +14,14 @@ class SceneShadowCasters {
   SceneShadowCasters();
 
   // Draws the scene from shadow view `view` of the shadow-views block
-  // (which must be bound).
-  void draw(const GpuScene& scene, int view) const;
+  // (which must be bound); `radial`: the view's fragments write their
+  // depth (CasterDepth::Written).
+  void draw(const GpuScene& scene, int view, bool radial) const;
 
  private:
-  gl::Program program_;          // opaque surfaces
-  gl::Program cut_out_program_;  // alpha-tested and single-sided ones
+  // [radial][cut-outs]: opaque surfaces, then alpha-tested and
+  // single-sided ones.
+  gl::Program programs_[2][2];
 };
 
 }  // namespace penumbra

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "penumbra/shadow/caster_bounds.hpp"
 #include "shadow/polygon_clip.hpp"
 
 namespace penumbra {
@@ -56,6 +57,13 @@ float cascade_slice_start(std::span<const float> splits, float blend, std::size_
 
 namespace {
 
+// How far, as a fraction of a cascade's width, its depth range may err
+// outwards (twice this at most: caster_bounds.hpp). The maps store 32-bit
+// z-bar and their biases are in texels, so a range a few percent wider
+// costs no visible precision; a finer tolerance makes a fit after a camera
+// move grow with the triangle count again (benchmarks/fit_scaling.cpp).
+constexpr float kCascadeDepthTolerance = 1.0f / 32.0f;
+
 // The half-spaces of the camera frustum's slice between view depths d0 and
 // d1.
 std::array<HalfSpace, 6> camera_slice(const CameraFrustum& camera, float d0, float d1) {
@@ -73,20 +81,32 @@ std::array<HalfSpace, 6> camera_slice(const CameraFrustum& camera, float d0, flo
 
 }  // namespace
 
+glm::mat4 cascade_light_frame(const Light& light) {
+  const glm::vec3 dir = glm::normalize(light.direction);
+  // Rotation only: light space's origin is the world's, so snapping in it
+  // is snapping to a grid fixed in the world.
+  return glm::lookAt(glm::vec3(0.0f), dir, stable_up(dir));
+}
+
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
                                          std::span<const float> splits, float blend,
                                          PositionSpan vertices,
                                          std::span<const std::uint32_t> indices, int map_size) {
-  const glm::vec3 dir = glm::normalize(light.direction);
-  // Rotation only: light space's origin is the world's, so snapping in it
-  // is snapping to a grid fixed in the world.
-  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, stable_up(dir));
+  const CasterHierarchy bounds(vertices, indices, cascade_light_frame(light));
+  return fit_cascade_views(light, camera, splits, blend, vertices, indices, bounds, map_size);
+}
+
+std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
+                                         std::span<const float> splits, float blend,
+                                         PositionSpan vertices,
+                                         std::span<const std::uint32_t> indices,
+                                         const CasterHierarchy& bounds, int map_size) {
+  const glm::mat4 view = cascade_light_frame(light);
   const glm::vec4 light_x = matrix_row(view, 0), light_y = matrix_row(view, 1);
   const glm::vec4 light_depth = -matrix_row(view, 2);
   const float size = static_cast<float>(map_size);
 
   std::vector<LightView> views;
-  std::vector<glm::vec3> receiver, scratch;
   for (std::size_t i = 0; i + 1 < splits.size(); ++i) {
     const float d0 = cascade_slice_start(splits, blend, i), d1 = splits[i + 1];
     const Sphere sphere = frustum_slice_sphere(camera, d0, d1);
@@ -103,19 +123,23 @@ std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum
                                              coordinate_at_least(light_y, center.y - half),
                                              coordinate_at_most(light_y, center.y + half)};
     const std::array<HalfSpace, 6> slice = camera_slice(camera, d0, d1);
-    float caster_near = 1e30f, column_far = -1e30f, receiver_far = -1e30f;
-    for_each_clipped_triangle(vertices, indices, column, [&](const std::vector<glm::vec3>& p) {
-      for (const glm::vec3& q : p) {
-        const float z = glm::dot(glm::vec3(light_depth), q);
-        caster_near = std::min(caster_near, z);
-        column_far = std::max(column_far, z);
-      }
-      receiver = p;
-      clip_polygon(receiver, slice, scratch);
-      for (const glm::vec3& q : receiver) {
-        receiver_far = std::max(receiver_far, glm::dot(glm::vec3(light_depth), q));
-      }
-    });
+    std::array<HalfSpace, 10> column_slice;
+    std::copy(column.begin(), column.end(), column_slice.begin());
+    std::copy(slice.begin(), slice.end(), column_slice.begin() + 4);
+    // Light depth is minus the frame's z, so boxes inside the column give
+    // exact extremes; boxes across its edges are opened only where they
+    // could widen the range by more than kCascadeDepthTolerance of the
+    // cascade's width.
+    CasterBoundsQuery query{.half_spaces = column,
+                            .world_depth = light_depth,
+                            .frame_depth = glm::vec4(0.0f, 0.0f, -1.0f, 0.0f),
+                            .tolerance = glm::vec2(kCascadeDepthTolerance * 2.0f * half)};
+    // (The receivers' near end is not needed: starting it at -infinity
+    // lets the search skip every box that cannot raise their far end.)
+    float caster_near = 1e30f, column_far = -1e30f, receiver_far = -1e30f, unused = -1e30f;
+    bounds.depth_range(vertices, indices, query, caster_near, column_far);
+    query.half_spaces = column_slice;
+    bounds.depth_range(vertices, indices, query, unused, receiver_far);
     if (caster_near > column_far) {  // an empty column: the slice's sphere
       const float c = glm::dot(glm::vec3(light_depth), sphere.center);
       caster_near = c - sphere.radius;

@@ -42,6 +42,28 @@ bool frustum_depth_range(const glm::mat4& view, float kx, float ky, PositionSpan
   return any;
 }
 
+bool frustum_depth_range(const glm::mat4& view, float kx, float ky, PositionSpan vertices,
+                         std::span<const std::uint32_t> indices, const CasterHierarchy& bounds,
+                         float& zmin, float& zmax) {
+  const std::array<HalfSpace, 4> sides = frustum_sides(view, kx, ky);
+  // The sides meet only in front of the eye; a box is tested against each
+  // on its own, so the plane through the eye also keeps out the boxes
+  // behind it.
+  const std::array<HalfSpace, 5> region = {sides[0], sides[1], sides[2], sides[3],
+                                           coordinate_at_least(-matrix_row(view, 2), 0.0f)};
+  // The near end may err by 1/32 of its distance (at most twice that, a
+  // near plane up to 6 % closer: the position error it bounds grows as
+  // much), the far end by 1/8 (depth precision hardly depends on it); finer
+  // tolerances make the fit grow with the triangle count again
+  // (benchmarks/fit_scaling.cpp).
+  const CasterBoundsQuery query{.half_spaces = region,
+                                .world_depth = -matrix_row(view, 2),
+                                .frame_depth = -matrix_row(view, 2),
+                                .relative_tolerance = glm::vec2(1.0f / 32.0f, 1.0f / 8.0f),
+                                .in_front_only = true};
+  return bounds.depth_range(vertices, indices, query, zmin, zmax);
+}
+
 float LightView::depth(const glm::vec3& world) const {
   const glm::vec3 p = glm::vec3(view * glm::vec4(world, 1.0f));
   return radial ? glm::length(p) : -p.z;
@@ -97,5 +119,3 @@ LightView fit_light_view(const Light& light, PositionSpan vertices,
 }
 
 }  // namespace penumbra
-
-namespace penumbra {}  // namespace penumbra

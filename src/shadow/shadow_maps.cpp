@@ -30,13 +30,25 @@
 
 namespace penumbra {
 
+namespace {
+
+gl::Program caster_depth_program(const ShadowBindings& bindings, bool radial) {
+  gl::Defines defines = shadow_binding_defines(bindings);
+  defines.emplace_back("RADIAL_DEPTH", radial ? "1" : "0");
+  return gl::Program::graphics("shadow/caster_depth.vert", "shadow/caster_depth.frag", defines);
+}
+
+}  // namespace
+
 struct ShadowMaps::Impl {
   explicit Impl(const ShadowBindings& b) : bindings(b) {}
 
   ShadowBindings bindings;
-  // The caster program declares the block at the engine's binding.
-  gl::Program caster_program = gl::Program::graphics(
-      "shadow/caster_depth.vert", "shadow/caster_depth.frag", shadow_binding_defines(bindings));
+  // The caster programs declare the block at the engine's binding. Early
+  // depth for every view but a point light's faces, which write their
+  // radial depth (shadow/shadow_map_pass.hpp).
+  gl::Program caster_program = caster_depth_program(bindings, false);
+  gl::Program radial_caster_program = caster_depth_program(bindings, true);
   ShadowMapPass map_pass;
   MomentResolvePass resolve_pass;
   GaussianBlurPass blur_pass;
@@ -56,6 +68,7 @@ struct ShadowMaps::Impl {
   std::vector<int> view_light;  // the light of each view
   std::vector<LightShadowViews> fitted;
   std::vector<std::optional<ShadowViewInputs>> fit_inputs;
+  CasterBoundsCache caster_bounds;  // of the casters last fitted to
   GLuint filtered = 0;
   bool updated = false;
   bool rendered = false;
@@ -167,6 +180,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
     // No objects to tell apart: every view may see the change.
     m.view_cache.invalidate();
     m.fit_inputs.clear();
+    m.caster_bounds.clear();
     m.casters_hash = hash;
   }
   m.bounds_form = false;
@@ -183,6 +197,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
   if (!same_objects) {
     m.view_cache.invalidate();
     m.fit_inputs.clear();
+    m.caster_bounds.clear();
   } else {
     bool changed = false;
     for (std::size_t id = 0; id < casters.size(); ++id) {
@@ -193,7 +208,10 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
       changed = changed || casters[id] != m.bounds[id];
     }
     // The fit reads the boxes: refitted when one moved.
-    if (changed) m.fit_inputs.clear();
+    if (changed) {
+      m.fit_inputs.clear();
+      m.caster_bounds.clear();
+    }
   }
   m.bounds_form = true;
   m.bounds.assign(casters.begin(), casters.end());
@@ -216,6 +234,7 @@ void ShadowMaps::invalidate() {
   Impl& m = live(impl_, "invalidate");
   m.view_cache.invalidate();
   m.fit_inputs.clear();
+  m.caster_bounds.clear();
   m.casters_hash.reset();
   m.filtered_for.reset();
 }
@@ -233,7 +252,7 @@ void ShadowMaps::Impl::update(std::span<const Light> lights, const CameraFrustum
   for (std::size_t i = 0; i < lights.size(); ++i) {
     ShadowViewInputs inputs = shadow_view_inputs(lights[i], camera, settings);
     if (m.fit_inputs[i] != inputs) {
-      m.fitted[i] = fit_shadow_views(inputs, positions, indices);
+      m.fitted[i] = fit_shadow_views(inputs, positions, indices, m.caster_bounds);
       m.fit_inputs[i] = std::move(inputs);
     }
     const LightShadowViews& views = m.fitted[i];
@@ -273,29 +292,27 @@ void ShadowMaps::render(const DrawCasters& draw) {
   const ShadowSettings& s = m.settings;
   const int view_count = m.block.counts.y;
   // An array needs at least one layer: with no lights the lookup reads none.
-  const GLuint program = m.caster_program.id();
-  const int layers = std::max(view_count, 1);
-  const std::vector<std::uint8_t> stale = m.view_cache.stale_views(
-      std::span<const ShadowViewData>(m.block.views, static_cast<std::size_t>(view_count)),
-      s.map_size);
-  // The one layer of an array without views is drawn once, with nothing.
-  std::vector<std::uint8_t> layer_stale = stale;
-  layer_stale.resize(static_cast<std::size_t>(layers), 0);
+  const std::span<const gpu::GpuShadowView> views(m.block.views,
+                                                  static_cast<std::size_t>(view_count));
+  const std::vector<std::uint8_t> stale = m.view_cache.stale_views(views, s.map_size);
   m.views_drawn = m.map_pass.execute(
       [&](int view) {
+        const gl::Program& caster =
+            caster_depth(views[static_cast<std::size_t>(view)]) == CasterDepth::Written
+                ? m.radial_caster_program
+                : m.caster_program;
+        const GLuint program = caster.id();
         const glm::mat4 identity(1.0f);
         glProgramUniform1i(program, 0, view);
         glProgramUniformMatrix4fv(program, CasterView::kModelLocation, 1, GL_FALSE,
                                   &identity[0][0]);
-        m.caster_program.use();
-        if (view < static_cast<int>(m.view_light.size())) {
-          draw(CasterView{.index = view,
-                          .light = m.view_light[static_cast<std::size_t>(view)],
-                          .view_projection = m.block.views[view].view_projection,
-                          .program = program});
-        }
+        caster.use();
+        draw(CasterView{.index = view,
+                        .light = m.view_light[static_cast<std::size_t>(view)],
+                        .view_projection = m.block.views[view].view_projection,
+                        .program = program});
       },
-      layers, s.map_size, layer_stale);
+      views, s.map_size, stale);
 
   // The resolve and the filter read every layer: run again when a view was
   // drawn or the settings changed, else their output is still current.

@@ -27,6 +27,13 @@ ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& cam
 
 LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, PositionSpan vertices,
                                   std::span<const std::uint32_t> indices) {
+  CasterBoundsCache cache;
+  return fit_shadow_views(inputs, vertices, indices, cache);
+}
+
+LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, PositionSpan vertices,
+                                  std::span<const std::uint32_t> indices,
+                                  CasterBoundsCache& cache) {
   const Light& light = inputs.light;
   LightShadowViews result;
   switch (light.type) {
@@ -41,8 +48,9 @@ LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, PositionSpan v
       const CameraFrustum& camera = inputs.camera;
       const std::vector<float> splits = cascade_splits(camera.near_plane, camera.far_plane,
                                                        inputs.cascades, inputs.cascade_lambda);
+      const CasterHierarchy& bounds = cache.bounds(vertices, indices, cascade_light_frame(light));
       result.views = fit_cascade_views(light, camera, splits, inputs.cascade_blend, vertices,
-                                       indices, inputs.map_size);
+                                       indices, bounds, inputs.map_size);
       result.cascade_end.assign(splits.begin() + 1, splits.end());
       result.cascade_start = splits.front();
       break;

@@ -17,6 +17,7 @@
 
 #include "penumbra/light.hpp"
 #include "penumbra/position_span.hpp"
+#include "penumbra/shadow/caster_bounds.hpp"
 #include "penumbra/shadow/light_view.hpp"
 
 namespace penumbra {
@@ -68,10 +69,25 @@ float cascade_slice_start(std::span<const float> splits, float blend, std::size_
 // of the camera frustum (the receivers it covers), the near end the
 // nearest geometry anywhere in its column (every caster that can shadow
 // them: along a directional light, a shadow's caster lies in the
-// receiver's column). Geometry is measured by clipping the triangles.
+// receiver's column). Geometry is measured through `bounds`, built over the
+// triangles in cascade_light_frame(light) (caster_bounds.hpp): exactly
+// where a bounding box lies inside a region, by clipping the triangles
+// where a small leaf crosses its edge, and otherwise to within 1/16 of the
+// cascade's width, outwards (never nearer than a caster). The cost follows
+// the cascades' edges, not the triangle count.
+std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
+                                         std::span<const float> splits, float blend,
+                                         PositionSpan vertices,
+                                         std::span<const std::uint32_t> indices,
+                                         const CasterHierarchy& bounds, int map_size);
+// The same, building the bounds for this one fit.
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
                                          std::span<const float> splits, float blend,
                                          PositionSpan vertices,
                                          std::span<const std::uint32_t> indices, int map_size);
+
+// The frame the cascades of a directional light are fitted in: the light's
+// rotation, looking down its direction (origin at the world's).
+glm::mat4 cascade_light_frame(const Light& light);
 
 }  // namespace penumbra

@@ -2,33 +2,56 @@
 // The depth maps of every shadow view (the views of all lights: see
 // shadow/shadow_views.hpp), one layer of one depth-texture array each.
 // The client draws its casters into each layer with a program of its own
-// that writes the relative depth z-bar: penumbra's renderer its scene
-// (render/scene_shadow_casters.hpp), an engine its meshes through
-// ShadowMaps (include/penumbra/shadow_maps.hpp).
+// whose vertices are placed by shaders/shadow/caster_position.glsl: penumbra's
+// renderer its scene (render/scene_shadow_casters.hpp), an engine its meshes
+// through ShadowMaps (include/penumbra/shadow_maps.hpp).
+//
+// How each view's layer comes to hold z-bar without its casters writing
+// gl_FragDepth (which would turn off early depth testing): an orthographic
+// view's hardware depth is z-bar; a spot view's is the reversed z0 / z,
+// drawn into a scratch layer and linearized into the view's layer by one
+// full-screen pass; only a point light's faces (radial depth, RADIAL_DEPTH
+// 1 in the caster shaders) write it.
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
 
+#include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
+#include "penumbra/shared/gpu_types.h"
 
 namespace penumbra {
+
+// How a view's casters produce its depth (caster_position.glsl).
+enum class CasterDepth {
+  Relative,    // orthographic: the rasterizer's depth is z-bar (depth test LESS)
+  Reciprocal,  // perspective: z0 / z, reversed (GREATER), linearized afterwards
+  Written,     // radial: the fragments write z-bar (LESS; RADIAL_DEPTH 1)
+};
+[[nodiscard]] CasterDepth caster_depth(const gpu::GpuShadowView& view);
 
 class ShadowMapPass {
  public:
   // The depth maps' format.
   static constexpr GLenum kDepthFormat = GL_DEPTH_COMPONENT32F;
 
+  ShadowMapPass();
+
   // Draws every caster seen from shadow view `view` into the bound
-  // framebuffer (the view's layer, cleared to 1), depth test LESS on.
+  // framebuffer, with the program that suits caster_depth(views[view])
+  // (RADIAL_DEPTH 1 for CasterDepth::Written) and the depth state set.
   using DrawCasters = std::function<void(int view)>;
 
-  // Calls draw(i) for views 0..view_count-1 with layer i bound (cleared
-  // first), or with `stale` (one flag per view: ViewCache) only for the
-  // views flagged; the other layers keep their depths. The array is
-  // reallocated only when the view count or the size changes, and then
-  // every view is drawn. Returns the number of views drawn.
-  int execute(const DrawCasters& draw, int view_count, int map_size,
+  // Calls draw(i) for each view with its layer (or the scratch layer)
+  // bound, clip control GL_ZERO_TO_ONE and depth range 0..1, or with
+  // `stale` (one flag per view: ViewCache) only for the views flagged; the
+  // other layers keep their depths. Restores clip control and depth range,
+  // and leaves the depth test on, GL_LESS, writes on. At least one layer is
+  // kept (cleared to 1) when there is no view. The array is reallocated
+  // only when the view count or the size changes, and then every view is
+  // drawn. Returns the number of views drawn.
+  int execute(const DrawCasters& draw, std::span<const gpu::GpuShadowView> views, int map_size,
               std::span<const std::uint8_t> stale = {});
 
   // DEPTH_COMPONENT32F 2D array holding z-bar, one layer per view. Valid
@@ -36,8 +59,15 @@ class ShadowMapPass {
   [[nodiscard]] const gl::Texture& depth_maps() const { return maps_; }
 
  private:
+  // Writes z-bar into `target` from the scratch layer's z0 / z.
+  void linearize(const gpu::GpuShadowView& view, GLuint target);
+
   gl::Texture maps_;
   std::vector<gl::Framebuffer> framebuffers_;  // one per layer
+  gl::Texture reciprocal_;                     // a spot view's z0 / z, one layer
+  gl::Framebuffer reciprocal_framebuffer_;
+  gl::Program linearize_program_;
+  gl::VertexArray empty_vertex_array_{"shadow linearize"};
 };
 
 }  // namespace penumbra

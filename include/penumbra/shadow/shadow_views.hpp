@@ -25,9 +25,10 @@ struct LightShadowViews {
 
 // What fit_shadow_views() reads besides the scene's triangles: equal inputs
 // give equal views, so a renderer refits a light only when they change (a
-// fit clips every triangle of the scene: tens of milliseconds for a
-// million). Inputs a light type does not use keep their defaults, so a
-// spot or point light does not refit when the camera moves.
+// spot or point light's fit clips every triangle of the scene: tens of
+// milliseconds for a million). Inputs a light type does not use keep their
+// defaults, so a spot or point light does not refit when the camera moves;
+// a directional light's cascades do, through caster bounds.
 struct ShadowViewInputs {
   Light light;
   int map_size = 0;
@@ -45,6 +46,11 @@ ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& cam
 // cascades, to the camera).
 LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, PositionSpan vertices,
                                   std::span<const std::uint32_t> indices);
+// The same, the cascades fitted through bounds kept in `cache` for the
+// same arrays (caster_bounds.hpp), so a camera move refits them in time
+// that does not grow with the triangle count.
+LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, PositionSpan vertices,
+                                  std::span<const std::uint32_t> indices, CasterBoundsCache& cache);
 // The same for a mesh with `vertices` (each with a glm::vec3 `position`)
 // and `indices` members.
 template <class Mesh>
