@@ -1,7 +1,8 @@
 #pragma once
 // The caster geometry the view fitting reads: the positions of a triangle
 // list, read in place from the engine's own vertex array (any vertex
-// layout: a pointer, a count and a stride), never copied.
+// layout: a pointer, a count and a stride), never copied; or, coarser,
+// one bounding box per caster (CasterBounds).
 #include <concepts>
 #include <cstddef>
 #include <glm/glm.hpp>
@@ -46,6 +47,13 @@ class PositionSpan {
   const std::byte* first_ = nullptr;
   std::size_t count_ = 0;
   std::size_t stride_ = sizeof(glm::vec3);
+};
+
+// A caster's world-space axis-aligned bounding box.
+struct CasterBounds {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+  bool operator==(const CasterBounds&) const = default;
 };
 
 }  // namespace penumbra

@@ -28,7 +28,6 @@
 #include <string_view>
 
 #include "light.hpp"
-#include "penumbra/shadow/view_cache.hpp"
 #include "position_span.hpp"
 #include "settings.hpp"
 #include "shadow_block.hpp"

@@ -25,6 +25,7 @@
 #include "penumbra/shadow/shadow_block_data.hpp"
 #include "penumbra/shadow/shadow_map_pass.hpp"
 #include "penumbra/shadow/shadow_views.hpp"
+#include "penumbra/shadow/view_cache.hpp"
 #include "shadow/gl_state_guard.hpp"
 #include "shadow/shadow_lookup.hpp"
 

@@ -15,16 +15,10 @@
 #include <span>
 #include <vector>
 
+#include "penumbra/position_span.hpp"
 #include "penumbra/shadow_block.hpp"
 
 namespace penumbra {
-
-// A caster's world-space axis-aligned bounding box.
-struct CasterBounds {
-  glm::vec3 min{0.0f};
-  glm::vec3 max{0.0f};
-  bool operator==(const CasterBounds&) const = default;
-};
 
 // Whether any part of `box` may project inside the view: false only when
 // all eight corners lie behind the eye (w <= 0) or outside one of the
