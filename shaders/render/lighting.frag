@@ -52,6 +52,10 @@ layout(binding = UNIT_SHADOW_FILTERED) uniform sampler2DArray shadow_filtered;
 #endif
 
 in vec2 v_uv;
+#if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
+// Texel reads per pixel (LightingPass::count_fetches).
+layout(r32ui, binding = IMAGE_OUTPUT) uniform uimage2D backprojection_fetch_counts;
+#endif
 layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
 
 vec3 world_position(ivec2 pixel, float depth) {
@@ -207,8 +211,7 @@ float filtered_hard_reference(int v, vec2 uv, ReceiverPlane z) {
 #endif
 }
 
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS || \
-    SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
 // PCF, or for one sample the hardware's 2x2 bilinear compare; width 0 is
 // the plain test.
 float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
@@ -220,7 +223,7 @@ float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCo
 }
 #endif
 
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS || SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS
 // PCSS (shaders/shadow/pcss.glsl) with the settings' sample counts; its
 // noise is the value `rotation` was made from (main()).
 float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
@@ -293,13 +296,14 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #endif
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
-  if (view.perspective != 0 && view.radial_depth == 0) {
-    return shadow_backprojection(shadow_depth, v, view, s, z, gradient, normal,
-                                 ivec2(gl_FragCoord.xy));
-  }
-  // A point light's cube faces and the sun's cascades: PCSS.
-  return pcss_lit_fraction(v, s, z, gradient, occluder_cone(light, view, s.position, 0.0),
-                           rotation);
+  float lit = shadow_backprojection(shadow_depth, shadow_filtered, v, view, s, z, gradient, normal,
+                                    int(light.position_type.w) == LIGHT_POINT,
+                                    ivec2(gl_FragCoord.xy));
+#if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
+  imageAtomicAdd(backprojection_fetch_counts, ivec2(gl_FragCoord.xy), backprojection_fetches);
+  backprojection_fetches = 0u;
+#endif
+  return lit;
 #elif SHADOW_TECHNIQUE >= TECHNIQUE_VSM
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
   float lit = soft_moment_shadow(v, s, z, light, normal, rotation);

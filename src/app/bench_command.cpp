@@ -1,10 +1,12 @@
 #include "app/bench_command.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -293,6 +295,9 @@ int run_bench_command(BenchArgs& args) {
   // log shows where the time goes), a bar with the time left where it is.
   ProgressBar progress("bench");
   std::vector<PassTimes> runs;
+  // Backprojection's texel reads per pixel {min, mean, max}: its work is
+  // bounded per pixel, not fixed, so its time depends on the scene.
+  std::vector<std::optional<std::array<double, 3>>> fetches(plan.size());
   for (std::size_t i = 0; i < plan.size(); ++i) {
     const ShadowSettings& settings = plan[i];
     progress.step(describe(settings), static_cast<std::int64_t>(i),
@@ -304,6 +309,11 @@ int run_bench_command(BenchArgs& args) {
     }
     print_run(run, args.frames, timer_clock);
     print_traffic(run, timer_clock, bandwidth);
+    if (settings.technique == Technique::Backprojection) {
+      fetches[i] = renderer.count_backprojection_fetches(args.render, settings);
+      std::printf("  backprojection fetches per pixel: min %.0f, mean %.1f, max %.0f\n",
+                  (*fetches[i])[0], (*fetches[i])[1], (*fetches[i])[2]);
+    }
     // Each result as it is measured, also when stdout is a file (a full
     // device or a closed pipe is an error here, with its reason).
     flush_standard_output();
@@ -326,8 +336,13 @@ int run_bench_command(BenchArgs& args) {
     j["bandwidth_source"] =
         bandwidth.source.empty() ? nlohmann::json(nullptr) : nlohmann::json(bandwidth.source);
     j["runs"] = nlohmann::json::array();
-    for (const PassTimes& run : runs)
-      j["runs"].push_back(run_json(run, args.frames, timer_clock, bandwidth));
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      j["runs"].push_back(run_json(runs[i], args.frames, timer_clock, bandwidth));
+      if (fetches[i]) {
+        j["runs"].back()["fetches_per_pixel"] = {
+            {"min", (*fetches[i])[0]}, {"mean", (*fetches[i])[1]}, {"max", (*fetches[i])[2]}};
+      }
+    }
     write_file_atomically(args.json, j.dump(2) + "\n");
   }
   return 0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "penumbra/error.hpp"
+#include "penumbra/filter/depth_hierarchy_pass.hpp"
 #include "penumbra/filter/fused_filter_pass.hpp"
 #include "penumbra/filter/gaussian_blur_pass.hpp"
 #include "penumbra/filter/summed_area_table_pass.hpp"
@@ -35,6 +36,7 @@ struct ShadowMaps::Impl {
   GaussianBlurPass blur_pass;
   FusedFilterPass fused_pass;
   SummedAreaTablePass sat_pass;
+  DepthHierarchyPass hierarchy_pass;
   gl::Buffer block_buffer{sizeof(ShadowBlock), nullptr, true, "penumbra shadow block"};
   gl::Buffer poisson = gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
                                         "penumbra poisson samples");
@@ -146,6 +148,10 @@ void ShadowMaps::render(const DrawCasters& draw) {
         m.filtered = m.sat_pass.table().id();
       }
     }
+  } else if (s.technique == Technique::Backprojection) {
+    // Read in the filtered maps' place (bind()).
+    m.hierarchy_pass.execute(m.map_pass.depth_maps());
+    m.filtered = m.hierarchy_pass.hierarchy().id();
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
@@ -168,7 +174,10 @@ void ShadowMaps::bind() const {
   const bool sat = m.block.params.filter_type == FILTER_SAT;
   const bool filtered = m.filtered != 0 && !sat;
   glBindTextureUnit(kShadowFilteredUnit, filtered ? m.filtered : depth);
-  glBindSampler(kShadowFilteredUnit, filtered ? m.bilinear.id() : m.nearest.id());
+  // Backprojection's depth hierarchy is read at every level (texelFetch):
+  // its own mipmapped parameters, no sampler.
+  const bool hierarchy = m.settings.technique == Technique::Backprojection;
+  glBindSampler(kShadowFilteredUnit, hierarchy ? 0 : (filtered ? m.bilinear.id() : m.nearest.id()));
   // The tables are read texel by texel (texelFetch: no sampler applies).
   glBindTextureUnit(kShadowSatUnit, sat ? m.filtered : 0);
 }
