@@ -53,10 +53,11 @@
 #define BACKPROJECTION_SIDE 16  // source points per side (a uint holds two rows)
 // Patches per side of the blockers' region at most: a wider region is read
 // from the hierarchy's level whose cells it spans in at most this many.
-// Default scene, source 1.5, 320x180, 2048^2 maps: RMSE 0.0271 at 16,
-// 0.0189 at 32, 0.0146 at 64 (each a silhouette moves by up to half a
-// cell); at 32 the lighting pass takes 1.5x PCSS's time (bench, 640x360).
-#define BACKPROJECTION_MAX_CELLS 32
+// Default scene, source 1.5, 320x180, 1024^2 maps (pcss_noise_test.cpp):
+// RMSE 0.0246 at 16, 0.0167 at 32, 0.0150 at 36, 0.0115 at 40 and 48 (a
+// silhouette moves by up to half a cell); the lighting pass takes 1.5x,
+// 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
+#define BACKPROJECTION_MAX_CELLS 40
 
 // Occluders below the receiver's tangent plane cannot block the light that
 // reaches it (the rays that count lie above the plane), within this sine

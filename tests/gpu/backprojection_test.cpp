@@ -160,7 +160,7 @@ EdgeError edge_error(Technique technique, int map_size) {
 // A 1024^2 map: the penumbra is about 14 texels wide, where a micro-
 // occluder centred on the lookup instead of its texel moved the silhouette
 // by up to 0.7 texel (measured before the texel-aligned patches: RMS
-// 0.0206, peak 0.0456).
+// 0.0182, peak 0.046; now 0.0017, peak 0.0056).
 TEST_F(GpuTest, BackprojectionHasNoSawtoothAcrossAStraightEdge) {
   const EdgeError e = edge_error(Technique::Backprojection, 1024);
   ASSERT_GT(e.bins, 60) << "too few receivers across the penumbra";
@@ -169,8 +169,9 @@ TEST_F(GpuTest, BackprojectionHasNoSawtoothAcrossAStraightEdge) {
 
 // A box floating over the ground, lit by a sun or a point light with a
 // wide source: backprojection on a cube face and on cascades against the
-// traced reference, with PCSS (which they fell back to before) as the
-// yardstick.
+// traced reference, with PCSS (which they fell back to before, the same
+// error) as the yardstick: point light 0.0052 against pcss's 0.0852, sun
+// 0.0020 against 0.0123.
 Scene floating_box(LightType type) {
   Scene scene;
   scene.name = "floating box";
