@@ -5,14 +5,9 @@
 // penumbra_shadow() (see penumbra/shadow_maps.hpp). Shared with the GLSL
 // (one declaration for both), so the layouts cannot drift; the sizes below
 // are std140's, and a GPU test compares the offsets with the driver's.
-//
-// Binding points (each a macro an engine may define before including
-// this header and before the GLSL, to move it):
-//   PENUMBRA_SHADOW_BLOCK_BINDING  uniform buffer, the ShadowBlock   (default 7)
-//   PENUMBRA_UNIT_SHADOW_DEPTH     texture unit, z-bar depth maps    (default 13)
-//   PENUMBRA_UNIT_SHADOW_FILTERED  texture unit, filtered maps       (default 14)
-//   PENUMBRA_UNIT_SHADOW_COMPARE   texture unit, comparison sampler  (default 15)
-//   PENUMBRA_UNIT_SHADOW_SAT       texture unit, summed-area tables  (default 12)
+// Where the block and the maps are bound is the engine's choice, made at
+// run time: ShadowBindings below, given to ShadowMaps and to
+// shadow_lookup_glsl().
 // The struct's one declaration, compiled by the GLSL too (shaders/shared/,
 // installed as include/penumbra/shared/).
 #include "penumbra/shared/gpu_types.h"
@@ -35,10 +30,37 @@ static_assert(sizeof(ShadowBlock) ==
 inline constexpr int kMaxLights = MAX_LIGHTS;
 inline constexpr int kMaxShadowViews = MAX_SHADOW_VIEWS;
 inline constexpr int kMaxCascades = MAX_CASCADES;
-inline constexpr unsigned kShadowBlockBinding = PENUMBRA_SHADOW_BLOCK_BINDING;
-inline constexpr unsigned kShadowDepthUnit = PENUMBRA_UNIT_SHADOW_DEPTH;
-inline constexpr unsigned kShadowFilteredUnit = PENUMBRA_UNIT_SHADOW_FILTERED;
-inline constexpr unsigned kShadowCompareUnit = PENUMBRA_UNIT_SHADOW_COMPARE;
-inline constexpr unsigned kShadowSatUnit = PENUMBRA_UNIT_SHADOW_SAT;
+
+// The binding points the lookup reads (penumbra_shadow() in GLSL) and
+// ShadowMaps::bind() binds: the engine chooses them, so that they stay
+// clear of its own. Give the same value to ShadowMaps' constructor and to
+// shadow_lookup_glsl(), which declares the block, the samplers and the
+// buffer at exactly these bindings (and defines them as the GLSL macros
+// named beside each field, for the engine's shader to read). The four
+// texture units must differ; each binding must be below the context's
+// limit (GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, GL_MAX_UNIFORM_BUFFER_BINDINGS,
+// GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS; ShadowMaps checks them).
+struct ShadowBindings {
+  // Uniform buffer binding of the ShadowBlock (PENUMBRA_SHADOW_BLOCK_BINDING).
+  // ShadowMaps::render() binds it too, for its caster program.
+  unsigned block = 7;
+  // Texture unit of the z-bar depth maps, a sampler2DArray read with a
+  // nearest sampler (PENUMBRA_SHADOW_DEPTH_UNIT).
+  unsigned depth_unit = 13;
+  // Texture unit of the technique's filtered representation, bilinear
+  // (PENUMBRA_SHADOW_FILTERED_UNIT).
+  unsigned filtered_unit = 14;
+  // Texture unit of the depth maps through a comparison sampler, a
+  // sampler2DArrayShadow (PENUMBRA_SHADOW_COMPARE_UNIT).
+  unsigned compare_unit = 15;
+  // Texture unit of the summed-area tables, a usampler2DArray
+  // (Filter::Sat; PENUMBRA_SHADOW_SAT_UNIT).
+  unsigned sat_unit = 12;
+  // Shader storage buffer binding of PCF's and PCSS's sample set
+  // (PENUMBRA_POISSON_BINDING).
+  unsigned poisson_buffer = 2;
+
+  friend bool operator==(const ShadowBindings&, const ShadowBindings&) = default;
+};
 
 }  // namespace penumbra

@@ -19,6 +19,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "light.hpp"
 #include "position_span.hpp"
@@ -57,7 +58,11 @@ class ShadowMaps {
  public:
   // Needs a current OpenGL 4.5 core context (the one the engine renders
   // with). Compiles penumbra's programs: throws RuntimeError if they fail.
-  ShadowMaps();
+  // `bindings`: where bind() puts the block, the maps and the sample set
+  // (and render() the block); the lookup must be generated with the same
+  // (shadow_lookup_glsl(bindings)). Throws UsageError if two texture units
+  // coincide or a binding is past the context's limit.
+  explicit ShadowMaps(const ShadowBindings& bindings = {});
   ~ShadowMaps();
   ShadowMaps(ShadowMaps&&) noexcept;
   ShadowMaps& operator=(ShadowMaps&&) noexcept;
@@ -79,19 +84,20 @@ class ShadowMaps {
   // Changes, and leaves: the current program, the depth state (test on,
   // LESS, writes on), face culling (off), texture unit 0, image units 0
   // and 1, storage-buffer binding 1, the uniform-buffer binding
-  // PENUMBRA_SHADOW_BLOCK_BINDING. Restores the draw framebuffer and the
+  // bindings().block. Restores the draw framebuffer and the
   // viewport.
   void render(const DrawCasters& draw);
 
-  // Binds what penumbra_shadow() reads: the block (uniform buffer
-  // PENUMBRA_SHADOW_BLOCK_BINDING), the depth maps (units
-  // PENUMBRA_UNIT_SHADOW_DEPTH, nearest, and PENUMBRA_UNIT_SHADOW_COMPARE,
-  // with a comparison sampler), the filtered maps (unit
-  // PENUMBRA_UNIT_SHADOW_FILTERED, bilinear), the summed-area tables (unit
-  // PENUMBRA_UNIT_SHADOW_SAT; texture 0 without --filter sat) and PCF's
-  // sample set (storage buffer BINDING_POISSON_SSBO, 2). Valid after
-  // render().
+  // Binds what penumbra_shadow() reads, at bindings(): the block (uniform
+  // buffer .block), the depth maps (units .depth_unit, nearest, and
+  // .compare_unit, with a comparison sampler), the filtered maps (unit
+  // .filtered_unit, bilinear), the summed-area tables (unit .sat_unit;
+  // texture 0 without Filter::Sat) and PCF's sample set (storage buffer
+  // .poisson_buffer). Valid after render().
   void bind() const;
+
+  // The binding points given to the constructor.
+  [[nodiscard]] const ShadowBindings& bindings() const;
 
   // The block as last uploaded, the views' count, and the textures (GL
   // names owned by ShadowMaps), for an engine that binds them itself.
@@ -108,13 +114,27 @@ class ShadowMaps {
 };
 
 // The lookup's GLSL (shaders/shadow/penumbra_shadows.glsl with its
-// includes expanded; the same text is installed as
-// share/penumbra/penumbra_shadows.glsl). It declares the block and the
-// samplers at the binding points above and
+// includes expanded; with the default bindings, the same text is installed
+// as share/penumbra/penumbra_shadows.glsl). It declares the block, the
+// samplers and the sample set at `bindings` (which must be ShadowMaps'),
+// and
 //   float penumbra_shadow(int light, vec3 world_position, vec3 world_normal)
 // (the fraction of the light that reaches the point, 1 = lit), with one
-// entry point per technique (penumbra_shadow_pcf, ..._msm, ...). Insert it
-// after the engine's "#version 450 core" line.
-std::string shadow_lookup_glsl();
+// entry point per technique (penumbra_shadow_pcf, ..._msm, ...).
+// A guest in the engine's shader: every other name it declares (macros,
+// structs, blocks, functions, constants) begins with PENUMBRA_, Penumbra
+// or penumbra_, so it cannot collide with the engine's own. Insert it
+// right after the engine's "#version 450 core" line: it ends with
+// "#line 2", so the engine's following lines keep their own numbers in
+// the driver's messages (inside the lookup, the numbers are the lookup
+// text's own). Throws UsageError if two texture units coincide.
+std::string shadow_lookup_glsl(const ShadowBindings& bindings = {});
+
+// `shader` (an engine's GLSL source) with the lookup inserted after its
+// #version line and the #extension and #define PENUMBRA_... lines that
+// follow it (PENUMBRA_NO_FRAGMENT_ENTRY_POINTS), and a #line that restores
+// the shader's own line numbers after it. Throws UsageError if
+// `shader` has no #version line, or as shadow_lookup_glsl().
+std::string insert_shadow_lookup(std::string_view shader, const ShadowBindings& bindings = {});
 
 }  // namespace penumbra

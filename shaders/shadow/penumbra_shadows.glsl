@@ -1,8 +1,8 @@
 // penumbra's shadow lookup for an engine's own shaders. Installed, with
 // its includes expanded, as share/penumbra/penumbra_shadows.glsl, and
 // returned by penumbra::shadow_lookup_glsl(): put it after the engine's
-// "#version 450 core" (and any PENUMBRA_* binding it moves), bind the maps
-// with ShadowMaps::bind(), and call
+// "#version 450 core" (penumbra::insert_shadow_lookup() does), bind the
+// maps with ShadowMaps::bind(), and call
 //
 //   float penumbra_shadow(int light, vec3 world_position, vec3 world_normal)
 //
@@ -40,23 +40,25 @@
 #include "pcss.glsl"
 #include "backprojection.glsl"
 
+// The binding points are the engine's (penumbra::ShadowBindings):
+// shadow_lookup_glsl() defines these macros before this text.
 layout(std140, binding = PENUMBRA_SHADOW_BLOCK_BINDING) uniform PenumbraShadowBlock {
-  GpuShadowBlock penumbra;
+  GpuShadowBlock penumbra_block;
 };
 // Every shadow view's map is one layer of these arrays.
-layout(binding = PENUMBRA_UNIT_SHADOW_DEPTH) uniform sampler2DArray penumbra_depth;
-layout(binding = PENUMBRA_UNIT_SHADOW_COMPARE) uniform sampler2DArrayShadow penumbra_compare;
-layout(binding = PENUMBRA_UNIT_SHADOW_FILTERED) uniform sampler2DArray penumbra_filtered;
+layout(binding = PENUMBRA_SHADOW_DEPTH_UNIT) uniform sampler2DArray penumbra_depth;
+layout(binding = PENUMBRA_SHADOW_COMPARE_UNIT) uniform sampler2DArrayShadow penumbra_compare;
+layout(binding = PENUMBRA_SHADOW_FILTERED_UNIT) uniform sampler2DArray penumbra_filtered;
 // With --filter sat: the representation's summed-area tables.
-layout(binding = PENUMBRA_UNIT_SHADOW_SAT) uniform usampler2DArray penumbra_sat;
+layout(binding = PENUMBRA_SHADOW_SAT_UNIT) uniform usampler2DArray penumbra_sat;
 
 // Fraction of the light that reaches the point according to shadow view v.
 // `pixel` seeds backprojection's jitter; `noise` in [0, 1) is the
 // pixel's noise value, `rotation` the angle 2 pi noise.
 float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec3 normal,
                            vec2 pixel, float noise, vec2 rotation) {
-  GpuShadowView view = penumbra.views[v];
-  GpuShadow params = penumbra.params;
+  GpuShadowView view = penumbra_block.views[v];
+  GpuShadow params = penumbra_block.params;
   ShadowLookup s = shadow_lookup(view, world, normal, params.normal_offset);
   if (!s.inside) return 1.0;
   bool filterable = technique >= TECHNIQUE_VSM;
@@ -88,7 +90,7 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
                        noise, params.pcss_blocker_samples, params.pcss_filter_samples);
   }
   if (!filterable) return 1.0;
-  bool quantized = penumbra.counts.w != 0;
+  bool quantized = penumbra_block.counts.w != 0;
   bool sat = params.filter_type == FILTER_SAT;
   float lit;
   if (sat && params.soft_moments != 0) {
@@ -109,14 +111,14 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
 // `technique` (TECHNIQUE_*); `pixel` seeds the per-pixel sample rotation.
 float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, vec3 normal,
                                    vec2 pixel) {
-  if (technique == TECHNIQUE_NONE || light_index < 0 || light_index >= penumbra.counts.x) {
+  if (technique == TECHNIQUE_NONE || light_index < 0 || light_index >= penumbra_block.counts.x) {
     return 1.0;
   }
-  GpuLight light = penumbra.lights[light_index];
+  GpuLight light = penumbra_block.lights[light_index];
   float noise = interleaved_gradient_noise(floor(pixel));
   float angle = 6.28318530718 * noise;
   vec2 rotation = vec2(cos(angle), sin(angle));
-  float camera_depth = -(penumbra.camera_view * vec4(world, 1.0)).z;
+  float camera_depth = -(penumbra_block.camera_view * vec4(world, 1.0)).z;
   ViewSelection selected = select_shadow_view(light, world, camera_depth);
   float lit =
       penumbra_view_shadow(technique, selected.view, light, world, normal, pixel, noise, rotation);
@@ -129,7 +131,7 @@ float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, v
 }
 
 float penumbra_shadow_at(int light, vec3 world_position, vec3 world_normal, vec2 pixel) {
-  return penumbra_shadow_technique_at(penumbra.counts.z, light, world_position, world_normal,
+  return penumbra_shadow_technique_at(penumbra_block.counts.z, light, world_position, world_normal,
                                       pixel);
 }
 

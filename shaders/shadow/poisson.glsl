@@ -1,6 +1,11 @@
 // The PCF/PCSS sample set: kPoissonSampleCount points in [-1, 1]^2, every
 // prefix well spread (src/shadow/poisson_disc.cpp), the first one the centre.
-layout(std430, binding = BINDING_POISSON_SSBO) readonly buffer PoissonSamples {
+// Bound where penumbra's renderer binds it, or in the lookup an engine
+// includes where the engine chose (ShadowBindings::poisson_buffer).
+#ifndef PENUMBRA_POISSON_BINDING
+#define PENUMBRA_POISSON_BINDING BINDING_POISSON_SSBO
+#endif
+layout(std430, binding = PENUMBRA_POISSON_BINDING) readonly buffer PoissonSamples {
   vec2 poisson_samples[];
 };
 

@@ -43,25 +43,6 @@
 #define UNIT_COMPUTE_INPUT 0
 #define UNIT_PRESENT_SOURCE 0
 
-// The shadow core's binding points in an engine's shaders (ShadowMaps::bind,
-// shaders/shadow/penumbra_shadows.glsl): defaults an engine may change by
-// defining them first, in its C++ and its GLSL alike.
-#ifndef PENUMBRA_SHADOW_BLOCK_BINDING
-#define PENUMBRA_SHADOW_BLOCK_BINDING 7
-#endif
-#ifndef PENUMBRA_UNIT_SHADOW_DEPTH
-#define PENUMBRA_UNIT_SHADOW_DEPTH 13  // z-bar depth maps, one layer per shadow view
-#endif
-#ifndef PENUMBRA_UNIT_SHADOW_FILTERED
-#define PENUMBRA_UNIT_SHADOW_FILTERED 14  // the technique's filtered representation
-#endif
-#ifndef PENUMBRA_UNIT_SHADOW_COMPARE
-#define PENUMBRA_UNIT_SHADOW_COMPARE 15  // the depth maps through a comparison sampler
-#endif
-#ifndef PENUMBRA_UNIT_SHADOW_SAT
-#define PENUMBRA_UNIT_SHADOW_SAT 12  // the summed-area tables (--filter sat; unsigned integers)
-#endif
-
 // Uniform locations
 #define LOCATION_FIRST_INDEX 0  // GpuScene::draw: the batch's first index, for gl_PrimitiveID
 

@@ -28,26 +28,43 @@ Slot slots[kSlots];
 // Read once at start: whether a crash may come from an address-space limit.
 bool address_space_limited = false;
 
-// Removes the files of a flat folder (what the commands write), then the
-// folder: open, getdents64, unlinkat and rmdir are all system calls.
+// Removes what a folder holds, subfolders (the report's foliage/ scene)
+// to a few levels included, then the folder itself: openat, getdents64,
+// unlinkat are all system calls, so this is safe in a signal handler.
+constexpr int kMaxFolderDepth = 4;
+
+void remove_folder_contents(int dir, int depth) {
+  alignas(8) char buffer[2048];
+  for (;;) {
+    const long n = ::syscall(SYS_getdents64, dir, buffer, sizeof buffer);
+    if (n <= 0) break;
+    for (long offset = 0; offset < n;) {
+      // struct linux_dirent64: d_ino (8), d_off (8), d_reclen (2), d_type (1), d_name.
+      unsigned short length = 0;
+      std::memcpy(&length, buffer + offset + 16, sizeof length);
+      const unsigned char type = static_cast<unsigned char>(buffer[offset + 18]);
+      const char* name = buffer + offset + 19;
+      if (std::strcmp(name, ".") != 0 && std::strcmp(name, "..") != 0) {
+        if (type == DT_DIR && depth < kMaxFolderDepth) {
+          const int sub = ::openat(dir, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+          if (sub >= 0) {
+            remove_folder_contents(sub, depth + 1);
+            ::close(sub);
+          }
+          ::unlinkat(dir, name, AT_REMOVEDIR);
+        } else {
+          ::unlinkat(dir, name, 0);
+        }
+      }
+      offset += length;
+    }
+  }
+}
+
 void remove_folder(const char* path) {
   const int dir = ::open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir >= 0) {
-    alignas(8) char buffer[8192];
-    for (;;) {
-      const long n = ::syscall(SYS_getdents64, dir, buffer, sizeof buffer);
-      if (n <= 0) break;
-      for (long offset = 0; offset < n;) {
-        // struct linux_dirent64: d_ino (8), d_off (8), d_reclen (2), d_type (1), d_name.
-        unsigned short length = 0;
-        std::memcpy(&length, buffer + offset + 16, sizeof length);
-        const char* name = buffer + offset + 19;
-        if (std::strcmp(name, ".") != 0 && std::strcmp(name, "..") != 0) {
-          ::unlinkat(dir, name, 0);
-        }
-        offset += length;
-      }
-    }
+    remove_folder_contents(dir, 0);
     ::close(dir);
   }
   ::rmdir(path);

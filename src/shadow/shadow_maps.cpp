@@ -24,13 +24,17 @@
 #include "penumbra/shadow/shadow_block_data.hpp"
 #include "penumbra/shadow/shadow_map_pass.hpp"
 #include "penumbra/shadow/shadow_views.hpp"
-#include "penumbra/version.hpp"
+#include "shadow/shadow_lookup.hpp"
 
 namespace penumbra {
 
 struct ShadowMaps::Impl {
-  gl::Program caster_program =
-      gl::Program::graphics("shadow/caster_depth.vert", "shadow/caster_depth.frag");
+  explicit Impl(const ShadowBindings& b) : bindings(b) {}
+
+  ShadowBindings bindings;
+  // The caster program declares the block at the engine's binding.
+  gl::Program caster_program = gl::Program::graphics(
+      "shadow/caster_depth.vert", "shadow/caster_depth.frag", shadow_binding_defines(bindings));
   ShadowMapPass map_pass;
   MomentResolvePass resolve_pass;
   GaussianBlurPass blur_pass;
@@ -56,7 +60,8 @@ struct ShadowMaps::Impl {
   bool rendered = false;
 };
 
-ShadowMaps::ShadowMaps() : impl_(std::make_unique<Impl>()) {}
+ShadowMaps::ShadowMaps(const ShadowBindings& bindings)
+    : impl_(std::make_unique<Impl>(checked_bindings(bindings))) {}
 ShadowMaps::~ShadowMaps() = default;
 ShadowMaps::ShadowMaps(ShadowMaps&&) noexcept = default;
 ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
@@ -110,7 +115,7 @@ void ShadowMaps::render(const DrawCasters& draw) {
   GLint viewport[4] = {};
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
   glGetIntegerv(GL_VIEWPORT, viewport);
-  glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, m.block_buffer.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, m.bindings.block, m.block_buffer.id());
 
   const ShadowSettings& s = m.settings;
   const int view_count = m.block.counts.y;
@@ -161,25 +166,31 @@ void ShadowMaps::render(const DrawCasters& draw) {
 void ShadowMaps::bind() const {
   const Impl& m = *impl_;
   if (!m.rendered) throw std::logic_error("ShadowMaps::bind() before render()");
-  glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, m.block_buffer.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_POISSON_SSBO, m.poisson.id());
+  const ShadowBindings& b = m.bindings;
+  glBindBufferBase(GL_UNIFORM_BUFFER, b.block, m.block_buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b.poisson_buffer, m.poisson.id());
   const GLuint depth = m.map_pass.depth_maps().id();
-  glBindTextureUnit(kShadowDepthUnit, depth);
-  glBindSampler(kShadowDepthUnit, m.nearest.id());
-  glBindTextureUnit(kShadowCompareUnit, depth);
-  glBindSampler(kShadowCompareUnit, m.compare.id());
+  glBindTextureUnit(b.depth_unit, depth);
+  glBindSampler(b.depth_unit, m.nearest.id());
+  glBindTextureUnit(b.compare_unit, depth);
+  glBindSampler(b.compare_unit, m.compare.id());
   // The techniques that read no filtered map (or the summed-area tables
   // instead) have the depth maps stand in, so the sampler2DArray the
   // lookup declares is never left unbound.
   const bool sat = m.block.params.filter_type == FILTER_SAT;
   const bool filtered = m.filtered != 0 && !sat;
-  glBindTextureUnit(kShadowFilteredUnit, filtered ? m.filtered : depth);
+  glBindTextureUnit(b.filtered_unit, filtered ? m.filtered : depth);
   // Backprojection's depth hierarchy is read at every level (texelFetch):
   // its own mipmapped parameters, no sampler.
   const bool hierarchy = m.settings.technique == Technique::Backprojection;
-  glBindSampler(kShadowFilteredUnit, hierarchy ? 0 : (filtered ? m.bilinear.id() : m.nearest.id()));
+  glBindSampler(b.filtered_unit,
+                hierarchy ? 0 : (filtered ? m.bilinear.id() : m.nearest.id()));
   // The tables are read texel by texel (texelFetch: no sampler applies).
-  glBindTextureUnit(kShadowSatUnit, sat ? m.filtered : 0);
+  glBindTextureUnit(b.sat_unit, sat ? m.filtered : 0);
+}
+
+const ShadowBindings& ShadowMaps::bindings() const {
+  return impl_->bindings;
 }
 
 const ShadowBlock& ShadowMaps::block() const {
@@ -193,12 +204,6 @@ GLuint ShadowMaps::depth_maps() const {
 }
 GLuint ShadowMaps::filtered_maps() const {
   return impl_->filtered;
-}
-
-std::string shadow_lookup_glsl() {
-  return "// penumbra " PENUMBRA_VERSION_STRING
-         " shadow lookup (shaders/shadow/penumbra_shadows.glsl, includes expanded)\n" +
-         gl::expand_shader_includes("shadow/penumbra_shadows.glsl");
 }
 
 }  // namespace penumbra

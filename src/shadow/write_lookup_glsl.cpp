@@ -1,6 +1,7 @@
-// Writes penumbra::shadow_lookup_glsl() to the file named by its argument:
-// the lookup include installed as share/penumbra/penumbra_shadows.glsl
-// (run at build time; needs no GPU).
+// Writes penumbra::shadow_lookup_glsl() with the default bindings to the
+// file named by its argument: the lookup include installed as
+// share/penumbra/penumbra_shadows.glsl (run at build time; needs no GPU).
+// A declaration the prefixing cannot read fails the build here.
 #include <cstdio>
 #include <fstream>
 #include <iostream>

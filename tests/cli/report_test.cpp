@@ -90,6 +90,28 @@ void expect_foliage_section(const std::string& html, const fs::path& dir) {
                             "foliage-spot-error-vsm.png", "foliage-directional-error-pcss.png"}) {
     EXPECT_NE(section.find(std::string("<img src=\"") + image + "\""), std::string::npos) << image;
   }
+  // The cut-outs re-measured at 512^2, 1024^2 and 2048^2 maps: per light,
+  // hard's RMSE and total shadow at each size, and at the study's own map
+  // size (512^2 here) the very RMSE of the table above.
+  const std::regex size_row_re(
+      R"re(<tr><td>(\w+)</td><td>hard</td><td>(0\.\d{4})</td><td>(0\.\d{4})</td><td>(0\.\d{4})</td><td>(\d\.\d{3})</td><td>(\d\.\d{3})</td><td>(\d\.\d{3})</td></tr>)re");
+  EXPECT_NE(section.find("<th>RMSE 512^2</th><th>RMSE 1024^2</th><th>RMSE 2048^2</th>"
+                         "<th>total shadow 512^2</th>"),
+            std::string::npos)
+      << section;
+  int size_rows = 0;
+  for (std::sregex_iterator it(section.begin(), section.end(), size_row_re), stop; it != stop;
+       ++it, ++size_rows) {
+    const bool sun = (*it)[1].str() == "directional";
+    EXPECT_DOUBLE_EQ(std::stod((*it)[2].str()), sun ? rmse["hard"].first : rmse["hard"].second);
+    for (int size = 0; size < 3; ++size) {
+      // As much shadow as the reference, give or take the edges' texels.
+      const double shadow = std::stod((*it)[5 + size].str());
+      EXPECT_GT(shadow, 0.5) << (*it)[0].str();
+      EXPECT_LT(shadow, 1.5) << (*it)[0].str();
+    }
+  }
+  EXPECT_EQ(size_rows, 2) << "hard under each light:\n" << section;
   // The scene's files are in the report's folder, for the commands.
   EXPECT_TRUE(fs::exists(dir / "foliage" / "foliage.gltf"));
   EXPECT_TRUE(fs::exists(dir / "foliage" / "leaves.png"));

@@ -7,6 +7,7 @@
 #include "penumbra/gl/program.hpp"
 #include "penumbra/shared/bindings.h"
 #include "penumbra/shared/gpu_types.h"
+#include "shadow/shadow_lookup.hpp"
 
 namespace penumbra {
 namespace {
@@ -69,23 +70,24 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
 // The shadow core's one block (penumbra::ShadowBlock), as the lookup an
 // engine includes declares it.
 TEST_F(GpuTest, ShadowBlockMatchesItsCppMirror) {
-  gl::Program lookup = gl::Program::graphics("common/fullscreen.vert", "test/penumbra_lookup.frag");
+  gl::Program lookup = gl::Program::graphics("common/fullscreen.vert", "test/penumbra_lookup.frag",
+                                             shadow_binding_defines({}));
   const GLuint p = lookup.id();
-  EXPECT_EQ(driver_offset(p, "penumbra.params.constant_bias"),
+  EXPECT_EQ(driver_offset(p, "penumbra_block.params.constant_bias"),
             GLint(offsetof(gpu::GpuShadowBlock, params)));
-  EXPECT_EQ(driver_offset(p, "penumbra.params.pcf_samples"),
+  EXPECT_EQ(driver_offset(p, "penumbra_block.params.pcf_samples"),
             GLint(offsetof(gpu::GpuShadowBlock, params) + offsetof(gpu::GpuShadow, pcf_samples)));
-  EXPECT_EQ(driver_offset(p, "penumbra.params.filter_type"),
+  EXPECT_EQ(driver_offset(p, "penumbra_block.params.filter_type"),
             GLint(offsetof(gpu::GpuShadowBlock, params) + offsetof(gpu::GpuShadow, filter_type)));
-  EXPECT_OFFSET(p, "penumbra", GpuShadowBlock, camera_view);
-  EXPECT_OFFSET(p, "penumbra", GpuShadowBlock, counts);
-  EXPECT_EQ(driver_offset(p, "penumbra.lights[0].position_type"),
+  EXPECT_OFFSET(p, "penumbra_block", GpuShadowBlock, camera_view);
+  EXPECT_OFFSET(p, "penumbra_block", GpuShadowBlock, counts);
+  EXPECT_EQ(driver_offset(p, "penumbra_block.lights[0].position_type"),
             GLint(offsetof(gpu::GpuShadowBlock, lights)));
-  EXPECT_EQ(driver_offset(p, "penumbra.lights[1].position_type"),
+  EXPECT_EQ(driver_offset(p, "penumbra_block.lights[1].position_type"),
             GLint(offsetof(gpu::GpuShadowBlock, lights) + sizeof(gpu::GpuLight)));
-  EXPECT_EQ(driver_offset(p, "penumbra.views[0].view"),
+  EXPECT_EQ(driver_offset(p, "penumbra_block.views[0].view"),
             GLint(offsetof(gpu::GpuShadowBlock, views)));
-  EXPECT_EQ(driver_offset(p, "penumbra.views[1].view"),
+  EXPECT_EQ(driver_offset(p, "penumbra_block.views[1].view"),
             GLint(offsetof(gpu::GpuShadowBlock, views) + sizeof(gpu::GpuShadowView)));
   GLint size = 0;
   const GLuint block = glGetProgramResourceIndex(p, GL_UNIFORM_BLOCK, "PenumbraShadowBlock");
