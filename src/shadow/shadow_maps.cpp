@@ -183,8 +183,7 @@ void ShadowMaps::bind() const {
   // Backprojection's depth hierarchy is read at every level (texelFetch):
   // its own mipmapped parameters, no sampler.
   const bool hierarchy = m.settings.technique == Technique::Backprojection;
-  glBindSampler(b.filtered_unit,
-                hierarchy ? 0 : (filtered ? m.bilinear.id() : m.nearest.id()));
+  glBindSampler(b.filtered_unit, hierarchy ? 0 : (filtered ? m.bilinear.id() : m.nearest.id()));
   // The tables are read texel by texel (texelFetch: no sampler applies).
   glBindTextureUnit(b.sat_unit, sat ? m.filtered : 0);
 }
