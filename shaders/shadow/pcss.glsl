@@ -43,49 +43,21 @@ vec2 cone_blocker_search(sampler2DArray depth_maps, int v, GpuShadowView view, S
   return vec2(blockers, blocker_depth);
 }
 
-// The filter of shadow_pcss(): the pixel's shifted R2 set of bilinear
-// taps over the square `width` texels wide around uv (as
-// shadow_pcf_bilinear()), each tap's four texels gathered and tested one
-// by one, so that a texel in front of the receiver's plane blocks only if
-// it lies inside the cone from the receiver to the source (occluder_cone.
-// glsl): the lit face beside a receiver at its foot stays out of the
-// filter, as it stays out of the blocker search, also where a real blocker
-// near it makes the penumbra wide.
-float pcss_cone_filter(sampler2DArray depth_maps, int v, GpuShadowView view, OccluderCone cone,
-                       vec2 uv, float depth, vec2 gradient, float width, int samples,
-                       vec2 shift) {
-  vec2 size = vec2(textureSize(depth_maps, 0).xy);
-  vec2 center = uv * size;
-  // textureGather's order of the 2x2 texels, from the lower-left one.
-  const vec2 gathered[4] = vec2[](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(1.0, 0.0), vec2(0.0));
-  int taps = samples <= 1 ? 1 : samples;
-  float lit = 0.0;
-  for (int i = 0; i < taps; ++i) {
-    vec2 offset = samples <= 1 ? vec2(0.0) : square_sample(i, shift) * (0.5 * width);  // texels
-    vec2 point = center + offset;
-    vec2 lower_left = floor(point - 0.5) + 0.5;  // centre of the lower-left texel
-    vec2 f = point - lower_left;
-    vec4 weights = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
-    vec4 occluders = textureGather(depth_maps, vec3((lower_left + 0.5) / size, float(v)));
-    float receiver = depth + dot(gradient, offset);  // one reference per tap, as the hardware's
-    for (int c = 0; c < 4; ++c) {
-      ivec2 texel = clamp(ivec2(floor(lower_left + gathered[c])), ivec2(0), ivec2(size) - 1);
-      bool blocked = occluders[c] < receiver &&
-                     texel_occludes(view, texel, ivec2(size), occluders[c], cone);
-      lit += blocked ? 0.0 : weights[c];
-    }
-  }
-  return lit / float(taps);
-}
-
 // PCSS: blocker search (cone_blocker_search()), penumbra estimate, PCF over
 // it, each with as many samples as its region's size in texels asks for,
 // up to blocker_samples and filter_samples. The search's region's shape
 // matters less than its spread, and the rotation dithers where a
 // penumbra's outer end stops finding blockers. The filter takes bilinear
 // compares at the pixel's shifted R2 set over the axis-aligned square of
-// the light's source (square_samples.glsl), each tap's texels tested
-// against the cone as well (pcss_cone_filter()). Both patterns come from one
+// the light's source (square_samples.glsl). The filter's taps are not
+// tested against the cone: PCF over the estimated penumbra stands for
+// blockers at every depth, and those off the mean depth lie outside the
+// receiver's cone at their own depth while still standing for the part of
+// the source it hides. Testing each gathered texel against the cone
+// (480x270, 2048^2 maps, against the traced reference) leaked light: RMSE
+// 0.0172 -> 0.0220 on the default scene at source 0.5, 0.0128 -> 0.0281
+// under a 3-degree sun, 0.0119 -> 0.0196 under a point light, better only
+// at source 1.5 (0.0390 -> 0.0274). Both patterns come from one
 // per-pixel noise value in [0, 1) (`rotation` is the angle 2 pi noise),
 // so neighbouring pixels sample differently and a 3x3 neighbourhood
 // averages much of the noise away. `cone`: the cone the light's source
@@ -105,6 +77,6 @@ float shadow_pcss(sampler2DArray depth_maps, sampler2DArrayShadow compare_maps, 
   if (width <= 0.0) return shadow_hard(depth_maps, v, s.uv, z, 0.0);
   float kernel = pcss_kernel_width(width);
   vec2 shift = square_sample_shift(noise);
-  return pcss_cone_filter(depth_maps, v, view, cone, s.uv, z, gradient, kernel,
-                          pcss_filter_sample_count(kernel, filter_samples), shift);
+  return shadow_pcf_bilinear(compare_maps, v, s.uv, z, gradient, kernel,
+                             pcss_filter_sample_count(kernel, filter_samples), shift);
 }
