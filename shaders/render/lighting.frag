@@ -43,11 +43,12 @@ layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2DArray shadow_depth;
 // The same depth maps through a comparison sampler: the hardware's 2x2
 // bilinear percentage-closer test.
 layout(binding = UNIT_SHADOW_COMPARE) uniform sampler2DArrayShadow shadow_compare;
-#if SHADOW_FILTER == FILTER_SAT
+#if SHADOW_FILTER == FILTER_SAT && SHADOW_TECHNIQUE != TECHNIQUE_BACKPROJECTION
 layout(binding = UNIT_SHADOW_FILTERED) uniform usampler2DArray shadow_sat;
 #else
 // The technique's representation, filtered or not; sampled bilinearly, or
-// trilinearly and anisotropically with SHADOW_MIPS.
+// trilinearly and anisotropically with SHADOW_MIPS. Backprojection's min/max
+// depth hierarchy (DepthHierarchyPass), read with texelFetch.
 layout(binding = UNIT_SHADOW_FILTERED) uniform sampler2DArray shadow_filtered;
 #endif
 
