@@ -2,7 +2,8 @@
 // The engine's own renderer: one forward pass into its own framebuffer,
 // Lambert-lit, each light's contribution shadowed by penumbra's lookup,
 // penumbra_shadow(), called from the engine's fragment shader.
-#include <epoxy/gl.h>
+// The engine's own GL loader (GLEW); penumbra's headers bring none.
+#include <GL/glew.h>
 
 #include <cstdint>
 #include <glm/glm.hpp>

@@ -2,7 +2,7 @@
 // A headless OpenGL 4.5 core context through EGL: a GPU's EGL device if
 // there is one, else Mesa's surfaceless platform (llvmpipe on a machine
 // without a GPU). The engine owns its context; penumbra only uses it.
-#include <epoxy/egl.h>
+#include <EGL/egl.h>
 
 #include <string>
 

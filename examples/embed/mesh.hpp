@@ -2,7 +2,8 @@
 // The engine's own mesh: positions and normals in world space, a triangle
 // list, on the GPU in one vertex array (position at attribute location 0,
 // as penumbra's caster program reads it; normal at 1).
-#include <epoxy/gl.h>
+// The engine's own GL loader (GLEW); penumbra's headers bring none.
+#include <GL/glew.h>
 
 #include <cstdint>
 #include <glm/glm.hpp>

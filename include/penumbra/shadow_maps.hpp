@@ -13,7 +13,13 @@
 //     own lighting shader (bind, shadow_lookup_glsl(): penumbra_shadow()).
 // The engine owns its context, framebuffers, meshes, camera and lighting;
 // ShadowMaps never draws anything but through the callback.
-#include <epoxy/gl.h>
+//
+// This header and the others penumbra.hpp includes bring no GL loader and
+// no GL header: OpenGL names are std::uint32_t (GLuint) and locations
+// std::int32_t (GLint), so they go with glad, GLEW, epoxy or the engine's
+// own loader. The library resolves its own GL functions (libepoxy, linked
+// inside it). The low-level headers (penumbra/gl/, shadow/, filter/)
+// include <epoxy/gl.h>.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -44,8 +50,8 @@ struct CasterView {
   // penumbra's caster program, bound: its vertex shader reads the position
   // at attribute location 0 and places it in the world with the mat4
   // uniform at location kModelLocation (identity until the callback sets it).
-  GLuint program = 0;
-  static constexpr GLint kModelLocation = 1;
+  std::uint32_t program = 0;                         // a GLuint
+  static constexpr std::int32_t kModelLocation = 1;  // a GLint
 };
 
 // Draws the engine's casters for one view: binds its vertex arrays (and
@@ -63,6 +69,10 @@ class ShadowMaps {
   // (shadow_lookup_glsl(bindings)). Throws UsageError if two texture units
   // coincide or a binding is past the context's limit.
   explicit ShadowMaps(const ShadowBindings& bindings = {});
+  // Frees the GL objects if a context is current (it must be the one they
+  // were made in); without a current context (the engine destroyed it
+  // first) or after release() it calls no GL function and leaves the
+  // objects to the context's destruction.
   ~ShadowMaps();
   ShadowMaps(ShadowMaps&&) noexcept;
   ShadowMaps& operator=(ShadowMaps&&) noexcept;
@@ -80,33 +90,42 @@ class ShadowMaps {
               const CasterGeometry& casters, const ShadowSettings& settings);
 
   // Renders the maps for the last update(): draw(view) for every view,
-  // then the technique's resolve and filter passes (compute).
-  // Changes, and leaves: the current program, the depth state (test on,
-  // LESS, writes on), face culling (off), texture unit 0, image units 0
-  // and 1, storage-buffer binding 1, the uniform-buffer binding
-  // bindings().block. Restores the draw framebuffer and the
-  // viewport.
+  // then the technique's resolve and filter passes (compute). Sets the
+  // state it needs (scissor and rasterizer discard off, fill, depth test
+  // LESS with writes, no culling, no polygon offset or depth clamp, clip
+  // control lower-left / -1..1, depth range 0..1, colour writes on) and
+  // leaves every piece of GL state it touches as it found it: the table in
+  // docs/library.md ("GL state") lists them.
   void render(const DrawCasters& draw);
 
-  // Binds what penumbra_shadow() reads, at bindings(): the block (uniform
-  // buffer .block), the depth maps (units .depth_unit, nearest, and
-  // .compare_unit, with a comparison sampler), the filtered maps (unit
-  // .filtered_unit, bilinear), the summed-area tables (unit .sat_unit;
-  // texture 0 without Filter::Sat) and PCF's sample set (storage buffer
-  // .poisson_buffer). Valid after render().
+  // Binds what penumbra_shadow() reads, at bindings(), and leaves it
+  // bound: the block (uniform buffer .block), the depth maps (units
+  // .depth_unit, nearest, and .compare_unit, with a comparison sampler),
+  // the filtered maps (unit .filtered_unit, bilinear), the summed-area
+  // tables (unit .sat_unit; no texture without Filter::Sat) and PCF's
+  // sample set (storage buffer .poisson_buffer). Everything else, the
+  // generic GL_UNIFORM_BUFFER and GL_SHADER_STORAGE_BUFFER bindings
+  // included, is left as it was (docs/library.md, "GL state"). Valid after
+  // render().
   void bind() const;
 
   // The binding points given to the constructor.
   [[nodiscard]] const ShadowBindings& bindings() const;
 
+  // Frees every GL object ShadowMaps owns; call it while the context is
+  // still current, before the engine destroys it. Afterwards only the
+  // destructor (which then calls no GL) and assignment are valid; the
+  // other calls throw std::logic_error.
+  void release();
+
   // The block as last uploaded, the views' count, and the textures (GL
   // names owned by ShadowMaps), for an engine that binds them itself.
   [[nodiscard]] const ShadowBlock& block() const;
   [[nodiscard]] int view_count() const;
-  [[nodiscard]] GLuint depth_maps() const;
+  [[nodiscard]] std::uint32_t depth_maps() const;
   // The filtered maps, or with --filter sat the summed-area tables (an
   // unsigned-integer array); 0 for the techniques that read depth maps.
-  [[nodiscard]] GLuint filtered_maps() const;
+  [[nodiscard]] std::uint32_t filtered_maps() const;
 
  private:
   struct Impl;

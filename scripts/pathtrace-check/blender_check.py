@@ -103,6 +103,9 @@ def model(shape):
     # of its own triangle's. Normals are computed in the file's frame; the
     # caller rotates them (a uniform scale keeps their directions).
     verts, tris = [], []
+    # The file's own normals (vn), which penumbra keeps when every corner
+    # names one, as bent leaf-card normals must be.
+    file_normals, corner_normals = [], []
     with open(shape["path"]) as f:
         for line in f:
             parts = line.split()
@@ -110,11 +113,32 @@ def model(shape):
                 continue
             if parts[0] == "v":
                 verts.append(tuple(float(x) for x in parts[1:4]))
+            elif parts[0] == "vn":
+                file_normals.append(tuple(float(x) for x in parts[1:4]))
             elif parts[0] == "f":
                 ids = [int(p.split("/")[0]) for p in parts[1:]]
                 ids = [i - 1 if i > 0 else len(verts) + i for i in ids]
+                nids = [int(p.split("/")[2]) if p.count("/") == 2 and p.split("/")[2] else 0
+                        for p in parts[1:]]
+                nids = [i - 1 if i > 0 else (len(file_normals) + i if i < 0 else None)
+                        for i in nids]
                 for k in range(1, len(ids) - 1):
                     tris.append((ids[0], ids[k], ids[k + 1]))
+                    corner_normals.append((nids[0], nids[k], nids[k + 1]))
+    if tris and all(i is not None for c in corner_normals for i in c):
+        out_verts, out_normals, out_tris, index = [], [], [], {}
+        for tri, nids in zip(tris, corner_normals):
+            corner_ids = []
+            for i, j in zip(tri, nids):
+                n = tuple(Vector(file_normals[j]).normalized())
+                key = (verts[i], n)
+                if key not in index:
+                    index[key] = len(out_verts)
+                    out_verts.append(verts[i])
+                    out_normals.append(n)
+                corner_ids.append(index[key])
+            out_tris.append(tuple(corner_ids))
+        return out_verts, out_tris, out_normals
     face_normals = []  # area-weighted (the cross product's length is twice the area)
     for a, b, c in tris:
         e1 = Vector(verts[b]) - Vector(verts[a])
@@ -300,6 +324,22 @@ def main():
     c.samples = min(c.samples, 64)
     normals = render(out + "/cycles-normals.exr", True)
     penumbra_normals = load(job["normals"])
+    # Which object each pixel sees (its index + 1 as an emission, 0 for
+    # none), to split the error between the ground (planes) and the objects.
+    for i, o in enumerate(objects):
+        o.pass_index = i + 1
+    nodes.remove(geometry)
+    nodes.remove(scale)
+    info = nodes.new("ShaderNodeObjectInfo")
+    links.new(info.outputs["Object Index"], emission.inputs["Strength"])
+    emission.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+    c.samples = 1
+    index = render(out + "/cycles-object.exr", True)
+    shapes = [s["shape"] for s in scene_desc["objects"]]
+
+    def on_object(i):
+        k = int(round(index[4 * i])) - 1
+        return 0 <= k < len(shapes) and shapes[k] != "plane"
 
     def blender_normal(i):
         # Blender's z-up normal back in penumbra's y-up frame.
@@ -356,6 +396,14 @@ def main():
         return math.sqrt(sum((ref[4 * i] - factor[i]) ** 2 for i in pixels) / len(pixels))
 
     errors = [ref[4 * i] - factor[i] for i in lit]
+    objects_lit = [i for i in lit if on_object(i)]
+    objects_judged = [i for i in aligned if on_object(i)]
+    ground_lit = [i for i in lit if not on_object(i)]
+    # Pixels penumbra leaves unjudged as reached by no light (0, alpha 0)
+    # where Cycles lights the same surface, against every pixel Cycles lights.
+    cycles_lit = [i for i in range(width * height) if shadowed[4 * i] > 0.0]
+    unjudged_lit = [i for i in cycles_lit
+                    if ref[4 * i + 3] < 0.5 and ref[4 * i] == 0.0 and same_surface(i)]
     result = {
         "light_size": job["light_size"],
         "pixels": len(judged),
@@ -365,6 +413,17 @@ def main():
         "rmse": rmse(lit),
         "mean_error": sum(errors) / len(errors),
         "max_error": max(abs(e) for e in errors),
+        "pixels_objects": len(objects_lit),
+        "rmse_objects": rmse(objects_lit) if objects_lit else 0.0,
+        "rmse_objects_all": rmse(objects_judged) if objects_judged else 0.0,
+        "pixels_ground": len(ground_lit),
+        "rmse_ground": rmse(ground_lit) if ground_lit else 0.0,
+        "pixels_cycles_lit": len(cycles_lit),
+        "unjudged_but_lit": len(unjudged_lit),
+        # Each as (x, y from the bottom, Cycles' factor, its unshadowed light
+        # over the median).
+        "unjudged_but_lit_pixels": [(i % width, i // width, factor[i], unshadowed[4 * i] / median)
+                                    for i in unjudged_lit[:50]],
     }
     print("PATHTRACE-CHECK " + json.dumps(result))
 

@@ -25,6 +25,7 @@
 #include "../shadow/soft_moments.glsl"
 #include "../shadow/accumulate.glsl"
 #include "../shadow/backprojection.glsl"
+#include "terminator_offset.glsl"
 
 layout(std140, binding = BINDING_SHADOW_UBO) uniform ShadowBlock { GpuShadow shadow_params; };
 
@@ -33,7 +34,8 @@ layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gbuffer_normal;
 layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gbuffer_albedo;
 layout(binding = UNIT_GBUFFER_SPECULAR) uniform sampler2D gbuffer_specular;
 // xyz: the triangle's normal, w: the rise to the smooth surface along the
-// normal (shaders/scene/smooth_surface.glsl).
+// normal (shaders/scene/smooth_surface.glsl), of which each light's
+// lookups take the part its direction calls for (lifted_point).
 layout(binding = UNIT_GBUFFER_FACET) uniform sampler2D gbuffer_facet;
 // Read only when frame.options.w is 1 (SSAO on).
 layout(binding = UNIT_AMBIENT_OCCLUSION) uniform sampler2D ambient_occlusion;
@@ -389,18 +391,29 @@ bool source_above_horizon(GpuLight light, vec3 world, vec3 n) {
   return dot(n, light.position_type.xyz - world) > -radius;
 }
 
+// Where the shadow lookups of `light` start for the point `world` with
+// shading normal n: raised along n by the part of its rise to the smooth
+// surface (facet.w) that the direction to the source's centre calls for,
+// against its triangle's plane, as the traced reference starts its rays
+// (src/reference/terminator_offset.hpp).
+vec3 lifted_point(GpuLight light, vec3 world, vec3 n, vec4 facet) {
+  vec3 l = int(light.position_type.w) == LIGHT_DIRECTIONAL
+               ? -light.direction_cos_outer.xyz
+               : normalize(light.position_type.xyz - world);
+  return world + terminator_offset_amount(n, normalize(facet.xyz), l) * facet.w * n;
+}
+
 // What this sub-frame's point of light i's source sends a receiver at
 // `world` with normal n, up to a constant (--accumulate, shadow view): the
 // weight of its shadow in the ratio of irradiances the traced reference
 // computes (src/reference/traced_reference.hpp). cos theta_source
 // cos theta_receiver / d^2 for a spot light's square or a point light's
 // sphere, cos theta_receiver for a direction of the sun's disc; 0 behind
-// the source, or below the tangent plane of the shading normal n or of the
-// triangle (facet_normal), as the reference excludes such points.
-float accumulate_source_weight(GpuLight light, vec3 world, vec3 n, vec3 facet_normal) {
+// the source, or below the tangent plane of the shading normal n, as the
+// reference excludes such points.
+float accumulate_source_weight(GpuLight light, vec3 world, vec3 n) {
   if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
-    vec3 w = -light.direction_cos_outer.xyz;
-    return dot(facet_normal, w) > 0.0 ? max(dot(n, w), 0.0) : 0.0;
+    return max(dot(n, -light.direction_cos_outer.xyz), 0.0);
   }
   vec3 d = light.position_type.xyz - world;
   float distance2 = dot(d, d);
@@ -410,7 +423,7 @@ float accumulate_source_weight(GpuLight light, vec3 world, vec3 n, vec3 facet_no
                             shadow_params.accumulate_normal_z);
   float cos_receiver = dot(n, w);
   float cos_source = -dot(source_normal, w);
-  if (cos_receiver <= 0.0 || cos_source <= 0.0 || dot(facet_normal, w) <= 0.0) return 0.0;
+  if (cos_receiver <= 0.0 || cos_source <= 0.0) return 0.0;
   return cos_source * cos_receiver / distance2;
 }
 
@@ -426,11 +439,8 @@ void main() {
   }
   vec3 n = normalize(normal_shininess.xyz);
   vec3 world = world_position(pixel, texelFetch(gbuffer_depth, pixel, 0).r);
-  // The shadow lookups test the point moved to the smooth surface, against
-  // its triangle's plane, as the traced reference starts its rays there.
   vec4 facet = texelFetch(gbuffer_facet, pixel, 0);
   vec3 facet_normal = normalize(facet.xyz);
-  vec3 lookup = world + facet.w * n;
   vec3 albedo = texelFetch(gbuffer_albedo, pixel, 0).rgb;
   float angle = 6.28318530718 * interleaved_gradient_noise(vec2(pixel));
 #if SHADOW_MIPS
@@ -472,21 +482,20 @@ void main() {
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {
-    // Where no point of the source is above the surface's horizon (the
-    // shading normal's or the triangle's) no light arrives, occluders or
-    // not: 0, and alpha 0 (not judged, as the traced reference marks it).
-    // Elsewhere the technique decides, also on surfaces turned away from
-    // the light's centre, which an area light's source still reaches over
-    // their horizon.
+    // Where no point of the source is above the horizon of the shading
+    // normal no light arrives, occluders or not: 0, and alpha 0 (not
+    // judged, as the traced reference marks it). Elsewhere the technique
+    // decides, also on surfaces turned away from the light's centre, which
+    // an area light's source still reaches over their horizon, and below
+    // their triangle's plane (from the point the terminator model lifts).
     int i = frame.options.z;
-    if (!source_above_horizon(lights[i], world, n) ||
-        !source_above_horizon(lights[i], world, facet_normal)) {
+    if (!source_above_horizon(lights[i], world, n)) {
       out_color = vec4(0.0);
       return;
     }
-    float lit = shadow_factor(i, lookup, facet_normal, view == VIEW_SHADOW_REFERENCE, rotation,
-                              footprint);
-    float weight = accumulate_source_weight(lights[i], world, n, facet_normal);
+    float lit = shadow_factor(i, lifted_point(lights[i], world, n, facet), facet_normal,
+                              view == VIEW_SHADOW_REFERENCE, rotation, footprint);
+    float weight = accumulate_source_weight(lights[i], world, n);
     out_color = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)
                                                        : vec4(vec3(lit), 1.0);
     return;
@@ -506,8 +515,9 @@ void main() {
     // constant as the exponent changes (Akenine-Moller et al., RTR 4th ed.).
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
     color +=
-        shadow_factor(i, lookup, facet_normal, false, rotation, footprint) * irradiance * n_dot_l *
-        brdf;
+        shadow_factor(i, lifted_point(lights[i], world, n, facet), facet_normal, false, rotation,
+                      footprint) *
+        irradiance * n_dot_l * brdf;
   }
   out_color = vec4(color, 1.0);
 }

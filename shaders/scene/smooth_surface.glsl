@@ -3,13 +3,14 @@
 //
 // Near a terminator a smooth-shaded mesh's flat triangles shadow one
 // another where the smooth surface the shading shows would not (the
-// "shadow terminator" artefact). Hanika ("Hacking the Shadow Terminator",
-// Ray Tracing Gems II, 2021, ch. 4) moves the point to the smooth surface:
-// below corner i's tangent plane by h_i, it rises by the barycentric mean
-// of h_i n_i. The traced reference starts its shadow rays there
-// (src/reference/shadow_ray_tracer.cpp: terminator_lift), so the lookups
-// test the same point, against the triangle's own plane (which the shadow
-// map holds, unlike the interpolated normal's).
+// "shadow terminator" artefact; Hanika, "Hacking the Shadow Terminator",
+// Ray Tracing Gems II, 2021, ch. 4). The rise to the smooth surface is the
+// terminator model's (src/reference/terminator_offset.hpp, whose
+// smooth_surface_rise this mirrors): Cycles' quadratic patch bounded by
+// the corners' tangent planes, along the shading normal. The lighting pass
+// applies the part of it each light's direction calls for
+// (shaders/render/terminator_offset.glsl), as the traced reference does
+// for its rays, so both start from the same point.
 //
 // The triangle's corners are read from the scene's buffers by
 // gl_PrimitiveID (GpuScene::draw binds them and sets first_index). Where
@@ -35,11 +36,8 @@ struct SmoothSurface {
   float height;       // how far the point rises along n to the smooth surface
 };
 
-// For point p of the fragment's triangle, shaded with normal n (turned to
-// the viewer's side for a surface seen from behind; corner normals facing
-// away from n are turned likewise). The rise is taken along n: measured on
-// the bunny (spot light, --accumulate 64) the full vector and its part
-// along n gave the same error.
+// For point p of the fragment's triangle, shaded with unit normal n
+// (turned to the viewer's side for a surface seen from behind).
 SmoothSurface smooth_surface(vec3 p, vec3 n) {
   if (first_index == SCENE_CORNERS_UNREADABLE) {
     vec3 d = cross(dFdx(p), dFdy(p));
@@ -50,28 +48,43 @@ SmoothSurface smooth_surface(vec3 p, vec3 n) {
   uint first = first_index + 3u * uint(gl_PrimitiveID);
   uint corner_index[3] =
       uint[3](scene_indices[first], scene_indices[first + 1u], scene_indices[first + 2u]);
-  vec3 corners[3];
-  for (int k = 0; k < 3; ++k) {
-    corners[k] = scene_vertex_vec3(corner_index[k], uint(SCENE_VERTEX_POSITION));
-  }
-  vec3 g = cross(corners[1] - corners[0], corners[2] - corners[0]);
+  vec3 v0 = scene_vertex_vec3(corner_index[0], uint(SCENE_VERTEX_POSITION));
+  vec3 v1 = scene_vertex_vec3(corner_index[1], uint(SCENE_VERTEX_POSITION));
+  vec3 v2 = scene_vertex_vec3(corner_index[2], uint(SCENE_VERTEX_POSITION));
+  vec3 g = cross(v1 - v0, v2 - v0);
   float area2 = dot(g, g);
   SmoothSurface s = SmoothSurface(n, 0.0);
   if (!(area2 > 0.0)) return s;  // degenerate: no plane of its own
   s.facet_normal = g * inversesqrt(area2);
   if (dot(s.facet_normal, n) < 0.0) s.facet_normal = -s.facet_normal;
   // Barycentric coordinates: the sub-triangles' signed areas over the whole.
-  vec3 w = vec3(dot(cross(corners[2] - corners[1], p - corners[1]), g),
-                dot(cross(corners[0] - corners[2], p - corners[2]), g),
-                dot(cross(corners[1] - corners[0], p - corners[0]), g)) /
+  vec3 w = vec3(dot(cross(v2 - v1, p - v1), g), dot(cross(v0 - v2, p - v2), g),
+                dot(cross(v1 - v0, p - v0), g)) /
            area2;
-  vec3 lift = vec3(0.0);
-  for (int k = 0; k < 3; ++k) {
-    vec3 corner_normal = normalize(scene_vertex_vec3(corner_index[k], uint(SCENE_VERTEX_NORMAL)));
-    if (dot(corner_normal, n) < 0.0) corner_normal = -corner_normal;
-    float below = dot(corners[k] - p, corner_normal);
-    if (below > 0.0) lift += w[k] * below * corner_normal;
+  vec3 n0 = normalize(scene_vertex_vec3(corner_index[0], uint(SCENE_VERTEX_NORMAL)));
+  vec3 n1 = normalize(scene_vertex_vec3(corner_index[1], uint(SCENE_VERTEX_NORMAL)));
+  vec3 n2 = normalize(scene_vertex_vec3(corner_index[2], uint(SCENE_VERTEX_NORMAL)));
+  vec3 raw = w.x * n0 + w.y * n1 + w.z * n2;
+  // The corners' normals on n's side, all turned at once.
+  if (dot(raw, n) < 0.0) {
+    n0 = -n0;
+    n1 = -n1;
+    n2 = -n2;
   }
-  s.height = max(dot(lift, n), 0.0);
+  // The quadratic patch: zero at the corners, its slopes along the edges
+  // those of the corners' normals.
+  float a = dot(n2 - n0, v0 - v2);
+  float b = dot(n2 - n1, v1 - v2);
+  float c = dot(n1 - n0, v1 - v0);
+  float quadratic = a * w.x * (w.x - 1.0) + (a + b + c) * w.x * w.y + b * w.y * (w.y - 1.0);
+  // Each corner's tangent plane, raised to pass above the other corners.
+  float e0 = max(max(dot(v1 - v0, n0), dot(v2 - v0, n0)), 0.0);
+  float e1 = max(max(dot(v0 - v1, n1), dot(v2 - v1, n1)), 0.0);
+  float e2 = max(max(dot(v0 - v2, n2), dot(v1 - v2, n2)), 0.0);
+  float h0 = max(dot(v0 - p, n0) + e0, 0.0);
+  float h1 = max(dot(v1 - p, n1) + e1, 0.0);
+  float h2 = max(dot(v2 - p, n2) + e2, 0.0);
+  float h = max(min(min(h0, h1), h2), 0.5 * quadratic);
+  s.height = max(h, 0.0) * length(raw);
   return s;
 }

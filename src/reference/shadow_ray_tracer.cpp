@@ -18,6 +18,7 @@
 #include "core/light_sampling.hpp"
 #include "penumbra/error.hpp"
 #include "reference/source_point_sets.hpp"
+#include "reference/terminator_offset.hpp"
 
 namespace penumbra {
 
@@ -200,7 +201,6 @@ class FacetPackets {
     const int lane = size_;
     set_ray(hits_.ray, lane, p + reach * n, -n, 2.0f * reach);
     hits_.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-    point_[lane] = p;
     normal_[lane] = n;
     index_[lane] = index;
     if (++size_ == kWidth) flush();
@@ -217,8 +217,7 @@ class FacetPackets {
         const glm::vec3 g(hits_.hit.Ng_x[lane], hits_.hit.Ng_y[lane], hits_.hit.Ng_z[lane]);
         const float length = glm::length(g);
         if (length > 0.0f) ng = glm::dot(g, n) < 0.0f ? -g / length : g / length;
-        lift = terminator_lift(hits_.hit.primID[lane], hits_.hit.u[lane], hits_.hit.v[lane],
-                               point_[lane], n);
+        lift = terminator_lift(hits_.hit.primID[lane], hits_.hit.u[lane], hits_.hit.v[lane], n);
       }
       normals_[index_[lane]] = ng;
       lifts_[index_[lane]] = lift;
@@ -227,31 +226,21 @@ class FacetPackets {
   }
 
  private:
-  // How far the point p of triangle `triangle` (barycentrics 1 - u - v, u,
-  // v) moves to lie on the smooth surface its vertex normals describe:
-  // below each corner's tangent plane by h_i, it rises by the barycentric
-  // mean of h_i n_i (Hanika, "Hacking the Shadow Terminator", Ray Tracing
-  // Gems II, 2021, ch. 4). A shadow ray from there clears the flat
-  // triangles' own facets at a terminator, as a path tracer's does (Cycles
-  // applies this near terminators by default, its "shadow terminator
-  // geometry offset"); on a flat mesh, whose vertex normals are the
-  // triangles', it is 0. Corner normals facing away from n (a two-sided
-  // surface seen from its back) are turned to n's side.
-  glm::vec3 terminator_lift(unsigned triangle, float u, float v, const glm::vec3& p,
-                            const glm::vec3& n) const {
+  // The rise of triangle `triangle`'s point at barycentrics (1 - u - v, u,
+  // v) to the smooth surface its vertex normals describe, as a vector
+  // along its shading normal n (reference/terminator_offset.hpp);
+  // trace() applies the part of it the light's direction calls for. 0 on a
+  // flat mesh, whose vertex normals are the triangles'.
+  glm::vec3 terminator_lift(unsigned triangle, float u, float v, const glm::vec3& n) const {
     if (mesh_.positions == nullptr || mesh_.indices == nullptr) return glm::vec3(0.0f);
-    const float weights[3] = {1.0f - u - v, u, v};
-    glm::vec3 lift(0.0f);
+    glm::vec3 corners[3], normals[3];
     for (std::size_t c = 0; c < 3; ++c) {
       const std::uint32_t vertex = mesh_.indices[3 * static_cast<std::size_t>(triangle) + c];
       const float* position = mesh_.positions + 3 * static_cast<std::size_t>(vertex);
-      glm::vec3 corner_normal = mesh_.normals[vertex];
-      if (glm::dot(corner_normal, n) < 0.0f) corner_normal = -corner_normal;
-      const float below =
-          glm::dot(glm::vec3(position[0], position[1], position[2]) - p, corner_normal);
-      if (below > 0.0f) lift += weights[c] * below * corner_normal;
+      corners[c] = glm::vec3(position[0], position[1], position[2]);
+      normals[c] = mesh_.normals[vertex];
     }
-    return lift;
+    return smooth_surface_rise(corners, normals, glm::vec3(1.0f - u - v, u, v), n) * n;
   }
 
   RTCScene scene_;
@@ -260,7 +249,6 @@ class FacetPackets {
   glm::vec3* lifts_;
   RTCRayHit16 hits_{};
   alignas(64) int valid_[kWidth] = {};
-  glm::vec3 point_[kWidth];
   glm::vec3 normal_[kWidth];
   int index_[kWidth] = {};
   int size_ = 0;
@@ -473,11 +461,11 @@ float keep_if(bool keep, float value) {
 // origin towards the point (the direction is not normalized: t = tfar
 // reaches the point; the sun's rays are unit and unbounded) and the
 // point's weight in the irradiance, 0 where it sends the receiver no
-// light with or without occluders: the part of the source below either
-// tangent plane (the shading normal's, or the triangle's), or the source's
-// back. Struct of arrays, written by branch-free loops the compiler
-// vectorizes (the arrays are passed as restrict parameters so that it
-// knows they do not overlap).
+// light with or without occluders: the part of the source below the
+// shading normal's tangent plane (Cycles' test for reflection, whatever
+// the triangle's plane), or the source's back. Struct of arrays, written
+// by branch-free loops the compiler vectorizes (the arrays are passed as
+// restrict parameters so that it knows they do not overlap).
 struct PixelRays {
   std::vector<float> x, y, z, tfar, weight;
   explicit PixelRays(std::size_t n) : x(n), y(n), z(n), tfar(n), weight(n) {}
@@ -493,16 +481,15 @@ void square_rays(const float* __restrict sx, const float* __restrict sy, const f
                  std::uint32_t count, const Receiver& r, glm::vec3 facing, float* __restrict x,
                  float* __restrict y, float* __restrict z, float* __restrict tfar,
                  float* __restrict weight) {
-  const glm::vec3 n = r.n, ng = r.ng, p = r.p, o = r.origin, l = facing;
+  const glm::vec3 n = r.n, p = r.p, o = r.origin, l = facing;
   for (std::uint32_t s = 0; s < count; ++s) {
     const float tx = sx[s] - p.x, ty = sy[s] - p.y, tz = sz[s] - p.z;
     const float d2 = tx * tx + ty * ty + tz * tz;
     const float receiver = n.x * tx + n.y * ty + n.z * tz;  // d cos(theta_receiver)
-    const float facet = ng.x * tx + ng.y * ty + ng.z * tz;
     const float source = kOneSided ? -(l.x * tx + l.y * ty + l.z * tz) : std::sqrt(d2);
     const float inv_d2 = 1.0f / d2;
     // Bitwise, not short-circuit: no branch in the loop.
-    const bool lit = (receiver > 0.0f) & (facet > 0.0f) & (source > 0.0f);
+    const bool lit = (receiver > 0.0f) & (source > 0.0f);
     weight[s] = keep_if(lit, (source * inv_d2) * (receiver * inv_d2));
     // Aim from the raised origin at the same point of the source.
     x[s] = sx[s] - o.x;
@@ -517,13 +504,12 @@ void square_rays(const float* __restrict sx, const float* __restrict sy, const f
 void sun_rays(const float* __restrict sx, const float* __restrict sy, const float* __restrict sz,
               std::uint32_t count, const Receiver& r, float* __restrict x, float* __restrict y,
               float* __restrict z, float* __restrict tfar, float* __restrict weight) {
-  const glm::vec3 n = r.n, ng = r.ng;
+  const glm::vec3 n = r.n;
   const float infinity = std::numeric_limits<float>::infinity();
   for (std::uint32_t s = 0; s < count; ++s) {
     const float wx = sx[s], wy = sy[s], wz = sz[s];
     const float receiver = n.x * wx + n.y * wy + n.z * wz;
-    const float facet = ng.x * wx + ng.y * wy + ng.z * wz;
-    weight[s] = keep_if((receiver > 0.0f) & (facet > 0.0f), receiver);
+    weight[s] = keep_if(receiver > 0.0f, receiver);
     x[s] = wx;
     y[s] = wy;
     z[s] = wz;
@@ -554,7 +540,7 @@ bool sphere_rays(const ReferenceLight& light, const SourcePointSets::Set& set, s
     const float distance =
         along - std::sqrt(std::max(0.0f, radius * radius - (d * d - along * along)));
     const float receiver = glm::dot(r.n, direction);
-    out.weight[s] = receiver > 0.0f && glm::dot(r.ng, direction) > 0.0f ? receiver : 0.0f;
+    out.weight[s] = receiver > 0.0f ? receiver : 0.0f;
     // Aim from the raised origin at the same point of the sphere.
     const glm::vec3 to_target = r.p + distance * direction - r.origin;
     out.x[s] = to_target.x;
@@ -578,6 +564,13 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
                                 std::max(covered, 1u));
   const std::uint32_t count = sources.count();
   std::atomic<std::int64_t> rows_done{0}, rays_traced{0}, untraceable{0};
+
+  // The direction from p to the source's centre, which decides how much
+  // of the terminator lift a receiver's rays get.
+  auto light_centre_direction = [&](const glm::vec3& p) {
+    return light.type == LightType::Directional ? -light.direction
+                                                : glm::normalize(light.position - p);
+  };
 
   // Receiver i as far as it needs no ray: its facet normal comes later.
   auto receiver = [&](std::size_t i) {
@@ -654,19 +647,18 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
         // The G-buffer's normal is interpolated from the vertices' (a
         // smooth sphere's), while the rays meet the flat triangles: near a
         // terminator a direction above the shading normal's tangent plane
-        // can be below the triangle's own, and would be shadowed by the
-        // object's far side (the "shadow terminator" artefact; Hanika,
-        // "Hacking the Shadow Terminator", Ray Tracing Gems II, 2021).
-        // Such directions send no light with or without occluders, as a
-        // path tracer's reflection treats them (Cycles: no reflection
-        // below the geometric normal).
+        // can be below the triangle's own (the "shadow terminator"
+        // artefact). The triangle's normal decides how far the rays start
+        // above it (the terminator model, reference/terminator_offset.hpp).
         facet_packets.add(r.p, r.n, 2.0f * r.offset + 1e-6f, x);
       }
       facet_packets.flush();
       for (int x = 0; x < width; ++x) {
         if (!traced[x]) continue;
         receivers[x].ng = facets[x];
-        receivers[x].origin += lifts[x];
+        receivers[x].origin += terminator_offset_amount(receivers[x].n, facets[x],
+                                                        light_centre_direction(receivers[x].p)) *
+                               lifts[x];
         sample_pixel(row + x, x, receivers[x], rays, total[x], lit[x], packets);
       }
       packets.flush();
@@ -678,11 +670,10 @@ Image ShadowRayTracer::trace(const SurfacePoints& surfaces, const ReferenceLight
           out[3] = 0.0f;
           continue;
         }
-        // No light reaches the point, occluders or not: the ratio is
-        // undefined (not judged). On a smooth mesh's terminator the
-        // triangle can face away from all of the source while the
-        // interpolated normal a rasterizer shades with sees some of it.
-        // An untraceable point has no rays, so it is not judged either.
+        // No light reaches the point, occluders or not (all of the source
+        // is below the shading normal's horizon): the ratio is undefined
+        // (not judged). An untraceable point has no rays, so it is not
+        // judged either.
         const bool reached = traced[x] && total[x] > 0.0;
         out[0] = out[1] = out[2] = reached ? static_cast<float>(lit[x] / total[x]) : 0.0f;
         const bool inside_cone = !spot || !reached ||

@@ -111,14 +111,16 @@ class ShadowRayTracer {
   // The shadow factor of each pixel's surface point (1 = lit) in r, g and
   // b: irradiance from the light's source with occluders over without.
   // Alpha: 1 where the pixel sees geometry the light reaches (inside a
-  // spot's cone, and some of the source above the surface's tangent
-  // plane and its triangle's), 0 elsewhere; where no light arrives the
+  // spot's cone, and some of the source above the tangent plane of the
+  // surface's shading normal), 0 elsewhere; where no light arrives the
   // factor is undefined and reads 0 (as the `shadow` view has surfaces
   // facing away), and so it does where the surface point is not
   // traceable (traceable_point: not finite, or absurd); background pixels
   // read (1, 1, 1, 0), as in the `shadow` view. `samples` rays per pixel
   // for an area light, 1 for a point. Shadow rays start above the surface
-  // by the surface point's position_error plus the rounding bound below.
+  // by the surface point's position_error plus the rounding bound below,
+  // and near a smooth-shaded terminator from the smooth surface
+  // (reference/terminator_offset.hpp).
   // Uses every core; fills `stats` if given.
   [[nodiscard]] Image trace(const SurfacePoints& surfaces, const ReferenceLight& light, int samples,
                             const TraceProgress& progress = {}, TraceStats* stats = nullptr) const;

@@ -4,6 +4,7 @@
 #include "penumbra/shadow_maps.hpp"
 
 #include <algorithm>
+#include <array>
 #include <glm/gtc/matrix_transform.hpp>
 #include <optional>
 #include <stdexcept>
@@ -24,6 +25,7 @@
 #include "penumbra/shadow/shadow_block_data.hpp"
 #include "penumbra/shadow/shadow_map_pass.hpp"
 #include "penumbra/shadow/shadow_views.hpp"
+#include "shadow/gl_state_guard.hpp"
 #include "shadow/shadow_lookup.hpp"
 
 namespace penumbra {
@@ -60,8 +62,26 @@ struct ShadowMaps::Impl {
   bool rendered = false;
 };
 
+namespace {
+
+// The public header's GL-free types stand for these (OpenGL 4.5, table 2.2).
+static_assert(sizeof(GLuint) == sizeof(std::uint32_t) && sizeof(GLint) == sizeof(std::int32_t));
+
+// The implementation, or std::logic_error after release() (or a move).
+template <typename ImplPtr>
+auto& live(ImplPtr& impl, const char* call) {
+  if (!impl) {
+    throw std::logic_error(std::string("ShadowMaps::") + call + "() after release()");
+  }
+  return *impl;
+}
+
+}  // namespace
+
 ShadowMaps::ShadowMaps(const ShadowBindings& bindings)
     : impl_(std::make_unique<Impl>(checked_bindings(bindings))) {}
+// The GL objects' handles delete them only while a context is current
+// (gl::Handle::reset): destroyed without one, they are forgotten.
 ShadowMaps::~ShadowMaps() = default;
 ShadowMaps::ShadowMaps(ShadowMaps&&) noexcept = default;
 ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
@@ -74,7 +94,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
     throw UsageError("ShadowMaps: " + std::to_string(lights.size()) + " lights; at most " +
                      std::to_string(kMaxLights) + " are supported");
   }
-  Impl& m = *impl_;
+  Impl& m = live(impl_, "update");
   m.settings = settings;
   m.fitted.resize(lights.size());
   m.fit_inputs.resize(lights.size());
@@ -109,12 +129,16 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
 }
 
 void ShadowMaps::render(const DrawCasters& draw) {
-  Impl& m = *impl_;
+  Impl& m = live(impl_, "render");
   if (!m.updated) throw std::logic_error("ShadowMaps::render() before update()");
-  GLint framebuffer = 0;
-  GLint viewport[4] = {};
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-  glGetIntegerv(GL_VIEWPORT, viewport);
+  // Saved besides the fixed state GlStateGuard always saves: the compute
+  // passes' input unit and output images, the block, the Gaussian's weights.
+  const std::array<GLuint, 1> texture_units{UNIT_COMPUTE_INPUT};
+  const std::array<GLuint, 2> image_units{IMAGE_OUTPUT, IMAGE_OUTPUT_2};
+  const std::array<GLuint, 1> uniform_buffers{m.bindings.block};
+  const std::array<GLuint, 1> storage_buffers{BINDING_FILTER_WEIGHTS_SSBO};
+  const GlStateGuard saved({texture_units, image_units, uniform_buffers, storage_buffers});
+  set_caster_pass_state();
   glBindBufferBase(GL_UNIFORM_BUFFER, m.bindings.block, m.block_buffer.id());
 
   const ShadowSettings& s = m.settings;
@@ -158,14 +182,15 @@ void ShadowMaps::render(const DrawCasters& draw) {
     m.hierarchy_pass.execute(m.map_pass.depth_maps());
     m.filtered = m.hierarchy_pass.hierarchy().id();
   }
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   m.rendered = true;
 }
 
 void ShadowMaps::bind() const {
-  const Impl& m = *impl_;
+  const Impl& m = live(impl_, "bind");
   if (!m.rendered) throw std::logic_error("ShadowMaps::bind() before render()");
+  // The indexed bindings and units below stay bound; glBindBufferBase
+  // also moves the generic bindings, which the guard puts back.
+  const GenericBufferBindingsGuard saved;
   const ShadowBindings& b = m.bindings;
   glBindBufferBase(GL_UNIFORM_BUFFER, b.block, m.block_buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b.poisson_buffer, m.poisson.id());
@@ -189,20 +214,24 @@ void ShadowMaps::bind() const {
 }
 
 const ShadowBindings& ShadowMaps::bindings() const {
-  return impl_->bindings;
+  return live(impl_, "bindings").bindings;
+}
+
+void ShadowMaps::release() {
+  impl_.reset();
 }
 
 const ShadowBlock& ShadowMaps::block() const {
-  return impl_->block;
+  return live(impl_, "block").block;
 }
 int ShadowMaps::view_count() const {
-  return impl_->block.counts.y;
+  return live(impl_, "view_count").block.counts.y;
 }
-GLuint ShadowMaps::depth_maps() const {
-  return impl_->map_pass.depth_maps().id();
+std::uint32_t ShadowMaps::depth_maps() const {
+  return live(impl_, "depth_maps").map_pass.depth_maps().id();
 }
-GLuint ShadowMaps::filtered_maps() const {
-  return impl_->filtered;
+std::uint32_t ShadowMaps::filtered_maps() const {
+  return live(impl_, "filtered_maps").filtered;
 }
 
 }  // namespace penumbra

@@ -45,5 +45,13 @@ endforeach()
 if(violations)
   message(FATAL_ERROR "public headers include what is not installed:${violations}")
 endif()
+
+# The high-level API (include/penumbra/*.hpp, and the shared structs they
+# include) brings no GL loader or GL header into the engine's code, nor the
+# low-level headers that do (penumbra/gl/, shadow/, filter/ include epoxy).
+file(GLOB high_level "${SOURCE_DIR}/include/penumbra/*.hpp" "${SOURCE_DIR}/shaders/shared/*.h")
+forbid_includes("${high_level}" "[\"<](epoxy/|GL/|GLES|glad/|KHR/|EGL/|penumbra/(gl|shadow|filter)/)"
+                "the high-level headers include a GL header or a low-level header")
+
 message(STATUS "${count} files of the shadow core include none of its clients; "
-               "its public headers include public headers alone")
+               "its public headers include public headers alone, the high-level ones no GL")

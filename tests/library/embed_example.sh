@@ -39,9 +39,17 @@ for header in $headers; do
     { echo "installed $header does not compile on its own"; exit 1; }
 done
 
+# The example again, built through pkg-config alone (penumbra-shadows and
+# the engine's own GLEW and EGL): its loader is not penumbra's.
+${launcher} c++ -std=c++20 -O2 "$source"/examples/embed/*.cpp -o "$work/embed-pkg-config" \
+  $(pkg-config --cflags --libs penumbra-shadows glew egl)
+
 embed=$work/build/embed
 common=(--headless --width 320 --height 180 --map-size 512 --view shadow)
-"$embed" "${common[@]}" --lights spot --technique hard,pcf,pcss,backprojection,msm -o "$work/images/spot.png"
+"$embed" "${common[@]}" --lights spot \
+  --technique hard,pcf,pcss,backprojection,vsm,esm,evsm2,evsm4,msm,msm16 -o "$work/images/spot.png"
+"$work/embed-pkg-config" "${common[@]}" --lights spot --technique pcf -o "$work/pkg-config-pcf.png"
+cmp "$work/pkg-config-pcf.png" "$work/images/spot-pcf.png"
 "$embed" "${common[@]}" --lights sun --technique pcf,pcss,vsm -o "$work/images/sun.png"
 "$embed" "${common[@]}" --lights spot --filter sat --technique vsm,msm,msm16 \
   -o "$work/images/spot-sat.png"

@@ -133,7 +133,8 @@ void expect_shadow_where_computed(const std::string& image, const TestLight& lig
 }
 
 TEST(EmbedExample, SpotShadowWhereComputedForEveryTechnique) {
-  for (const char* technique : {"hard", "pcf", "pcss", "backprojection", "msm"}) {
+  for (const char* technique :
+       {"hard", "pcf", "pcss", "backprojection", "vsm", "esm", "evsm2", "evsm4", "msm", "msm16"}) {
     expect_shadow_where_computed(std::string("spot-") + technique, spot_light());
   }
 }

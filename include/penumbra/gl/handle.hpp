@@ -4,6 +4,8 @@
 
 #include <utility>
 
+#include "penumbra/gl/current_context.hpp"
+
 namespace penumbra::gl {
 
 template <void (*Delete)(GLuint)>
@@ -25,8 +27,10 @@ class Handle {
 
   [[nodiscard]] GLuint id() const { return id_; }
   [[nodiscard]] explicit operator bool() const { return id_ != 0; }
+  // Deletes the object while a context is current; with none (the engine
+  // destroyed it first, and the object with it) it only forgets the name.
   void reset() {
-    if (id_ != 0) Delete(id_);
+    if (id_ != 0 && has_current_context()) Delete(id_);
     id_ = 0;
   }
 
