@@ -45,15 +45,20 @@ layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2DArray shadow_depth;
 // The same depth maps through a comparison sampler: the hardware's 2x2
 // bilinear percentage-closer test.
 layout(binding = UNIT_SHADOW_COMPARE) uniform sampler2DArrayShadow shadow_compare;
-#if SHADOW_FILTER == FILTER_SAT
+#if SHADOW_FILTER == FILTER_SAT && SHADOW_TECHNIQUE != TECHNIQUE_BACKPROJECTION
 layout(binding = UNIT_SHADOW_FILTERED) uniform usampler2DArray shadow_sat;
 #else
 // The technique's representation, filtered or not; sampled bilinearly, or
-// trilinearly and anisotropically with SHADOW_MIPS.
+// trilinearly and anisotropically with SHADOW_MIPS. Backprojection's min/max
+// depth hierarchy (DepthHierarchyPass), read with texelFetch.
 layout(binding = UNIT_SHADOW_FILTERED) uniform sampler2DArray shadow_filtered;
 #endif
 
 in vec2 v_uv;
+#if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
+// Texel reads per pixel (LightingPass::count_fetches).
+layout(r32ui, binding = IMAGE_OUTPUT) uniform uimage2D backprojection_fetch_counts;
+#endif
 layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
 
 vec3 world_position(ivec2 pixel, float depth) {
@@ -209,8 +214,7 @@ float filtered_hard_reference(int v, vec2 uv, ReceiverPlane z) {
 #endif
 }
 
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS || \
-    SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
 // PCF, or for one sample the hardware's 2x2 bilinear compare; width 0 is
 // the plain test.
 float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
@@ -222,7 +226,7 @@ float pcf_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCo
 }
 #endif
 
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS || SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
+#if SHADOW_TECHNIQUE == TECHNIQUE_PCSS
 // PCSS (shaders/shadow/pcss.glsl) with the settings' sample counts; its
 // noise is the value `rotation` was made from (main()).
 float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderCone cone,
@@ -295,13 +299,14 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #endif
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
-  if (view.perspective != 0 && view.radial_depth == 0) {
-    return shadow_backprojection(shadow_depth, v, view, s, z, gradient, normal,
-                                 ivec2(gl_FragCoord.xy));
-  }
-  // A point light's cube faces and the sun's cascades: PCSS.
-  return pcss_lit_fraction(v, s, z, gradient, occluder_cone(light, view, s.position, 0.0),
-                           rotation);
+  float lit = shadow_backprojection(shadow_depth, shadow_filtered, v, view, s, z, gradient, normal,
+                                    int(light.position_type.w) == LIGHT_POINT,
+                                    ivec2(gl_FragCoord.xy));
+#if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
+  imageAtomicAdd(backprojection_fetch_counts, ivec2(gl_FragCoord.xy), backprojection_fetches);
+  backprojection_fetches = 0u;
+#endif
+  return lit;
 #elif SHADOW_TECHNIQUE >= TECHNIQUE_VSM
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
   float lit = soft_moment_shadow(v, s, z, light, normal, rotation);

@@ -1,21 +1,47 @@
-// Soft shadows of a spot light's square source by backprojection
+// Soft shadows of a light's source by backprojection
 // (Guennebaud, Barthe and Paulin, "Real-time Soft Shadow Mapping by
 // Backprojection", EGSR 2006), with the occluded part of the source kept
 // as a bitmask of source samples (Schwarz and Stamminger, "Bitmask Soft
 // Shadows", Eurographics 2007), so overlapping occluders are counted once.
 //
-// Each texel of the depth map in front of the receiver stands for a small
-// square facing the light (a micro-occluder). Seen from the receiver it
-// hides a rectangle of the source: by similar triangles, the ray from the
-// receiver (map coordinate u_r, in units of tan, at depth d_r) to the
-// source point l (world offset in the light's plane) crosses depth d at
-// u = u_r + l (1/d - 1/d_r), so the texel [u0, u1] at depth d hides the
-// source points with l in [u0 - u_r, u1 - u_r] / (1/d - 1/d_r), per axis.
-// The source is a 16 x 16 grid of points, jittered per pixel by column and
-// row so that each rectangle's points are a contiguous run of bits; the lit
-// fraction is their radiometric average (cos theta_source cos
+// Each texel of the depth map in front of the receiver is a small square
+// facing the light (a micro-patch) exactly where the texel lies, so a
+// silhouette stays on its texel boundary whatever the receiver's position
+// inside its own texel. Seen from the receiver it hides a rectangle of the
+// source: by similar triangles, the ray from the receiver (map coordinate
+// u_r, in units of tan, at depth d_r) to the source point l (world offset
+// in the light's plane) crosses depth d at u = u_r + l (1/d - 1/d_r), so
+// the texel [u0, u1] at depth d hides the source points with l in
+// [u0 - u_r, u1 - u_r] / (1/d - 1/d_r), per axis. Neighbouring patches at
+// different depths project to rectangles of different scales: each patch
+// reaches to its blocking neighbours' projection of their shared edge
+// (Guennebaud et al. 2006, section 4.2's gap filling), so no light leaks
+// between them.
+//
+// The blockers' region comes from the map's min/max depth hierarchy
+// (Guennebaud, Barthe and Paulin, "High-Quality Adaptive Soft Shadow
+// Mapping", Eurographics 2007; Schwarz and Stamminger 2007;
+// shaders/filter/depth_hierarchy.comp): the cone from the receiver to the
+// source, cut at the nearest depth the hierarchy finds in it, holds every
+// texel that can hide part of the source. All of it behind the receiver
+// is light, all of it in front is umbra; otherwise its texels (or, for a
+// region over BACKPROJECTION_MAX_CELLS texels wide, the hierarchy's cells)
+// are the patches, so the work per pixel is bounded.
+//
+// The source is a 16 x 16 grid of points shifted per pixel, so each
+// rectangle's points are a contiguous run of columns and rows found in
+// closed form; the hidden ones are 256 bits in two uvec4 registers. The
+// lit fraction is their radiometric average (cos theta_source cos
 // theta_receiver / d^2, the traced reference's weights,
 // src/reference/shadow_ray_tracer.cpp).
+//
+// Every light type: a spot light's square source (perspective view), a
+// point light's sphere seen from a cube face (the disc through its centre
+// facing the face's axis; the map stores distances from the light, made
+// axial per texel) and the sun's disc of directions (orthographic
+// cascades: a texel at depth d hides the directions l, in tangent units,
+// with l in [x0 - x_r, x1 - x_r] / (d_r - d)). Blockers beyond a cube
+// face's edge are in its guard band.
 //
 // What one map cannot show it misses: surfaces hidden from the source's
 // centre but seen by the receiver through its edges (the slab's underside,
@@ -25,118 +51,276 @@
 #include "penumbra.glsl"
 
 #define BACKPROJECTION_SIDE 16  // source points per side (a uint holds two rows)
-// Micro-occluders per side of the search region at most; wider regions are
-// read with a stride. Default scene, source 1.5, 1280x720, 2048^2 map:
-// RMSE 0.0213 at 32, 0.0191 at 48, 0.0179 at 64 (llvmpipe: the lighting
-// pass 4x PCSS's time).
-#define BACKPROJECTION_MAX_STEPS 64
-// Gathers per side of the coarse nearest-depth scan. With 8 the scan
-// missed the thin pole for some receivers, whose search then spanned the
-// whole near-plane cone at a stride that missed it too: lit streaks along
-// its wide penumbra (default scene, 1.5: RMSE 0.0179; 0.0177 with 16).
-#define BACKPROJECTION_SCAN 16
-
-// Each micro-occluder is widened from half its stride to this many strides
-// on each side, so that neighbouring texels at different depths, which
-// project to rectangles of different scales, leave no gaps of light
-// between them. Default scene, source 1.5, 480x270: RMSE 0.0216 at 0.5,
-// 0.0200 at 0.7 and 0.8.
-const float BACKPROJECTION_GROW = 0.7;
+// Patches per side of the blockers' region at most: a wider region is read
+// from the hierarchy's level whose cells it spans in at most this many.
+// Default scene, source 1.5, 320x180, 1024^2 maps (pcss_noise_test.cpp):
+// RMSE 0.0246 at 16, 0.0167 at 32, 0.0150 at 36, 0.0115 at 40 and 48 (a
+// silhouette moves by up to half a cell); the lighting pass takes 1.5x,
+// 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
+#define BACKPROJECTION_MAX_CELLS 40
 
 // Occluders below the receiver's tangent plane cannot block the light that
 // reaches it (the rays that count lie above the plane), within this sine
 // of slack for the facets of a mesh whose shading normals are smoothed.
 const float BACKPROJECTION_PLANE_SLACK = 0.1;
 
-// How many of the ascending coordinates lie below x.
-uint backprojection_count_below(float x, float coords[BACKPROJECTION_SIDE]) {
-  uint count = 0u;
-  for (int i = 0; i < BACKPROJECTION_SIDE; ++i) count += coords[i] < x ? 1u : 0u;
-  return count;
+#if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
+// Texel reads per lookup (bench's debug variant: LightingPass's fetch count).
+uint backprojection_fetches = 0u;
+#define BACKPROJECTION_FETCHED(n) backprojection_fetches += uint(n)
+#else
+#define BACKPROJECTION_FETCHED(n)
+#endif
+
+// The depth along the view's -z of z-bar `z_bar` stored at map offset
+// `u` (tangent units from the map's centre): a cube face stores distances
+// from the light (radial_depth), the axial depth d / sqrt(1 + |u|^2).
+float backprojection_depth(GpuShadowView view, float z_bar, vec2 u) {
+  float d = linear_depth_of(view, z_bar);
+  return view.radial_depth != 0 ? d * inversesqrt(1.0 + dot(u, u)) : d;
+}
+
+// How far a blocker at axial depth d is from the receiver at inverse
+// depth r_inverse (1 / d_r, perspective) or depth d_r (orthographic), in
+// the units that make a map offset over it an offset on the source: 1/d -
+// 1/d_r (perspective: tangent / world) or d_r - d (orthographic: world /
+// tangent).
+float backprojection_k(GpuShadowView view, float d, float receiver) {
+  return view.perspective != 0 ? 1.0 / d - receiver : receiver - d;
+}
+
+// The texels [first, last] whose squares meet the open square of half-width
+// `reach` texels around `center`, inside the map.
+void backprojection_region(vec2 center, float reach, ivec2 size, out ivec2 first, out ivec2 last) {
+  first = max(ivec2(floor(center - reach)), ivec2(0));
+  last = max(min(ivec2(ceil(center + reach)) - 1, size - 1), first);
+}
+
+// The hierarchy's levels and the size of level l: OpenGL's chain, floor(
+// size / 2^l) (taken from level 0: textureSize() at a level chosen at run
+// time read level 2's size on llvmpipe).
+int backprojection_levels(sampler2DArray hierarchy) {
+  ivec2 size = textureSize(hierarchy, 0).xy;
+  return findMSB(max(size.x, size.y)) + 1;
+}
+ivec2 backprojection_cells(sampler2DArray hierarchy, int level) {
+  return max(textureSize(hierarchy, 0).xy >> level, ivec2(1));
+}
+
+// The nearest and farthest depth over texels [first, last] (a superset: the
+// hierarchy's cells covering them). Level l's cells are 2^(l + 1) texels
+// wide (the last one takes an odd remainder), so the level where a cell is
+// at least half the span covers it in at most 3 x 3 cells.
+vec2 backprojection_depth_bounds(sampler2DArray hierarchy, int layer, ivec2 first, ivec2 last) {
+  int span = max(last.x - first.x, last.y - first.y) + 1;
+  int level = clamp(findMSB(max(span - 1, 0)) - 1, 0, backprojection_levels(hierarchy) - 1);
+  ivec2 cells = backprojection_cells(hierarchy, level);
+  ivec2 lo = min(first >> (level + 1), cells - 1), hi = min(last >> (level + 1), cells - 1);
+  vec2 bounds = vec2(1.0e30, -1.0e30);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 3; ++x) {
+      ivec2 c = lo + ivec2(x, y);
+      if (any(greaterThan(c, hi))) continue;
+      vec2 m = texelFetch(hierarchy, ivec3(c, layer), level).rg;
+      BACKPROJECTION_FETCHED(1);
+      bounds = vec2(min(bounds.x, m.x), max(bounds.y, m.y));
+    }
+  }
+  return bounds;
+}
+
+// How many of the points (i + shift) / 16 - 1/2 (times the source width),
+// i = 0..15, lie below x / width.
+uint backprojection_count_below(float x_over_width, float shift) {
+  return uint(clamp(ceil((x_over_width + 0.5) * float(BACKPROJECTION_SIDE) - shift), 0.0,
+                    float(BACKPROJECTION_SIDE)));
+}
+
+// Marks the source points in columns [c0, c1) and rows [r0, r1) hidden.
+// Row j is bits 16 (j & 1) + i of word j / 2 of (low, high); every index
+// is a constant, so the mask stays in registers.
+void backprojection_hide(inout uvec4 low, inout uvec4 high, uint c0, uint c1, uint r0, uint r1) {
+  uint columns = ((1u << c1) - 1u) & ~((1u << c0) - 1u);
+  uint rows = ((1u << r1) - 1u) & ~((1u << r0) - 1u);
+  const uvec4 even = uvec4(0u, 2u, 4u, 6u), odd = uvec4(1u, 3u, 5u, 7u);
+  low |= ((uvec4(rows) >> even) & 1u) * columns | (((uvec4(rows) >> odd) & 1u) * columns) << 16u;
+  high |= ((uvec4(rows >> 8u) >> even) & 1u) * columns |
+          (((uvec4(rows >> 8u) >> odd) & 1u) * columns) << 16u;
+}
+
+// What a lookup knows of its receiver, shared by its patches.
+struct BackprojectionReceiver {
+  vec2 center;          // map position, texels
+  float z;              // biased z-bar at the lookup
+  vec2 gradient;        // z-bar per texel of the receiver's plane
+  vec3 p;               // view space
+  vec3 n;               // view-space normal
+  float receiver;       // 1 / d_r (perspective) or d_r (orthographic): backprojection_k()
+  vec2 shift;           // the source grid's shift, in points
+};
+
+// Map offset (tangent units from the centre) of map point `texels`.
+vec2 backprojection_tan(GpuShadowView view, vec2 texels) {
+  return (texels - 0.5 * vec2(view.depth_range.w)) * view.depth_range.z;
+}
+
+// Hides the source points behind the patch over map offsets [a0, a1]
+// (texels from the receiver's lookup) at z-bar `occluder`, reaching to
+// the blocking neighbours' (z-bar `right` and `up`, or 2 for none)
+// projections of their shared edges.
+void backprojection_patch(GpuShadowView view, BackprojectionReceiver r, vec2 a0, vec2 a1,
+                          float occluder, float right, float up, inout uvec4 low,
+                          inout uvec4 high) {
+  vec2 mid = 0.5 * (a0 + a1);
+  if (occluder >= r.z + dot(r.gradient, mid)) return;  // behind the receiver's plane
+  float texel = view.depth_range.z;  // tangent (perspective) or world (orthographic) units
+  vec2 u = backprojection_tan(view, r.center + mid);
+  float d = backprojection_depth(view, occluder, u);
+  float k = backprojection_k(view, d, r.receiver);
+  if (k <= 0.0) return;
+  vec3 to_occluder =
+      (view.perspective != 0 ? vec3(u * d, -d) : vec3(r.p.xy + mid * texel, -d)) - r.p;
+  if (dot(to_occluder, r.n) <= -BACKPROJECTION_PLANE_SLACK * length(to_occluder)) return;
+  float scale = texel / view.source_width;  // source widths per texel and unit of k
+  vec2 lo = a0 * (scale / k), hi = a1 * (scale / k);
+  if (right < r.z + dot(r.gradient, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y))) {
+    vec2 u_right = backprojection_tan(view, r.center + vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y));
+    float k_right = backprojection_k(view, backprojection_depth(view, right, u_right), r.receiver);
+    if (k_right > 0.0) hi.x = max(hi.x, a1.x * scale / k_right);
+  }
+  if (up < r.z + dot(r.gradient, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)))) {
+    vec2 u_up = backprojection_tan(view, r.center + vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)));
+    float k_up = backprojection_k(view, backprojection_depth(view, up, u_up), r.receiver);
+    if (k_up > 0.0) hi.y = max(hi.y, a1.y * scale / k_up);
+  }
+  uint c0 = backprojection_count_below(lo.x, r.shift.x);
+  uint c1 = backprojection_count_below(hi.x, r.shift.x);
+  uint r0 = backprojection_count_below(lo.y, r.shift.y);
+  uint r1 = backprojection_count_below(hi.y, r.shift.y);
+  if (c0 < c1 && r0 < r1) backprojection_hide(low, high, c0, c1, r0, r1);
 }
 
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
-// gradient `gradient` per texel, world normal `normal`) in perspective
-// view `view` (layer `layer` of depth_maps), whose source is the square
-// view.source_width wide in the view's x-y plane at its eye. `pixel`
-// seeds the jitter of the source's grid of points.
-float shadow_backprojection(sampler2DArray depth_maps, int layer, GpuShadowView view,
-                            ShadowLookup s, float z, vec2 gradient, vec3 normal, ivec2 pixel) {
+// gradient `gradient` per texel, world normal `normal`) in view `view`
+// (layer `layer` of depth_maps, and of `hierarchy`, its min/max depth
+// hierarchy), whose source is view.source_width wide: a square in the
+// view's x-y plane at its eye (spot), a disc there (`disc`: a point
+// light's sphere), or a disc of directions (orthographic: the sun).
+// `pixel` seeds the shift of the source's grid of points.
+float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
+                            GpuShadowView view, ShadowLookup s, float z, vec2 gradient,
+                            vec3 normal, bool disc, ivec2 pixel) {
   ivec2 size = textureSize(depth_maps, 0).xy;
-  float tan_per_texel = view.depth_range.z;
+  float texel = view.depth_range.z;
   float width = view.source_width;
-  vec3 p = (view.view * vec4(s.position, 1.0)).xyz;  // the receiver in view space
-  float d_r = -p.z;
-  vec3 n = normalize(mat3(view.view) * normal);
-  vec2 center = s.uv * vec2(size);  // texels
-  vec2 u_r = (center - 0.5 * vec2(size)) * tan_per_texel;
-
-  float xs[BACKPROJECTION_SIDE], ys[BACKPROJECTION_SIDE];
-  for (int i = 0; i < BACKPROJECTION_SIDE; ++i) {
-    vec3 h = accumulate_hash(pixel, 977 + i);
-    xs[i] = ((float(i) + h.x) / float(BACKPROJECTION_SIDE) - 0.5) * width;
-    ys[i] = ((float(i) + h.y) / float(BACKPROJECTION_SIDE) - 0.5) * width;
+  disc = disc || view.perspective == 0;
+  BackprojectionReceiver r;
+  r.center = s.uv * vec2(size);
+  r.z = z;
+  r.gradient = gradient;
+  r.p = (view.view * vec4(s.position, 1.0)).xyz;
+  r.n = normalize(mat3(view.view) * normal);
+  float d_r = -r.p.z;
+  r.receiver = view.perspective != 0 ? 1.0 / d_r : d_r;
+  r.shift = accumulate_hash(pixel, 977).xy;
+  if (width <= 0.0) {  // a point source: the hard test
+    return texelFetch(depth_maps, ivec3(ivec2(floor(r.center)), layer), 0).r < z ? 0.0 : 1.0;
   }
 
-  // Blockers lie in the cone from the receiver to the source, widest at
-  // the view's near plane; a coarse scan finds the nearest depth in front
-  // of the receiver there, and the cone through that depth is the region
-  // searched.
-  float near_reach =
-      0.5 * width * max(1.0 / view.depth_range.x - 1.0 / d_r, 0.0) / tan_per_texel + 0.5;
-  float nearest = z;
-  for (int iy = 0; iy < BACKPROJECTION_SCAN; ++iy) {
-    for (int ix = 0; ix < BACKPROJECTION_SCAN; ++ix) {
-      vec2 c = center + (2.0 * (vec2(ix, iy) + 0.5) / float(BACKPROJECTION_SCAN) - 1.0) *
-                            near_reach;
-      vec4 d = textureGather(depth_maps, vec3(c / vec2(size), float(layer)), 0);
-      nearest = min(nearest, min(min(d.x, d.y), min(d.z, d.w)));
+  // The cone from the receiver to the source is reach_per_k k texels wide
+  // (half-width) at depth d (backprojection_k()). Cut at the near plane,
+  // then twice at the nearest depth found in the last cut: no texel
+  // outside a cut can hide any of the source (Guennebaud et al. 2007,
+  // section 3.1). A cube face's distances are at least the axial depths,
+  // by at most the factor of the cut's farthest corner.
+  float reach_per_k = 0.5 * width / texel;
+  float reach = reach_per_k * max(backprojection_k(view, view.depth_range.x, r.receiver), 0.0);
+  ivec2 first, last;
+  vec2 bounds = vec2(0.0);
+  for (int cut = 0; cut < 2; ++cut) {
+    backprojection_region(r.center, reach, size, first, last);
+    bounds = backprojection_depth_bounds(hierarchy, layer, first, last);
+    float nearest = linear_depth_of(view, min(bounds.x, z));
+    if (view.radial_depth != 0) {
+      vec2 corner = max(abs(backprojection_tan(view, vec2(first))),
+                        abs(backprojection_tan(view, vec2(last + 1))));
+      nearest *= inversesqrt(1.0 + dot(corner, corner));
+    }
+    reach = min(reach, reach_per_k * max(backprojection_k(view, nearest, r.receiver), 0.0));
+  }
+  backprojection_region(r.center, reach, size, first, last);
+  // The receiver's plane over the region lies within z -+ slope.
+  float slope = (abs(gradient.x) + abs(gradient.y)) * (reach + 1.0);
+  if (bounds.x >= z + slope) return 1.0;  // nothing in front of the receiver
+  // Every texel of the cut in front: each ray to the source is behind the
+  // map's surface where it crosses the farthest depth found.
+  if (bounds.y < z - slope) return 0.0;
+
+  uvec4 low = uvec4(0u), high = uvec4(0u);
+  int span = max(last.x - first.x, last.y - first.y) + 1;
+  if (span <= BACKPROJECTION_MAX_CELLS) {
+    // The texels themselves, and the row and column below the region,
+    // whose patches may reach into it. textureGather at a texel's upper
+    // right corner reads it (w), its right (z) and upper (x) neighbours.
+    for (int ty = max(first.y - 1, 0); ty <= last.y; ++ty) {
+      for (int tx = max(first.x - 1, 0); tx <= last.x; ++tx) {
+        vec4 g = textureGather(depth_maps, vec3(vec2(tx + 1, ty + 1) / vec2(size), float(layer)));
+        BACKPROJECTION_FETCHED(1);
+        vec2 a0 = vec2(tx, ty) - r.center;
+        float right = tx + 1 < size.x ? g.z : 2.0, up = ty + 1 < size.y ? g.x : 2.0;
+        backprojection_patch(view, r, a0, a0 + 1.0, g.w, right, up, low, high);
+      }
+    }
+  } else {
+    // The hierarchy's cells 2^level texels wide (level - 1 of it). A cell
+    // whose depths all lie in front is a patch at its nearest depth; a cell
+    // the receiver's plane cuts is one where its centre texel blocks, at
+    // that texel's depth.
+    int level = min(findMSB((span - 1) / BACKPROJECTION_MAX_CELLS) + 1,
+                    backprojection_levels(hierarchy));
+    ivec2 cells = backprojection_cells(hierarchy, level - 1);
+    ivec2 lo = min(max(first >> level, ivec2(1)) - 1, cells - 1);
+    ivec2 hi = min(last >> level, cells - 1);
+    for (int cy = lo.y; cy <= hi.y; ++cy) {
+      for (int cx = lo.x; cx <= hi.x; ++cx) {
+        ivec2 c = ivec2(cx, cy);
+        vec2 a0 = vec2(c << level) - r.center;
+        vec2 a1 = vec2(mix(ivec2(c + 1) << level, size, equal(c, cells - 1))) - r.center;
+        vec2 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rg;
+        float right = cx + 1 < cells.x ? texelFetch(hierarchy, ivec3(cx + 1, cy, layer), level - 1).r : 2.0;
+        float up = cy + 1 < cells.y ? texelFetch(hierarchy, ivec3(cx, cy + 1, layer), level - 1).r : 2.0;
+        BACKPROJECTION_FETCHED(3);
+        vec2 mid = 0.5 * (a0 + a1);
+        float plane = z + dot(gradient, mid);
+        if (m.x >= plane) continue;
+        float occluder = m.x;
+        if (m.y >= plane) {
+          ivec2 t = min(ivec2(floor(r.center + mid)), size - 1);
+          occluder = texelFetch(depth_maps, ivec3(t, layer), 0).r;
+          BACKPROJECTION_FETCHED(1);
+        }
+        backprojection_patch(view, r, a0, a1, occluder, right, up, low, high);
+      }
     }
   }
-  float reach = near_reach;
-  if (nearest < z) {
-    float d_min = linear_depth_of(view, nearest);
-    reach = min(0.5 * width * max(1.0 / d_min - 1.0 / d_r, 0.0) / tan_per_texel + 1.0, reach);
-  }
-  int steps = clamp(int(ceil(2.0 * reach)), 1, BACKPROJECTION_MAX_STEPS);
-  float stride = 2.0 * reach / float(steps);  // texels per micro-occluder
-  float half_extent = BACKPROJECTION_GROW * stride * tan_per_texel;
 
-  uint blocked[BACKPROJECTION_SIDE / 2];  // row j: bits 16 (j & 1) + i of blocked[j / 2]
-  for (int j = 0; j < BACKPROJECTION_SIDE / 2; ++j) blocked[j] = 0u;
-  for (int iy = 0; iy < steps; ++iy) {
-    for (int ix = 0; ix < steps; ++ix) {
-      vec2 c = center - vec2(reach) + (vec2(ix, iy) + 0.5) * stride;
-      ivec2 texel = ivec2(floor(c));
-      if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) continue;
-      float occluder = texelFetch(depth_maps, ivec3(texel, layer), 0).r;
-      if (occluder >= z + dot(gradient, c - center)) continue;  // behind the receiver's plane
-      float d = linear_depth_of(view, occluder);
-      vec2 u = (c - 0.5 * vec2(size)) * tan_per_texel;
-      vec3 to_occluder = vec3(u * d, -d) - p;
-      if (dot(to_occluder, n) <= -BACKPROJECTION_PLANE_SLACK * length(to_occluder)) continue;
-      float k = 1.0 / d - 1.0 / d_r;
-      if (k <= 0.0) continue;
-      vec2 lo = (u - half_extent - u_r) / k, hi = (u + half_extent - u_r) / k;
-      uint first_column = backprojection_count_below(lo.x, xs);
-      uint end_column = backprojection_count_below(hi.x, xs);
-      if (first_column == end_column) continue;
-      uint first_row = backprojection_count_below(lo.y, ys);
-      uint end_row = backprojection_count_below(hi.y, ys);
-      uint columns = ((1u << end_column) - 1u) & ~((1u << first_column) - 1u);
-      for (uint r = first_row; r < end_row; ++r) blocked[r >> 1u] |= columns << (16u * (r & 1u));
-    }
-  }
-
-  // The source faces the view's -z, so cos theta_source d = d_r for every
-  // point; it cancels in the ratio.
+  // Each point weighs cos theta_receiver dw, dw its solid angle: for a
+  // point on the source's plane, facing the view's -z, (d_r / |t|) dA /
+  // |t|^2 (d_r cancels in the ratio); for a direction (x, y, 1) of the
+  // sun's, dA / |t|^3. Both are (n . t) / |t|^4. A disc keeps the points
+  // inside its circle.
   float total = 0.0, lit = 0.0;
+  float radius2 = disc ? 0.25 * width * width : 1.0e30;
   for (int j = 0; j < BACKPROJECTION_SIDE; ++j) {
-    uint row = blocked[j >> 1] >> uint(16 * (j & 1));
+    uint word = j < 8 ? low[j >> 1] : high[(j - 8) >> 1];
+    uint row = word >> uint(16 * (j & 1));
+    float y = ((float(j) + r.shift.y) / float(BACKPROJECTION_SIDE) - 0.5) * width;
     for (int i = 0; i < BACKPROJECTION_SIDE; ++i) {
-      vec3 t = vec3(xs[i], ys[j], 0.0) - p;
+      float x = ((float(i) + r.shift.x) / float(BACKPROJECTION_SIDE) - 0.5) * width;
+      if (x * x + y * y > radius2) continue;
+      vec3 t = view.perspective != 0 ? vec3(x, y, 0.0) - r.p : vec3(x, y, 1.0);
       float d2 = dot(t, t);
-      float weight = max(dot(n, t), 0.0) / (d2 * d2);
+      float weight = max(dot(r.n, t), 0.0) / (d2 * d2);
       total += weight;
       if (((row >> uint(i)) & 1u) == 0u) lit += weight;
     }

@@ -29,8 +29,10 @@ struct OccluderCone {
 
 // The cone under which the receiver sees the light's source, widened to
 // at least min_tan_half_angle: a spot light's square of width w as the
-// disc of the same area (radius w / sqrt(pi)), a point light's sphere, the
-// sun's disc of directions (GpuShadowView.source_width: 2 tan(radius)).
+// disc through its corners (radius w / sqrt(2): an equal-area disc, w /
+// sqrt(pi), left out the blockers that hide only a corner), a point
+// light's sphere, the sun's disc of directions (GpuShadowView.source_width:
+// 2 tan(radius)).
 OccluderCone occluder_cone(GpuLight light, GpuShadowView view, vec3 receiver,
                            float min_tan_half_angle) {
   OccluderCone c;
@@ -41,7 +43,7 @@ OccluderCone occluder_cone(GpuLight light, GpuShadowView view, vec3 receiver,
     tan_half = 0.5 * view.source_width;
   } else {
     float radius = view.source_width *
-                   (int(light.position_type.w) == LIGHT_POINT ? 0.5 : 0.56418958);
+                   (int(light.position_type.w) == LIGHT_POINT ? 0.5 : 0.70710678);
     float distance = length(light.position_type.xyz - receiver);
     tan_half = radius / sqrt(max(distance * distance - radius * radius, 1e-12));
   }

@@ -12,9 +12,8 @@
 // over the region the light's source covers at the near plane, each tested
 // against the receiver's plane at that texel. Only texels inside the cone
 // from the receiver to the source count as blockers (occluder_cone.glsl).
-// `widen` scales the search region (and the caller's cone should follow):
-// 1 for the disc of the source's area, sqrt(2) to cover a square source's
-// corners too. Returns (the blockers' count, their summed relative depth).
+// `widen` scales the search region (and the caller's cone should follow).
+// Returns (the blockers' count, their summed relative depth).
 vec2 cone_blocker_search(sampler2DArray depth_maps, int v, GpuShadowView view, ShadowLookup s,
                          float z, vec2 gradient, OccluderCone cone, vec2 rotation, int max_samples,
                          float widen) {
@@ -50,7 +49,15 @@ vec2 cone_blocker_search(sampler2DArray depth_maps, int v, GpuShadowView view, S
 // matters less than its spread, and the rotation dithers where a
 // penumbra's outer end stops finding blockers. The filter takes bilinear
 // compares at the pixel's shifted R2 set over the axis-aligned square of
-// the light's source (square_samples.glsl). Both patterns come from one
+// the light's source (square_samples.glsl). The filter's taps are not
+// tested against the cone: PCF over the estimated penumbra stands for
+// blockers at every depth, and those off the mean depth lie outside the
+// receiver's cone at their own depth while still standing for the part of
+// the source it hides. Testing each gathered texel against the cone
+// (480x270, 2048^2 maps, against the traced reference) leaked light: RMSE
+// 0.0172 -> 0.0220 on the default scene at source 0.5, 0.0128 -> 0.0281
+// under a 3-degree sun, 0.0119 -> 0.0196 under a point light, better only
+// at source 1.5 (0.0390 -> 0.0274). Both patterns come from one
 // per-pixel noise value in [0, 1) (`rotation` is the angle 2 pi noise),
 // so neighbouring pixels sample differently and a 3x3 neighbourhood
 // averages much of the noise away. `cone`: the cone the light's source

@@ -78,13 +78,13 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
   }
   if (technique == TECHNIQUE_PCSS || technique == TECHNIQUE_BACKPROJECTION) {
     vec2 gradient = receiver_depth_gradient(view, s, normal, params.max_slope);
-    if (technique == TECHNIQUE_BACKPROJECTION && view.perspective != 0 && view.radial_depth == 0) {
-      return shadow_backprojection(penumbra_depth, v, view, s, z, gradient, normal,
+    if (technique == TECHNIQUE_BACKPROJECTION) {
+      return shadow_backprojection(penumbra_depth, penumbra_filtered, v, view, s, z, gradient,
+                                   normal, int(light.position_type.w) == LIGHT_POINT,
                                    ivec2(floor(pixel)));
     }
-    // PCSS, and backprojection's fallback for a point light's cube faces
-    // and the sun's cascades: the cone the light's source really subtends
-    // (its width is the settings' light_size, or sun_angle for the sun).
+    // PCSS: the cone the light's source really subtends (its width is the
+    // settings' light_size, or sun_angle for the sun).
     OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
     return shadow_pcss(penumbra_depth, penumbra_compare, v, view, s, z, gradient, cone, rotation,
                        noise, params.pcss_blocker_samples, params.pcss_filter_samples);

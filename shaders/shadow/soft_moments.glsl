@@ -93,9 +93,8 @@ float shadow_soft_moments(usampler2DArray sat, sampler2DArray depth_maps, int te
   OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
   vec2 gradient = receiver_depth_gradient(view, s, normal, params.max_slope);
   const float square_corners = 1.41421356;
-  OccluderCone wide = cone;
-  wide.tan_half_angle *= square_corners * 0.88622693;  // equal-area disc -> circumscribed
-  if (cone_blocker_search(depth_maps, v, view, s, z, gradient, wide, rotation,
+  // occluder_cone() covers a square source's corners already.
+  if (cone_blocker_search(depth_maps, v, view, s, z, gradient, cone, rotation,
                           params.pcss_blocker_samples, square_corners)
           .x == 0.0) {
     ivec2 size = textureSize(depth_maps, 0).xy;

@@ -1,6 +1,7 @@
 #include "app/bench_command.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -339,6 +340,9 @@ int run_bench_command(BenchArgs& args) {
   std::vector<std::optional<CachedShadowTimes>> cached_runs;
   const std::optional<std::size_t> moving = movable_shape(scene);
   const int cached_frames = std::min(args.frames, kMaxCachedFrames);
+  // Backprojection's texel reads per pixel {min, mean, max}: its work is
+  // bounded per pixel, not fixed, so its time depends on the scene.
+  std::vector<std::optional<std::array<double, 3>>> fetches(plan.size());
   for (std::size_t i = 0; i < plan.size(); ++i) {
     const ShadowSettings& settings = plan[i];
     progress.step(describe(settings), static_cast<std::int64_t>(i),
@@ -358,6 +362,11 @@ int run_bench_command(BenchArgs& args) {
       print_cached(*cached, cached_frames, timer_clock);
     }
     cached_runs.push_back(cached);
+    if (settings.technique == Technique::Backprojection) {
+      fetches[i] = renderer.count_backprojection_fetches(args.render, settings);
+      std::printf("  backprojection fetches per pixel: min %.0f, mean %.1f, max %.0f\n",
+                  (*fetches[i])[0], (*fetches[i])[1], (*fetches[i])[2]);
+    }
     // Each result as it is measured, also when stdout is a file (a full
     // device or a closed pipe is an error here, with its reason).
     flush_standard_output();
@@ -385,6 +394,10 @@ int run_bench_command(BenchArgs& args) {
       run["cached_shadow_maps"] = cached_runs[i]
                                       ? cached_json(*cached_runs[i], cached_frames, timer_clock)
                                       : nlohmann::json(nullptr);
+      if (fetches[i]) {
+        run["fetches_per_pixel"] = {
+            {"min", (*fetches[i])[0]}, {"mean", (*fetches[i])[1]}, {"max", (*fetches[i])[2]}};
+      }
       j["runs"].push_back(std::move(run));
     }
     write_file_atomically(args.json, j.dump(2) + "\n");

@@ -21,15 +21,18 @@ LightingPass::LightingPass()
 }
 
 const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
-  const auto key = std::make_tuple(technique_define(settings.technique), filter_define(settings),
-                                   settings.soft, uses_shadow_mips(settings));
+  const auto key =
+      std::make_tuple(technique_define(settings.technique), filter_define(settings), settings.soft,
+                      uses_shadow_mips(settings),
+                      fetch_counts_ != 0 && settings.technique == Technique::Backprojection);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(std::get<0>(key))},
                            {"SHADOW_FILTER", std::to_string(std::get<1>(key))},
                            {"MSM_QUANTIZED", uses_quantized_moments(settings) ? "1" : "0"},
                            {"SOFT_SHADOWS", settings.soft ? "1" : "0"},
-                           {"SHADOW_MIPS", std::get<3>(key) ? "1" : "0"}};
+                           {"SHADOW_MIPS", std::get<3>(key) ? "1" : "0"},
+                           {"BACKPROJECTION_COUNT_FETCHES", std::get<4>(key) ? "1" : "0"}};
     it = programs_
              .emplace(key, gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
                                                  defines))
@@ -75,10 +78,14 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
   glBindSampler(UNIT_SHADOW_COMPARE, compare_.id());
   // Filtered maps are sampled bilinearly (linear filters commute with the
   // moments' linearity), or trilinearly and anisotropically through their
-  // mip chain; integer tables are read with texelFetch.
+  // mip chain; integer tables, and backprojection's depth hierarchy at
+  // every level, are read with texelFetch (no sampler: a non-mipmapped
+  // one would leave only level 0 readable).
   glBindTextureUnit(UNIT_SHADOW_FILTERED, filtered_maps);
   GLuint filtered_sampler = bilinear_.id();
-  if (filter_define(settings) == FILTER_SAT) filtered_sampler = 0;
+  if (filter_define(settings) == FILTER_SAT || settings.technique == Technique::Backprojection) {
+    filtered_sampler = 0;
+  }
   if (uses_shadow_mips(settings)) {
     // llvmpipe (Mesa 22.3) ignores textureGrad's derivatives once
     // anisotropic filtering is on: with zero derivatives its lookups still
@@ -100,6 +107,9 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
     filtered_sampler = it->second.id();
   }
   glBindSampler(UNIT_SHADOW_FILTERED, filtered_sampler);
+  if (fetch_counts_ != 0) {
+    glBindImageTexture(IMAGE_OUTPUT, fetch_counts_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  }
   glBindVertexArray(empty_vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glPopDebugGroup();

@@ -25,14 +25,22 @@ class LightingPass {
   void execute(const GBufferPass& gbuffer, const gl::Texture* depth_maps, GLuint filtered_maps,
                const ShadowSettings& settings, GLuint ambient_occlusion, int width, int height);
 
+  // While `counts` (a GL_R32UI texture at the output's size) is not 0,
+  // backprojection runs in a variant that adds each pixel's texel reads
+  // to it (imageAtomicAdd): `penumbra bench`'s fetches per pixel. The
+  // normal frame writes nothing.
+  void count_fetches(GLuint counts) { fetch_counts_ = counts; }
+
   // RGBA32F: rgb as the view defines, alpha 1 where geometry was seen.
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
  private:
   const gl::Program& program_for(const ShadowSettings& settings);
 
-  // One per (technique, filter, soft, mips) combination, compiled on first use.
-  std::map<std::tuple<int, int, bool, bool>, gl::Program> programs_;
+  // One per (technique, filter, soft, mips, counting fetches) combination,
+  // compiled on first use.
+  std::map<std::tuple<int, int, bool, bool, bool>, gl::Program> programs_;
+  GLuint fetch_counts_ = 0;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;
   gl::Sampler bilinear_;

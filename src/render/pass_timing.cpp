@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "penumbra/filter/depth_hierarchy_pass.hpp"
 #include "penumbra/filter/fused_filter_pass.hpp"
 #include "penumbra/filter/gaussian_blur_pass.hpp"
 #include "penumbra/filter/mip_chain_pass.hpp"
@@ -58,6 +59,9 @@ std::array<std::optional<TexelTraffic>, kPassCount> shadow_map_traffic(const Sha
       set(GpuPass::Mips, MipChainPass::texel_traffic(maps, width, height,
                                                      filtered_map_levels(shadow, width, height)));
     }
+  }
+  if (shadow.technique == Technique::Backprojection) {
+    set(GpuPass::DepthHierarchy, DepthHierarchyPass::texel_traffic(depth, width, height));
   }
   set(GpuPass::BandwidthCopy, TextureCopyPass::texel_traffic(maps));
   return traffic;

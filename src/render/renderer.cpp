@@ -326,6 +326,15 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       filtered = &sat_pass_.table();
     }
   }
+  if (shadow.technique == Technique::Backprojection) {
+    // Backprojection's blocker regions (shaders/shadow/backprojection.glsl),
+    // built again only when the depth maps changed.
+    if (filter_maps) {
+      gl::GpuPassScope timed(profiler, gl::GpuPass::DepthHierarchy);
+      hierarchy_pass_.execute(shadow_pass_.depth_maps());
+    }
+    filtered = &hierarchy_pass_.hierarchy();
+  }
   if (filtered != nullptr && uses_shadow_mips(shadow) && filter_maps) {
     gl::GpuPassScope timed(profiler, gl::GpuPass::Mips);
     mip_pass_.execute(*filtered);
@@ -440,6 +449,39 @@ ViewSource Renderer::view_source() {
 
 Image Renderer::read_view() {
   return read_view_source(view_source());
+}
+
+std::array<double, 3> Renderer::count_backprojection_fetches(const RenderSettings& render,
+                                                             const ShadowSettings& shadow) {
+  gl::Texture counts(gl::TextureInfo{.format = GL_R32UI,
+                                     .width = render.width,
+                                     .height = render.height,
+                                     .label = "backprojection fetch counts"});
+  const GLuint zero = 0;
+  glClearTexImage(counts.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  lighting_pass_.count_fetches(counts.id());
+  this->render(render, shadow);
+  lighting_pass_.count_fetches(0);
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  const auto texels = static_cast<std::size_t>(render.width) * render.height;
+  std::vector<GLuint> values(texels);
+  glGetTextureImage(counts.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                    static_cast<GLsizei>(values.size() * sizeof(GLuint)), values.data());
+  const Image seen = read_view();
+  double low = 0.0, sum = 0.0, high = 0.0;
+  long pixels = 0;
+  for (int y = 0; y < render.height; ++y) {
+    for (int x = 0; x < render.width; ++x) {
+      if (seen.pixel(x, y)[3] < 0.5f) continue;
+      // Rows bottom to top on the GPU, top to bottom in Image.
+      const double v = values[static_cast<std::size_t>(render.height - 1 - y) * render.width + x];
+      low = pixels == 0 ? v : std::min(low, v);
+      high = std::max(high, v);
+      sum += v;
+      ++pixels;
+    }
+  }
+  return {low, pixels > 0 ? sum / static_cast<double>(pixels) : 0.0, high};
 }
 
 Image read_view_source(const ViewSource& source) {

@@ -2,11 +2,13 @@
 // One frame: shadow maps, G-buffer, lighting. Wires the passes together and
 // owns the per-frame uniform blocks; the algorithms live in the passes and
 // the shaders.
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "io/image.hpp"
+#include "penumbra/filter/depth_hierarchy_pass.hpp"
 #include "penumbra/filter/fused_filter_pass.hpp"
 #include "penumbra/filter/gaussian_blur_pass.hpp"
 #include "penumbra/filter/mip_chain_pass.hpp"
@@ -120,6 +122,11 @@ class Renderer {
   // the light's shadow views tiled three to a row (ViewTilingPass).
   // The ao view is the AO texture as the lighting pass reads it.
   [[nodiscard]] Image read_view();
+  // Renders the frame again in backprojection's fetch-counting variant
+  // (LightingPass::count_fetches) and returns its texel reads per pixel
+  // that sees geometry, all lights together: {min, mean, max}.
+  [[nodiscard]] std::array<double, 3> count_backprojection_fetches(const RenderSettings& render,
+                                                                   const ShadowSettings& shadow);
   // The texture read_view() reads, left on the GPU (a window shows it),
   // and how its values are encoded. Valid until the next render().
   [[nodiscard]] ViewSource view_source();
@@ -178,6 +185,7 @@ class Renderer {
   GaussianBlurPass blur_pass_;
   FusedFilterPass fused_pass_;
   MipChainPass mip_pass_;
+  DepthHierarchyPass hierarchy_pass_;
   SummedAreaTablePass sat_pass_;
   GBufferPass gbuffer_pass_;
   SsaoPass ssao_pass_;

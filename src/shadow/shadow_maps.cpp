@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "penumbra/error.hpp"
+#include "penumbra/filter/depth_hierarchy_pass.hpp"
 #include "penumbra/filter/fused_filter_pass.hpp"
 #include "penumbra/filter/gaussian_blur_pass.hpp"
 #include "penumbra/filter/summed_area_table_pass.hpp"
@@ -55,6 +56,7 @@ struct ShadowMaps::Impl {
   GaussianBlurPass blur_pass;
   FusedFilterPass fused_pass;
   SummedAreaTablePass sat_pass;
+  DepthHierarchyPass hierarchy_pass;
   gl::Buffer block_buffer{sizeof(ShadowBlock), nullptr, true, "penumbra shadow block"};
   gl::Buffer poisson = gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
                                         "penumbra poisson samples");
@@ -325,6 +327,13 @@ void ShadowMaps::render(const DrawCasters& draw) {
 
 void ShadowMaps::Impl::filter(const ShadowSettings& s) {
   filtered = 0;
+  if (s.technique == Technique::Backprojection) {
+    // Backprojection's blocker regions, read in the filtered maps' place
+    // (bind()).
+    hierarchy_pass.execute(map_pass.depth_maps());
+    filtered = hierarchy_pass.hierarchy().id();
+    return;
+  }
   if (!is_filterable(s.technique)) return;
   if (uses_fused_filter(s)) {
     fused_pass.execute(map_pass.depth_maps(), s);
@@ -362,7 +371,10 @@ void ShadowMaps::bind() const {
   const bool sat = m.block.params.filter_type == FILTER_SAT;
   const bool filtered = m.filtered != 0 && !sat;
   glBindTextureUnit(b.filtered_unit, filtered ? m.filtered : depth);
-  glBindSampler(b.filtered_unit, filtered ? m.bilinear.id() : m.nearest.id());
+  // Backprojection's depth hierarchy is read at every level (texelFetch):
+  // its own mipmapped parameters, no sampler.
+  const bool hierarchy = m.settings.technique == Technique::Backprojection;
+  glBindSampler(b.filtered_unit, hierarchy ? 0 : (filtered ? m.bilinear.id() : m.nearest.id()));
   // The tables are read texel by texel (texelFetch: no sampler applies).
   glBindTextureUnit(b.sat_unit, sat ? m.filtered : 0);
 }

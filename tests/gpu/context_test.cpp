@@ -90,6 +90,7 @@ TEST_F(GpuTest, EveryShaderCompiles) {
         {{"IMAGE_FORMAT", "rg32f"}},
         {{"IMAGE_FORMAT", "rgba32f"}},
         {{"IMAGE_FORMAT", "rgba16"}}}},
+      {"filter/depth_hierarchy.comp", {{{"FROM_DEPTH", "1"}}, {{"FROM_DEPTH", "0"}}}},
       {"test/shadow_math.comp", {{}}},
       {"test/sat_rectangle.comp", {{}}},
       {"render/ssao.comp", {{}}},
@@ -107,6 +108,11 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       EXPECT_NO_THROW(gl::Program::compute(path, defines)) << path;
     }
   }
+  // Backprojection's fetch-counting variant (LightingPass::count_fetches).
+  EXPECT_NO_THROW(
+      gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
+                            {{"SHADOW_TECHNIQUE", std::to_string(TECHNIQUE_BACKPROJECTION)},
+                             {"BACKPROJECTION_COUNT_FETCHES", "1"}}));
   const char* pairs[][2] = {{"shadow/shadow_depth.vert", "shadow/shadow_depth.frag"},
                             {"scene/gbuffer.vert", "scene/gbuffer.frag"}};
   for (auto& pair : pairs) {

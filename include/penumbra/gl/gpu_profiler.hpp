@@ -22,7 +22,8 @@ enum class GpuPass {
   FilterVertical,
   SatRows,
   SatColumns,
-  Mips,  // the filtered map's mip chain (MipChainPass, --shadow-mips)
+  Mips,            // the filtered map's mip chain (MipChainPass, --shadow-mips)
+  DepthHierarchy,  // the depth maps' min/max hierarchy (DepthHierarchyPass, backprojection)
   GBuffer,
   AmbientOcclusion,
   Lighting,
@@ -40,6 +41,7 @@ inline constexpr std::array<std::string_view, static_cast<std::size_t>(GpuPass::
                   "SAT rows",
                   "SAT columns",
                   "mips",
+                  "depth min/max",
                   "G-buffer",
                   "SSAO",
                   "lighting",
