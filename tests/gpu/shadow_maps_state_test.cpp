@@ -389,12 +389,15 @@ TEST_F(GpuTest, RenderAndBindLeaveTheEnginesStateAsTheyFoundIt) {
         read_filtered ? read_texels(maps.filtered_maps(), GL_RGBA, 4) : std::vector<float>{};
 
     // The maps emptied (no casters), so that the render below must draw
-    // them again: a render that draws or clears nothing fails.
+    // them again: a render that draws or clears nothing fails. Nothing
+    // changed, so each render is told its maps are stale (cached otherwise).
+    maps.invalidate();
     maps.render([](const CasterView&) {});
     ASSERT_NE(read_texels(maps.depth_maps(), GL_DEPTH_COMPONENT, 1), expected_depth);
 
     const EngineState engine;
     engine.apply();
+    maps.invalidate();
     const Snapshot before = snapshot();
     maps.render(casters.draw());
     const Snapshot after_render = snapshot();
@@ -445,6 +448,7 @@ TEST_F(GpuTest, ScissorLeftOnDoesNotConfineTheMapsClear) {
 
   glEnable(GL_SCISSOR_TEST);
   glScissor(0, 0, 2, 2);
+  maps.invalidate();  // else the unchanged maps are kept, not drawn again
   maps.render([](const CasterView&) {});
   EXPECT_TRUE(glIsEnabled(GL_SCISSOR_TEST));
   glDisable(GL_SCISSOR_TEST);
