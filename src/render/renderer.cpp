@@ -280,7 +280,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   shadow_views_drawn_ = 0;
   if (shadows) {
     // Only the views whose depths changed (view_cache.hpp).
-    const std::vector<std::uint8_t> stale = shadow_cache_.stale_views(
+    const std::span<const std::uint8_t> stale = shadow_cache_.stale_views(
         std::span<const gpu::GpuShadowView>(views, static_cast<std::size_t>(view_count_)),
         shadow.map_size);
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);

@@ -297,7 +297,7 @@ void ShadowMaps::render(const DrawCasters& draw) {
   // An array needs at least one layer: with no lights the lookup reads none.
   const std::span<const gpu::GpuShadowView> views(m.block.views,
                                                   static_cast<std::size_t>(view_count));
-  const std::vector<std::uint8_t> stale = m.view_cache.stale_views(views, s.map_size);
+  const std::span<const std::uint8_t> stale = m.view_cache.stale_views(views, s.map_size);
   m.views_drawn = m.map_pass.execute(
       [&](int view) {
         const gl::Program& caster =

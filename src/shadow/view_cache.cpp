@@ -43,17 +43,17 @@ void ViewCache::caster_moved(const CasterBounds& before, const CasterBounds& aft
   moved_.push_back(after);
 }
 
-std::vector<std::uint8_t> ViewCache::stale_views(std::span<const ShadowViewData> views,
-                                                 int map_size) {
+std::span<const std::uint8_t> ViewCache::stale_views(std::span<const ShadowViewData> views,
+                                                     int map_size) {
   const bool all = all_stale_ || map_size != map_size_ || views.size() != drawn_.size();
-  std::vector<std::uint8_t> stale(views.size(), all ? 1 : 0);
+  stale_.assign(views.size(), all ? 1 : 0);
   if (!all) {
     for (std::size_t i = 0; i < views.size(); ++i) {
       if (!same_depths(views[i], drawn_[i])) {
-        stale[i] = 1;
+        stale_[i] = 1;
         continue;
       }
-      stale[i] = std::any_of(moved_.begin(), moved_.end(), [&](const CasterBounds& box) {
+      stale_[i] = std::any_of(moved_.begin(), moved_.end(), [&](const CasterBounds& box) {
         return box_may_be_seen(views[i].view_projection, box);
       });
     }
@@ -62,7 +62,7 @@ std::vector<std::uint8_t> ViewCache::stale_views(std::span<const ShadowViewData>
   map_size_ = map_size;
   all_stale_ = false;
   moved_.clear();
-  return stale;
+  return stale_;
 }
 
 }  // namespace penumbra

@@ -38,15 +38,17 @@ class ViewCache {
   // map_size texels: those whose view differs from the one last drawn into
   // their layer, or that see a moved caster; all of them after
   // invalidate() or when the count or the size changed. Records the views
-  // as drawn and forgets the moved casters.
-  [[nodiscard]] std::vector<std::uint8_t> stale_views(std::span<const ShadowViewData> views,
-                                                      int map_size);
+  // as drawn and forgets the moved casters. The flags are the cache's own
+  // (no allocation per frame), valid until the next call.
+  [[nodiscard]] std::span<const std::uint8_t> stale_views(std::span<const ShadowViewData> views,
+                                                          int map_size);
 
  private:
   std::vector<ShadowViewData> drawn_;  // the view each layer holds
   int map_size_ = 0;
   bool all_stale_ = true;
   std::vector<CasterBounds> moved_;  // the boxes before and after each move
+  std::vector<std::uint8_t> stale_;  // stale_views()' flags
 };
 
 }  // namespace penumbra
