@@ -80,15 +80,10 @@ HtmlFigure Study::figure(Renderer& renderer, const std::string& scene_argument,
 }
 
 std::optional<Image> Study::shaded(Renderer& renderer, View view) {
-  try {
+  return image_or_failure([&] {
     renderer.shade(view);
-    Image image = renderer.read_view();
-    check_gl();
-    return image;
-  } catch (const std::exception&) {
-    ++failed_;
-    return std::nullopt;
-  }
+    return renderer.read_view();
+  });
 }
 
 HtmlFigure Study::written_figure(const Image& image, const std::string& file,
@@ -194,20 +189,15 @@ std::optional<Image> Study::shadow_image(const ShadowSettings& shadow, View view
 }
 std::optional<Image> Study::shadow_image(Renderer& renderer, const RenderSettings& render,
                                          const ShadowSettings& shadow, View view) {
-  try {
+  return image_or_failure([&] {
     return with_light_alone(renderer, render.light_index, [&](int light) {
       RenderSettings r = render;
       r.view = view;
       r.light_index = light;
       renderer.render(r, shadow);
-      Image image = renderer.read_view();
-      check_gl();
-      return image;
+      return renderer.read_view();
     });
-  } catch (const std::exception&) {
-    ++failed_;
-    return std::nullopt;
-  }
+  });
 }
 
 }  // namespace penumbra

@@ -153,6 +153,20 @@ class Study {
   // so the time left is estimated from like units.
   void step(int weight = 1);
   void check_gl();
+  // The image `make` returns, with GL checked after it; a failure is
+  // counted in the study's failures (the page says how many) and gives no
+  // image, instead of ending the study.
+  template <class Make>
+  std::optional<Image> image_or_failure(Make&& make) {
+    try {
+      Image image = make();
+      check_gl();
+      return image;
+    } catch (const std::exception&) {
+      ++failed_;
+      return std::nullopt;
+    }
+  }
   [[nodiscard]] ShadowSettings with(Technique t) const;
   // A moment technique's soft shadows: its summed-area table, each
   // pixel's filter sized from a blocker search.

@@ -82,19 +82,15 @@ void Study::errors_section(HtmlPage& page) {
   ShadowSettings accumulated = with(Technique::Hard);
   accumulated.accumulate = options_.quick ? 8 : 64;
   const std::string label = "hard --accumulate " + std::to_string(accumulated.accumulate);
-  try {
+  std::optional<Image> image = image_or_failure([&] {
     RenderSettings r = base_render_;
     r.view = View::Shadow;
-    Image image = with_light_alone(renderer_, r.light_index, [&](int light) {
+    return with_light_alone(renderer_, r.light_index, [&](int light) {
       r.light_index = light;
       return render_accumulated(renderer_, r, accumulated);
     });
-    check_gl();
-    add_row(label, "hard-accumulate", accumulated, false, std::move(image));
-  } catch (const std::exception&) {
-    ++failed_;
-    add_row(label, "hard-accumulate", accumulated, false, std::nullopt);
-  }
+  });
+  add_row(label, "hard-accumulate", accumulated, false, std::move(image));
   page.table(rows);
 
   if (traced) {
