@@ -92,17 +92,18 @@ class ShadowMaps {
   // lights; a directional light takes settings.cascades views, a point
   // light 6, a spot light 1; kMaxShadowViews in all) and fills the block.
   // A light is refitted only when its inputs change (a spot or point light
-  // not when the camera moves). Throws UsageError for settings out of
-  // range (validate()), too many lights or views, or accumulate (the
-  // renderer's: it renders the maps once per point of the light's source).
+  // not when the camera moves). Each light's own source size
+  // (Light::light_size, sun_angle) sets its penumbrae. Throws UsageError
+  // for settings or a light's source size out of range (validate()), or
+  // too many lights or views.
   void update(std::span<const Light> lights, const CameraFrustum& camera,
-              const CasterGeometry& casters, const ShadowSettings& settings);
+              const CasterGeometry& casters, const ShadowMapSettings& settings);
   // The same with the casters' world-space bounding boxes, one per object
   // (its index is the caster's id): the views are fitted to the boxes, and
   // a caster whose box changed since the last update() has the views that
   // see it (before or after) drawn again, and no other.
   void update(std::span<const Light> lights, const CameraFrustum& camera,
-              std::span<const CasterBounds> casters, const ShadowSettings& settings);
+              std::span<const CasterBounds> casters, const ShadowMapSettings& settings);
   // Caster `id` of the bounds form changed inside an unchanged box (it
   // turned, or its mesh changed): the views that see it are drawn again at
   // the next update() and render(). Throws UsageError for an id the last

@@ -45,7 +45,7 @@ TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width
   return {4.0 * texels_read / (static_cast<double>(width) * height), 1.0 * bytes_per_texel(format)};
 }
 
-void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
+void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings) {
   const int radius = settings.blur;
   if (radius < 1 || radius > kMaxFusedBlur) {
     throw RuntimeError("the fused filter takes radii 1.." + std::to_string(kMaxFusedBlur));

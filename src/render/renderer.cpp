@@ -27,6 +27,26 @@ static_assert(sizeof(gpu::GpuShadow) == 144, "GpuShadow must match std140");
 
 namespace {
 
+// The shadow block's fields for --accumulate's sub-frame (the renderer's
+// own: ShadowMaps leaves them 0).
+void set_subframe_params(gpu::GpuShadow& block, const ShadowSettings& shadow) {
+  block.accumulate_u = shadow.subframe_u;
+  block.accumulate_v = shadow.subframe_v;
+  block.accumulate_count = shadow.accumulate > 1 ? shadow.accumulate : 0;
+  block.accumulate_normal_x = shadow.subframe_normal[0];
+  block.accumulate_normal_y = shadow.subframe_normal[1];
+  block.accumulate_normal_z = shadow.subframe_normal[2];
+  block.accumulate_frame = shadow.subframe;
+  block.accumulate_cell_x = shadow.subframe_cell[0];
+  block.accumulate_cell_y = shadow.subframe_cell[1];
+  block.accumulate_cell_width = shadow.subframe_cell[2];
+  block.accumulate_cell_height = shadow.subframe_cell[3];
+  block.accumulate_column = shadow.subframe_cell_index[0];
+  block.accumulate_columns = shadow.subframe_cell_index[1];
+  block.accumulate_row = shadow.subframe_cell_index[2];
+  block.accumulate_rows = shadow.subframe_cell_index[3];
+}
+
 // One layer (0 for a 2D texture) of a texture as an image.
 Image read_texture(GLuint texture, int width, int height, GLenum format, int layer = 0) {
   Image image(width, height);
@@ -240,7 +260,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   view_count_ = 0;
   for (int i = 0; i < light_count; ++i) {
     const auto index = static_cast<std::size_t>(i);
-    const Light& light = scene_.lights[index];
+    const Light light = with_source_size(scene_.lights[index], shadow);
     ShadowViewInputs inputs = shadow_view_inputs(light, camera, shadow);
     if (fit_inputs_[index] != inputs) {
       light_views_[index] =
@@ -271,6 +291,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   frame_ubo_.update(&frame, sizeof frame);
 
   gpu::GpuShadow shadow_block = gpu_shadow_params(shadow);
+  set_subframe_params(shadow_block, shadow);
   shadow_block.accumulate_weighted = shadow.accumulate > 1 && render.view == View::Shadow ? 1 : 0;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 

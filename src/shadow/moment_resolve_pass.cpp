@@ -18,7 +18,7 @@ TexelTraffic MomentResolvePass::texel_traffic(GLenum depth_format, Technique tec
           static_cast<double>(bytes_per_texel(representation_format(technique)))};
 }
 
-void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
+void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings) {
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);
   const auto key = std::make_pair(technique, uses_quantized_moments(settings));

@@ -66,7 +66,7 @@ struct ShadowMaps::Impl {
   gl::Sampler compare{gl::SamplerInfo{.compare_mode = GL_COMPARE_REF_TO_TEXTURE,
                                       .label = "penumbra depth compare"}};
 
-  ShadowSettings settings;
+  ShadowMapSettings settings;
   ShadowBlock block{};
   std::vector<int> view_light;  // the light of each view
   std::vector<LightShadowViews> fitted;
@@ -83,15 +83,15 @@ struct ShadowMaps::Impl {
   std::vector<int> moved;                     // ids marked by moved()
   std::vector<glm::vec3> box_corners;         // the boxes as triangles, for the fit
   std::vector<std::uint32_t> box_indices;
-  std::optional<ShadowSettings> filtered_for;  // the settings the filtered maps hold
+  std::optional<ShadowMapSettings> filtered_for;  // the settings the filtered maps hold
   int views_drawn = 0;
 
   bool bounds_form = false;  // the last update() had caster bounds
 
   void update(std::span<const Light> lights, const CameraFrustum& camera, PositionSpan positions,
-              std::span<const std::uint32_t> indices, const ShadowSettings& settings);
+              std::span<const std::uint32_t> indices, const ShadowMapSettings& settings);
   // The technique's resolve and filter passes over every layer.
-  void filter(const ShadowSettings& s);
+  void filter(const ShadowMapSettings& s);
 };
 
 namespace {
@@ -109,9 +109,9 @@ auto& live(ImplPtr& impl, const char* call) {
 }
 
 // What update() refuses, checked before it changes anything.
-void check_update(std::span<const Light> lights, const ShadowSettings& settings) {
+void check_update(std::span<const Light> lights, const ShadowMapSettings& settings) {
   validate(settings);
-  if (settings.accumulate > 1) throw UsageError("ShadowMaps: accumulate is the renderer's");
+  for (const Light& light : lights) validate(light);
   if (lights.size() > static_cast<std::size_t>(kMaxLights)) {
     throw UsageError("ShadowMaps: " + std::to_string(lights.size()) + " lights; at most " +
                      std::to_string(kMaxLights) + " are supported");
@@ -175,7 +175,7 @@ ShadowMaps::ShadowMaps(ShadowMaps&&) noexcept = default;
 ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
 
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
-                        const CasterGeometry& casters, const ShadowSettings& settings) {
+                        const CasterGeometry& casters, const ShadowMapSettings& settings) {
   check_update(lights, settings);
   Impl& m = live(impl_, "update");
   const std::uint64_t hash = hash_casters(casters.positions, casters.indices);
@@ -193,7 +193,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
 }
 
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
-                        std::span<const CasterBounds> casters, const ShadowSettings& settings) {
+                        std::span<const CasterBounds> casters, const ShadowMapSettings& settings) {
   check_update(lights, settings);
   Impl& m = live(impl_, "update");
   const bool same_objects = m.bounds_form && m.casters_hash && casters.size() == m.bounds.size();
@@ -244,7 +244,7 @@ void ShadowMaps::invalidate() {
 
 void ShadowMaps::Impl::update(std::span<const Light> lights, const CameraFrustum& camera,
                               PositionSpan positions, std::span<const std::uint32_t> indices,
-                              const ShadowSettings& settings) {
+                              const ShadowMapSettings& settings) {
   Impl& m = *this;
   m.settings = settings;
   m.fitted.resize(lights.size());
@@ -292,7 +292,7 @@ void ShadowMaps::render(const DrawCasters& draw) {
   set_caster_pass_state();
   glBindBufferBase(GL_UNIFORM_BUFFER, m.bindings.block, m.block_buffer.id());
 
-  const ShadowSettings& s = m.settings;
+  const ShadowMapSettings& s = m.settings;
   const int view_count = m.block.counts.y;
   // An array needs at least one layer: with no lights the lookup reads none.
   const std::span<const gpu::GpuShadowView> views(m.block.views,
@@ -325,7 +325,7 @@ void ShadowMaps::render(const DrawCasters& draw) {
   m.rendered = true;
 }
 
-void ShadowMaps::Impl::filter(const ShadowSettings& s) {
+void ShadowMaps::Impl::filter(const ShadowMapSettings& s) {
   filtered = 0;
   if (s.technique == Technique::Backprojection) {
     // Backprojection's blocker regions, read in the filtered maps' place

@@ -23,7 +23,7 @@ class FusedFilterPass {
 
   // Filters every layer of `depth_maps` with the settings' technique and
   // radius (settings.blur in 1..kMaxFusedBlur) into output().
-  void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
+  void execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings);
 
   // Same size, layers and format as the resolve's representation. Valid
   // after execute().

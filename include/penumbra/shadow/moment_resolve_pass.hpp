@@ -14,7 +14,7 @@ class MomentResolvePass {
  public:
   // Writes the representation of every layer of `depth_maps`. The array is
   // reallocated only when its size, layer count or format changes.
-  void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
+  void execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings);
 
   // Per texel: one depth read (of `depth_format`), one texel of the
   // technique's representation written.
