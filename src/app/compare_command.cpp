@@ -407,12 +407,12 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"height", args.render.height},
       {"shadow_map_size", args.shadow.map_size},
       // The judged light's own source size, under --light-size/--sun-angle.
-      {"light_size", with_source_size(scene.lights[static_cast<std::size_t>(light_index)],
-                                      args.shadow)
-                         .light_size},
-      {"sun_angle", with_source_size(scene.lights[static_cast<std::size_t>(light_index)],
-                                     args.shadow)
-                        .sun_angle},
+      {"light_size",
+       with_source_size(scene.lights[static_cast<std::size_t>(light_index)], args.shadow)
+           .light_size},
+      {"sun_angle",
+       with_source_size(scene.lights[static_cast<std::size_t>(light_index)], args.shadow)
+           .sun_angle},
       {"reference",
        {{"rays_per_pixel", reference.rays},
         {"pixels", reference.pixels},

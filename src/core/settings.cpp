@@ -15,8 +15,7 @@ void check_range(std::string_view name, T value, T min, T max) {
   if constexpr (std::is_floating_point_v<T>) ok = ok && std::isfinite(value);
   if (!ok) {
     std::ostringstream msg;
-    msg << "--" << name << " must be between " << min << " and " << max << " (got " << value
-        << ")";
+    msg << "--" << name << " must be between " << min << " and " << max << " (got " << value << ")";
     throw UsageError(msg.str());
   }
 }

@@ -299,9 +299,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
 
   const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
   shadow_views_drawn_ = 0;
+  std::span<const std::uint8_t> stale;
   if (shadows) {
     // Only the views whose depths changed (view_cache.hpp).
-    const std::span<const std::uint8_t> stale = shadow_cache_.stale_views(
+    stale = shadow_cache_.stale_views(
         std::span<const gpu::GpuShadowView>(views, static_cast<std::size_t>(view_count_)),
         shadow.map_size);
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
@@ -312,16 +313,21 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
         },
         drawn, shadow.map_size, stale);
   }
-  // The resolve and the filters read every layer: they run again when a
-  // view was drawn or the settings changed, else their output is current.
-  const bool filter_maps = shadow_views_drawn_ > 0 || filtered_for_ != shadow;
+  // The resolve and the filters run again when a view was drawn (over the
+  // drawn views' layers; filter/layer_runs.hpp) or the settings changed
+  // (over every layer), else their output is current. The summed-area
+  // tables, the depth hierarchy and the mip chains take every layer.
+  const bool settings_changed = filtered_for_ != shadow;
+  const bool filter_maps = shadow_views_drawn_ > 0 || settings_changed;
+  const std::span<const std::uint8_t> filter_layers =
+      settings_changed ? std::span<const std::uint8_t>() : stale;
   filtered_for_ = shadow;
   const gl::Texture* filtered = nullptr;
   const bool fused = is_filterable(shadow.technique) && uses_fused_filter(shadow);
   if (fused) {
     if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::FusedFilter);
-      fused_pass_.execute(shadow_pass_.depth_maps(), shadow);
+      fused_pass_.execute(shadow_pass_.depth_maps(), shadow, filter_layers);
     }
     filtered = &fused_pass_.output();
     // The moments view shows the unfiltered representation, which the
@@ -330,7 +336,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   } else if (is_filterable(shadow.technique)) {
     if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
-      resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
+      resolve_pass_.execute(shadow_pass_.depth_maps(), shadow, filter_layers);
     }
     const gl::Texture& representation = resolve_pass_.representation();
     filtered = &representation;
@@ -339,7 +345,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       if (filter_maps) {
         blur_pass_.execute(
             representation, shadow.blur, profiler,
-            filtered_map_levels(shadow, representation.width(), representation.height()));
+            filtered_map_levels(shadow, representation.width(), representation.height()),
+            filter_layers);
       }
       filtered = &blur_pass_.output();
     } else if (filter == FILTER_SAT) {

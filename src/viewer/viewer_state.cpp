@@ -79,8 +79,8 @@ bool set_number(ViewerState& state, std::string_view name, double value) {
   }
   for (const SourceSizeParam& p : kSourceSizeParams) {
     if (p.name != name) continue;
-    state.shadow.*(p.override_field) =
-        static_cast<float>(std::clamp(value, static_cast<double>(p.min), static_cast<double>(p.max)));
+    state.shadow.*(p.override_field) = static_cast<float>(
+        std::clamp(value, static_cast<double>(p.min), static_cast<double>(p.max)));
     return true;
   }
   return set_in_table(state.shadow, kShadowFloatParams, name, value,
