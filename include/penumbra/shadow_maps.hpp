@@ -44,8 +44,7 @@ namespace penumbra {
 // `generation` when the engine gives one: a number the engine bumps
 // whenever it changes the positions or indices (O(1) per frame; the
 // engine's own dirty flag or frame counter). Without one it hashes every
-// vertex and index (O(n) per frame: safe whatever the engine does, about
-// 1 ms per million vertices).
+// vertex and index (O(n) per frame: safe whatever the engine does).
 struct CasterGeometry {
   PositionSpan positions;
   std::span<const std::uint32_t> indices;  // three per triangle

@@ -32,6 +32,28 @@ TEST(SceneFile, ParsesAPointLight) {
                RuntimeError);
 }
 
+// Each light its own source: light_size for spot and point lights,
+// sun_angle for directional ones, in their ranges; the other key refused.
+TEST(SceneFile, ReadsEachLightsSourceSize) {
+  Scene s = parse_scene_json(R"({"lights": [{"type": "spot", "light_size": 0.1},
+                                            {"type": "spot", "light_size": 2.5},
+                                            {"type": "directional", "sun_angle": 0.53},
+                                            {"type": "point"}],
+                                 "objects": []})",
+                             "sizes.json");
+  ASSERT_EQ(s.lights.size(), 4u);
+  EXPECT_FLOAT_EQ(s.lights[0].light_size, 0.1f);
+  EXPECT_FLOAT_EQ(s.lights[1].light_size, 2.5f);
+  EXPECT_FLOAT_EQ(s.lights[2].sun_angle, 0.53f);
+  EXPECT_FLOAT_EQ(s.lights[3].light_size, Light{}.light_size);
+  for (const char* bad : {R"({"lights": [{"type": "spot", "light_size": -1}], "objects": []})",
+                          R"({"lights": [{"type": "spot", "sun_angle": 1}], "objects": []})",
+                          R"({"lights": [{"type": "directional", "light_size": 1}], "objects": []})",
+                          R"({"lights": [{"type": "directional", "sun_angle": 90}], "objects": []})"}) {
+    EXPECT_THROW(parse_scene_json(bad, "bad.json"), RuntimeError) << bad;
+  }
+}
+
 TEST(SceneFile, ParsesEveryKind) {
   Scene s = parse_scene_json(kValid, "test.json");
   ASSERT_EQ(s.lights.size(), 2u);
