@@ -8,11 +8,13 @@
 #include "reference/shadow_metrics.hpp"
 #include "reference/shadow_ray_tracer.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
 
 using testing::GpuTest;
+using testing::spot_light;
 
 constexpr float kSmallSource = 0.1f;
 constexpr float kLargeSource = 2.0f;
@@ -22,30 +24,16 @@ constexpr int kRays = 64;
 // spot light 6 above it shining straight down (its cone does not reach the
 // other box): the penumbra around a box's shadow is about size / 5 wide.
 Scene two_spot_lights(float left_size, float right_size) {
-  Scene scene;
-  scene.name = "two spot lights";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {16.0f, 0.0f, 8.0f};
-  scene.shapes.push_back(ground);
+  testing::TestScene scene("two spot lights");
+  scene.ground(16.0f, 8.0f).camera({0.0f, 10.0f, 7.0f}, {0.0f, 0.0f, 0.0f}, 50.0f);
   for (float x : {-3.0f, 3.0f}) {
-    Shape box;
-    box.kind = ShapeKind::Box;
-    box.size = glm::vec3(1.0f);
-    box.position = {x, 1.5f, 0.0f};
-    scene.shapes.push_back(box);
-    Light light;
-    light.type = LightType::Spot;
-    light.position = {x, 6.5f, 0.0f};
-    light.direction = {0.0f, -1.0f, 0.0f};
+    scene.box({x, 1.5f, 0.0f}, glm::vec3(1.0f));
+    Light light = spot_light({x, 6.5f, 0.0f}, {x, 0.0f, 0.0f}, Light{}.cone_degrees,
+                             Light{}.inner_cone_degrees);
     light.intensity = 30.0f;
     light.light_size = x < 0.0f ? left_size : right_size;
-    scene.lights.push_back(light);
+    scene.light(light);
   }
-  scene.camera.position = {0.0f, 10.0f, 7.0f};
-  scene.camera.target = {0.0f, 0.0f, 0.0f};
-  scene.camera.fov_y_degrees = 50.0f;
   return scene;
 }
 
@@ -57,10 +45,7 @@ ShadowSettings pcss() {
 }
 
 RenderSettings shadow_of(int light) {
-  RenderSettings rs;
-  rs.width = 256;
-  rs.height = 160;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(256, 160);
   rs.light_index = light;
   return rs;
 }
