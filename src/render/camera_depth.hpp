@@ -20,9 +20,10 @@
 // fits it to the geometry in view anyway, the cascades split the range up
 // to it, a scene file's zfar clips there, and the far plane stays a point
 // (depth 0 unprojects to a finite position) for rays built from depth.
-// Infinite far (z_clip = n, w = z) would avoid the cancellation in
-// A z + B near the far plane, which costs n 2^-24 in clip z, that is
-// 2^-24 of z once divided: the same relative precision as the divide.
+// Infinite far (z_clip = n, w = z) would avoid the cancellation of clip
+// z = A z_view + B near the far plane, but that costs 2^-24 of B, which
+// is 2^-24 of the distance once converted: the relative precision the
+// perspective divide leaves anyway (tests/unit/depth_position_error_test.cpp).
 #include <glm/glm.hpp>
 
 #include "penumbra/shared/bindings.h"
