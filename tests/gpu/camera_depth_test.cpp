@@ -9,6 +9,7 @@
 #include "gpu_fixture.hpp"
 #include "render/camera_depth.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -21,28 +22,15 @@ constexpr int kSize = 96;
 // when looking straight down), and a speck `speck_distance` in front of
 // the camera that pulls the fitted near plane to its floor, 1e-4 of the
 // far one (the speck itself is clipped).
-Scene ground_scene(glm::vec3 camera, glm::vec3 target, glm::vec3 up, glm::vec3 ground_size,
+Scene ground_scene(glm::vec3 camera, glm::vec3 target, glm::vec3 up, float width, float depth,
                    glm::vec3 ground_centre, float speck_distance) {
-  Scene scene;
-  scene.name = "far ground";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = ground_size;
-  ground.position = ground_centre;
-  scene.shapes.push_back(ground);
-  Shape speck;
-  speck.kind = ShapeKind::Box;
-  speck.size = glm::vec3(speck_distance * 0.1f);
-  speck.position = camera + glm::normalize(target - camera) * speck_distance;
-  scene.shapes.push_back(speck);
-  scene.camera.position = camera;
-  scene.camera.target = target;
+  Scene scene = testing::TestScene("far ground")
+                    .ground(width, depth, ground_centre)
+                    .box(camera + glm::normalize(target - camera) * speck_distance,
+                         glm::vec3(speck_distance * 0.1f))
+                    .camera(camera, target, 40.0f)
+                    .light(testing::sun_light({0.0f, -1.0f, 0.0f}));
   scene.camera.up = up;
-  scene.camera.fov_y_degrees = 40.0f;
-  Light sun;
-  sun.type = LightType::Directional;
-  scene.lights.push_back(sun);
   return scene;
 }
 
@@ -58,11 +46,7 @@ struct GroundErrors {
 // the points the reference traces from) against the plane y = 0.
 GroundErrors ground_errors(const Scene& scene) {
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = kSize;
-  rs.height = kSize;
-  rs.view = View::Albedo;
-  renderer.render(rs, ShadowSettings{});
+  renderer.render(testing::small_frame(kSize, kSize, View::Albedo), ShadowSettings{});
   GroundErrors e;
   renderer.camera_depth_range(kSize, kSize, e.near_plane, e.far_plane);
   const SurfacePoints s = renderer.read_surfaces();
@@ -82,11 +66,11 @@ GroundErrors ground_errors(const Scene& scene) {
 // Looking straight down at ground 100 units away with the near plane at
 // 1e-4 of the far one: standard-Z's depth there is 1 - 1e-4 (z - n) / z,
 // where a float32 step of 2^-24 is 6e-4 of the distance; reversed-Z's is
-// about 1e-4 - 1e-6, whose steps are 2^-24 of itself.
+// n (f - z) / (z (f - n)), about 1e-6, whose steps are 2^-24 of itself.
 TEST_F(GpuTest, FarGroundRebuildsWithinAMillionthOfItsDistance) {
   const GroundErrors e =
       ground_errors(ground_scene({0.0f, 100.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f},
-                                 {400.0f, 0.0f, 400.0f}, glm::vec3(0.0f), 0.004f));
+                                 400.0f, 400.0f, glm::vec3(0.0f), 0.004f));
   std::printf(
       "near %.4g far %.4g: ground off its plane by up to %.2e of the distance; "
       "bound up to %.2e of it\n",
@@ -105,7 +89,7 @@ TEST_F(GpuTest, FarGroundRebuildsWithinAMillionthOfItsDistance) {
 TEST_F(GpuTest, GrazingGroundStaysWithinItsErrorBound) {
   const GroundErrors e =
       ground_errors(ground_scene({0.0f, 2.5f, 24.0f}, {0.0f, 0.6f, -20.0f}, {0.0f, 1.0f, 0.0f},
-                                 {40.0f, 0.0f, 260.0f}, {0.0f, 0.0f, -100.0f}, 0.02f));
+                                 40.0f, 260.0f, {0.0f, 0.0f, -100.0f}, 0.02f));
   std::printf(
       "near %.4g far %.4g: ground off its plane by up to %.2e of the distance; "
       "bound up to %.2e of it\n",
