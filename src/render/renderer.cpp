@@ -283,7 +283,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     const Light& light = scene_.lights[static_cast<std::size_t>(virtual_light_)];
     virtual_clipmap_ = fit_virtual_clipmap(
         light, camera, render.height, PositionSpan(mesh_.vertices), mesh_.indices,
-        caster_bounds_.bounds(PositionSpan(mesh_.vertices), mesh_.indices, cascade_light_frame(light)));
+        caster_bounds_.bounds(PositionSpan(mesh_.vertices), mesh_.indices, cascade_light_frame(light)),
+        &virtual_clipmap_);
   }
   if (maps_kind_for_ != shadow.shadow_maps) {
     shadow_cache_.invalidate();

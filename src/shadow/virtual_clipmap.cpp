@@ -35,7 +35,8 @@ glm::ivec2 virtual_page_slot(glm::ivec2 page) {
 VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& camera,
                                    int image_height, PositionSpan vertices,
                                    std::span<const std::uint32_t> indices,
-                                   const CasterHierarchy& bounds) {
+                                   const CasterHierarchy& bounds,
+                                   const VirtualClipmap* previous) {
   VirtualClipmap clipmap;
   clipmap.pixel_angle = pixel_footprint_per_distance(camera, image_height);
   clipmap.camera = camera.position;
@@ -44,11 +45,18 @@ VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& came
   const float near_footprint = std::max(camera.near_plane * clipmap.pixel_angle, 1e-6f);
   const float far_footprint = std::max(camera.far_plane * clipmap.pixel_angle, near_footprint);
   clipmap.texel0 = std::exp2(std::floor(std::log2(near_footprint)));
+  const glm::mat4 view = cascade_light_frame(light);
+  if (previous != nullptr && !previous->levels.empty() && previous->levels.front().view.view != view) {
+    previous = nullptr;  // another light direction: nothing to keep
+  }
+  if (previous != nullptr && previous->texel0 <= near_footprint &&
+      previous->texel0 * 4.0f > near_footprint) {
+    clipmap.texel0 = previous->texel0;
+  }
   const int count = std::clamp(
       static_cast<int>(std::floor(std::log2(far_footprint / clipmap.texel0))) + 1, 1,
       kMaxVirtualLevels);
 
-  const glm::mat4 view = cascade_light_frame(light);
   const glm::vec4 light_x = matrix_row(view, 0), light_y = matrix_row(view, 1);
   const glm::vec4 light_depth = -matrix_row(view, 2);
   const glm::vec2 camera_light = glm::vec2(view * glm::vec4(camera.position, 1.0f));
@@ -88,6 +96,15 @@ VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& came
     lv.view = view;
     lv.z0 = std::floor((z_near - pad) / step) * step;
     lv.z1 = lv.z0 + span + step;
+    if (previous != nullptr && previous->texel0 == clipmap.texel0 &&
+        static_cast<std::size_t>(l) < previous->levels.size()) {
+      const LightView& before = previous->levels[static_cast<std::size_t>(l)].view;
+      if (before.z0 <= z_near - pad && before.z1 >= z_far + pad &&
+          before.z1 - before.z0 <= 2.0f * (lv.z1 - lv.z0)) {
+        lv.z0 = before.z0;
+        lv.z1 = before.z1;
+      }
+    }
     lv.projection = glm::ortho(lo.x, hi.x, lo.y, hi.y, lv.z0, lv.z1);
     lv.view_projection = lv.projection * lv.view;
     lv.texel_world = texel;

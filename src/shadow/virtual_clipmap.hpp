@@ -53,10 +53,17 @@ float pixel_footprint_per_distance(const CameraFrustum& camera, int image_height
 // centred on the camera snapped to whole pages, its depth range from the
 // casters in its column (through `bounds`, built over the triangles in
 // cascade_light_frame(light)), snapped to a coarse grid as cascades' are.
+// With the `previous` frame's clipmap (of the same light), level 0's texel
+// and each level's depth range are kept while they still serve (the texel
+// no larger than the near footprint nor smaller than a quarter of it; the
+// range holding the new one and at most twice as deep), so that an
+// orbiting camera, whose near plane and levels' columns change a little
+// every frame, keeps its cached pages.
 VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& camera,
                                    int image_height, PositionSpan vertices,
                                    std::span<const std::uint32_t> indices,
-                                   const CasterHierarchy& bounds);
+                                   const CasterHierarchy& bounds,
+                                   const VirtualClipmap* previous = nullptr);
 
 // The level a point at `world` reads: the finest whose texel is no larger
 // than the pixel's footprint there (virtual_level() in the shaders).

