@@ -265,7 +265,8 @@ void print_orbit(const std::vector<VirtualOrbitFrame>& orbit) {
 nlohmann::json orbit_json(const std::vector<VirtualOrbitFrame>& orbit) {
   nlohmann::json frames = nlohmann::json::array();
   for (const VirtualOrbitFrame& o : orbit) {
-    frames.push_back({{"allocated", o.resident}, {"rendered", o.rendered}, {"pool_pages", o.pool_pages}});
+    frames.push_back(
+        {{"allocated", o.resident}, {"rendered", o.rendered}, {"pool_pages", o.pool_pages}});
   }
   return {{"degrees_per_frame", kOrbitDegrees}, {"frames", frames}};
 }

@@ -117,7 +117,8 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
              "filter of the vsm, esm, msm, msm16, evsm2 and evsm4 maps: a separable Gaussian, or a "
              "summed-area table",
              filter_names(), OptionGroup::Filter);
-  named.shadow_maps = std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, settings.shadow_maps));
+  named.shadow_maps =
+      std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, settings.shadow_maps));
   add_choice(app, "shadow-maps", named.shadow_maps,
              "directional lights: cascades, or virtual shadow maps (a clipmap of 16384^2-texel "
              "levels in 128^2 pages, the pages the image needs rendered into --page-pool-mib; "

@@ -276,14 +276,16 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   virtual_light_ = -1;
   if (virtual_maps) {
     for (int i = 0; i < light_count && virtual_light_ < 0; ++i) {
-      if (scene_.lights[static_cast<std::size_t>(i)].type == LightType::Directional) virtual_light_ = i;
+      if (scene_.lights[static_cast<std::size_t>(i)].type == LightType::Directional)
+        virtual_light_ = i;
     }
   }
   if (virtual_light_ >= 0) {
     const Light& light = scene_.lights[static_cast<std::size_t>(virtual_light_)];
     virtual_clipmap_ = fit_virtual_clipmap(
         light, camera, render.height, PositionSpan(mesh_.vertices), mesh_.indices,
-        caster_bounds_.bounds(PositionSpan(mesh_.vertices), mesh_.indices, cascade_light_frame(light)),
+        caster_bounds_.bounds(PositionSpan(mesh_.vertices), mesh_.indices,
+                              cascade_light_frame(light)),
         &virtual_clipmap_);
   }
   if (maps_kind_for_ != shadow.shadow_maps) {

@@ -35,7 +35,8 @@ VirtualShadowPass::VirtualShadowPass()
     : mark_program_(gl::Program::compute("shadow/virtual_mark.comp")),
       allocate_program_(gl::Program::compute("shadow/virtual_allocate.comp")),
       dirty_program_(gl::Program::compute("shadow/virtual_dirty.comp")),
-      clear_program_(gl::Program::graphics("shadow/virtual_clear.vert", "shadow/virtual_clear.frag")),
+      clear_program_(
+          gl::Program::graphics("shadow/virtual_clear.vert", "shadow/virtual_clear.frag")),
       page_programs_{page_program(false), page_program(true)},
       block_ubo_(sizeof(gpu::GpuVirtualShadow), nullptr, true, "virtual shadow block"),
       counters_(kCounterWords * sizeof(std::uint32_t), nullptr, true, "virtual page counters"),
@@ -69,8 +70,8 @@ void VirtualShadowPass::ensure_pool(int pages) {
   // Every page free, none resident.
   std::vector<std::uint32_t> free(static_cast<std::size_t>(pages));
   std::iota(free.begin(), free.end(), 0u);
-  free_list_ = gl::Buffer(free.size() * sizeof(std::uint32_t), free.data(), true,
-                          "virtual page free list");
+  free_list_ =
+      gl::Buffer(free.size() * sizeof(std::uint32_t), free.data(), true, "virtual page free list");
   const std::uint32_t counters[kCounterWords] = {static_cast<std::uint32_t>(pages), 0, 0, 0};
   counters_.update(counters, sizeof counters);
   const GLuint zero = 0;
@@ -133,7 +134,8 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
     if (same) {
       const VirtualLevel& before = previous_levels_[static_cast<std::size_t>(l)];
       same = before.view.z0 == level.view.z0 && before.view.z1 == level.view.z1 &&
-             before.view.texel_world == level.view.texel_world && before.view.view == level.view.view;
+             before.view.texel_world == level.view.texel_world &&
+             before.view.view == level.view.view;
       previous = before.origin;
     }
     block_.origins[l] = glm::ivec4(level.origin, same ? 0 : 1, previous != level.origin ? 1 : 0);

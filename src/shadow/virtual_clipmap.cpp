@@ -35,8 +35,7 @@ glm::ivec2 virtual_page_slot(glm::ivec2 page) {
 VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& camera,
                                    int image_height, PositionSpan vertices,
                                    std::span<const std::uint32_t> indices,
-                                   const CasterHierarchy& bounds,
-                                   const VirtualClipmap* previous) {
+                                   const CasterHierarchy& bounds, const VirtualClipmap* previous) {
   VirtualClipmap clipmap;
   clipmap.pixel_angle = pixel_footprint_per_distance(camera, image_height);
   clipmap.camera = camera.position;
@@ -46,16 +45,17 @@ VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& came
   const float far_footprint = std::max(camera.far_plane * clipmap.pixel_angle, near_footprint);
   clipmap.texel0 = std::exp2(std::floor(std::log2(near_footprint)));
   const glm::mat4 view = cascade_light_frame(light);
-  if (previous != nullptr && !previous->levels.empty() && previous->levels.front().view.view != view) {
+  if (previous != nullptr && !previous->levels.empty() &&
+      previous->levels.front().view.view != view) {
     previous = nullptr;  // another light direction: nothing to keep
   }
   if (previous != nullptr && previous->texel0 <= near_footprint &&
       previous->texel0 * 4.0f > near_footprint) {
     clipmap.texel0 = previous->texel0;
   }
-  const int count = std::clamp(
-      static_cast<int>(std::floor(std::log2(far_footprint / clipmap.texel0))) + 1, 1,
-      kMaxVirtualLevels);
+  const int count =
+      std::clamp(static_cast<int>(std::floor(std::log2(far_footprint / clipmap.texel0))) + 1, 1,
+                 kMaxVirtualLevels);
 
   const glm::vec4 light_x = matrix_row(view, 0), light_y = matrix_row(view, 1);
   const glm::vec4 light_depth = -matrix_row(view, 2);

@@ -112,8 +112,8 @@ TEST_F(GpuTest, VirtualPagesMarkedAreThoseThePixelsRead) {
       if (surfaces.covered[i] == 0) continue;
       const glm::vec3 p = surfaces.position[i];
       const int level = virtual_level_of(clipmap, p);
-      const float f = std::log2(glm::length(p - clipmap.camera) * clipmap.pixel_angle /
-                                clipmap.texel0);
+      const float f =
+          std::log2(glm::length(p - clipmap.camera) * clipmap.pixel_angle / clipmap.texel0);
       const bool boundary = std::abs(f - std::round(f)) < 1e-3f;
       if (!boundary) add_pages(clipmap, level, p, reach - 0.5f, needed);
       add_pages(clipmap, level, p, reach + 0.5f, allowed);
@@ -159,8 +159,8 @@ TEST_F(GpuTest, VirtualPageTexelsEqualAConventionalMap) {
     const VirtualLevel& lv = clipmap.levels[static_cast<std::size_t>(level)];
     const float size = lv.view.texel_world * kVirtualPageTexels;
     LightView page_view = lv.view;
-    page_view.projection = glm::ortho(px * size, (px + 1) * size, py * size, (py + 1) * size,
-                                      lv.view.z0, lv.view.z1);
+    page_view.projection =
+        glm::ortho(px * size, (px + 1) * size, py * size, (py + 1) * size, lv.view.z0, lv.view.z1);
     page_view.view_projection = page_view.projection * page_view.view;
     gpu::GpuShadowView v = gpu_shadow_view(scene.lights.front(), page_view, shadow);
     v.depth_range.w = kVirtualPageTexels;
@@ -188,8 +188,10 @@ TEST_F(GpuTest, VirtualPageTexelsEqualAConventionalMap) {
       const float d = std::abs(expected[i] - actual[i]);
       // A texel whose centre lies on a triangle's edge may fall either side
       // of it in the two projections (they round differently).
-      if (d > 1e-5f) ++differing;
-      else largest = std::max(largest, d);
+      if (d > 1e-5f)
+        ++differing;
+      else
+        largest = std::max(largest, d);
     }
     if (covered == 0) continue;
     ++compared;
@@ -272,17 +274,17 @@ TEST_F(GpuTest, VirtualPagesAreCachedUntilACasterOverThemMoves) {
 }
 
 // Filtering across a page border has no seam: PCF windows near a border
-// read the neighbouring page through the page table. The step of the
-// shadow factor between neighbouring pixels whose lookups fall in
-// different pages of a level is no larger than between neighbours inside
-// one page (over the pixels in or beside shadow), as the cube-face seam
-// test measures (point_light_test.cpp). A lookup that read only its own
-// page (or took a missing neighbour as lit) would step at every border.
+// read the neighbouring page through the page table. The mean step of the
+// shadow factor between neighbouring ground pixels in the penumbra whose
+// lookups fall in different pages of a level is no larger than between
+// neighbours inside one page, as the cube-face seam test measures
+// (point_light_test.cpp). (A window whose neighbour page was missing would
+// read it as lit: a step of up to 1 at the border.)
 TEST_F(GpuTest, PcfHasNoSeamAcrossVirtualPageBorders) {
   Renderer renderer(sun_scene());
-  const RenderSettings render = shadow_view(256, 160);
+  const RenderSettings render = shadow_view(384, 240);
   ShadowSettings shadow = virtual_maps(Technique::Pcf);
-  shadow.pcf_width = 12.0f;
+  shadow.pcf_width = 24.0f;
   shadow.pcf_samples = 64;
   renderer.render(render, shadow);
   const Image image = renderer.read_view();
@@ -295,7 +297,8 @@ TEST_F(GpuTest, PcfHasNoSeamAcrossVirtualPageBorders) {
     const int level = virtual_level_of(clipmap, surfaces.position[i]);
     const glm::vec4 clip = clipmap.levels[static_cast<std::size_t>(level)].view.view_projection *
                            glm::vec4(surfaces.position[i], 1.0f);
-    const glm::ivec2 p = glm::ivec2(glm::floor((glm::vec2(clip) * 0.5f + 0.5f) * float(kVirtualPages)));
+    const glm::ivec2 p =
+        glm::ivec2(glm::floor((glm::vec2(clip) * 0.5f + 0.5f) * float(kVirtualPages)));
     page[i] = glm::ivec3(level, p);
   }
   double across = 0.0, inside = 0.0;
@@ -315,24 +318,25 @@ TEST_F(GpuTest, PcfHasNoSeamAcrossVirtualPageBorders) {
           continue;
         }
         const float sa = image.pixel(x, y)[0], sb = image.pixel(x + d.x, y + d.y)[0];
-        if (std::min(sa, sb) > 0.98f) continue;  // lit on both sides
+        if (std::min(sa, sb) > 0.98f || std::max(sa, sb) < 0.02f) continue;  // not penumbra
         const double step = std::abs(sa - sb);
         if (page[a] == page[b]) {
-          inside = std::max(inside, step);
+          inside += step;
           ++inside_pairs;
         } else {
-          across = std::max(across, step);
+          across += step;
           ++across_pairs;
         }
       }
     }
   }
-  ASSERT_GE(across_pairs, 20) << "shadowed neighbours across page borders";
+  ASSERT_GE(across_pairs, 20) << "penumbra neighbours across page borders";
   ASSERT_GE(inside_pairs, 200);
-  EXPECT_LE(across, inside + 0.05) << across_pairs << " pairs across borders, " << inside_pairs
-                                   << " inside pages";
-  std::printf("largest step across page borders %.3f (%d pairs), inside pages %.3f (%d pairs)\n",
+  across /= across_pairs;
+  inside /= inside_pairs;
+  std::printf("mean step across page borders %.3f (%d pairs), inside pages %.3f (%d pairs)\n",
               across, across_pairs, inside, inside_pairs);
+  EXPECT_LE(across, 1.5 * inside + 0.01);
 }
 
 }  // namespace
