@@ -39,23 +39,24 @@ VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& came
   VirtualClipmap clipmap;
   clipmap.pixel_angle = pixel_footprint_per_distance(camera, image_height);
   clipmap.camera = camera.position;
-  // Powers of two of the world's units, so that the levels' texels do not
-  // follow small changes of the camera's near plane.
-  const float near_footprint = std::max(camera.near_plane * clipmap.pixel_angle, 1e-6f);
-  const float far_footprint = std::max(camera.far_plane * clipmap.pixel_angle, near_footprint);
-  clipmap.texel0 = std::exp2(std::floor(std::log2(near_footprint)));
+  // All kMaxVirtualLevels levels, the coarsest's texel the power of two at
+  // or below the pixel's footprint at the far plane: then level 0's is at
+  // or below the footprint at any near plane the renderer fits (at least
+  // 1e-4 of the far one), and it depends on the far plane alone, which an
+  // orbiting camera changes less than the near one. Levels no pixel reads
+  // cost no pages.
+  const int count = kMaxVirtualLevels;
+  const float far_footprint = std::max(camera.far_plane * clipmap.pixel_angle, 1e-6f);
+  const float finest = far_footprint / std::exp2(static_cast<float>(count - 1));
+  clipmap.texel0 = std::exp2(std::floor(std::log2(finest)));
   const glm::mat4 view = cascade_light_frame(light);
   if (previous != nullptr && !previous->levels.empty() &&
       previous->levels.front().view.view != view) {
     previous = nullptr;  // another light direction: nothing to keep
   }
-  if (previous != nullptr && previous->texel0 <= near_footprint &&
-      previous->texel0 * 4.0f > near_footprint) {
+  if (previous != nullptr && previous->texel0 <= finest && previous->texel0 * 4.0f > finest) {
     clipmap.texel0 = previous->texel0;
   }
-  const int count =
-      std::clamp(static_cast<int>(std::floor(std::log2(far_footprint / clipmap.texel0))) + 1, 1,
-                 kMaxVirtualLevels);
 
   const glm::vec4 light_x = matrix_row(view, 0), light_y = matrix_row(view, 1);
   const glm::vec4 light_depth = -matrix_row(view, 2);

@@ -47,17 +47,17 @@ struct VirtualClipmap {
 // 2 tan(fov_y / 2) / height.
 float pixel_footprint_per_distance(const CameraFrustum& camera, int image_height);
 
-// Fits the clipmap to the camera: level 0's texel the power of two at or
-// below the footprint at the near plane, as many levels (at most
-// kMaxVirtualLevels) as reach the footprint at the far plane, each
+// Fits the clipmap to the camera: kMaxVirtualLevels levels, the
+// coarsest's texel the power of two at or below the footprint at the far
+// plane (so level 0's is below the footprint at any near plane), each
 // centred on the camera snapped to whole pages, its depth range from the
 // casters in its column (through `bounds`, built over the triangles in
 // cascade_light_frame(light)), snapped to a coarse grid as cascades' are.
 // With the `previous` frame's clipmap (of the same light), level 0's texel
 // and each level's depth range are kept while they still serve (the texel
-// no larger than the near footprint nor smaller than a quarter of it; the
+// no larger than the one fitted nor smaller than a quarter of it; the
 // range holding the new one and at most twice as deep), so that an
-// orbiting camera, whose near plane and levels' columns change a little
+// orbiting camera, whose far plane and levels' columns change a little
 // every frame, keeps its cached pages.
 VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& camera,
                                    int image_height, PositionSpan vertices,
