@@ -17,6 +17,7 @@
 #include "render/gpu_scene.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_shadow_casters.hpp"
+#include "render/virtual_page_orbit.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/mesh.hpp"
 
@@ -337,6 +338,24 @@ TEST_F(GpuTest, PcfHasNoSeamAcrossVirtualPageBorders) {
   std::printf("mean step across page borders %.3f (%d pairs), inside pages %.3f (%d pairs)\n",
               across, across_pairs, inside, inside_pairs);
   EXPECT_LE(across, 1.5 * inside + 0.01);
+}
+
+// An orbiting camera over a static scene: after the first frame, the
+// pages rendered are those that came into view, at most a tenth of those
+// allocated (penumbra bench prints the same rows).
+TEST_F(GpuTest, OrbitingCameraRendersFewVirtualPages) {
+  Renderer renderer(sun_scene());
+  const std::vector<VirtualOrbitFrame> orbit =
+      orbit_virtual_pages(renderer, shadow_view(320, 200), virtual_maps(Technique::Hard), 12, 1.0f);
+  ASSERT_EQ(orbit.size(), 12u);
+  EXPECT_EQ(orbit.front().rendered, orbit.front().resident);
+  int rendered = 0, allocated = 0;
+  for (std::size_t f = 1; f < orbit.size(); ++f) {
+    rendered += orbit[f].rendered;
+    allocated += orbit[f].resident;
+  }
+  EXPECT_GT(allocated, 0);
+  EXPECT_LE(rendered * 10, allocated) << rendered << " pages rendered of " << allocated;
 }
 
 }  // namespace
