@@ -65,6 +65,24 @@ constexpr bool supports_soft_shadows(Technique t, Filter f) {
   return f == Filter::Sat && (t == Technique::Vsm || t == Technique::Msm || t == Technique::Msm16);
 }
 
+// Where a directional light's shadow is stored: cascades (a fixed number
+// of maps along the camera's view), or a virtual clipmap of 16,384^2
+// texels per level in 128^2 pages, only the pages the camera's pixels need
+// resident in a physical pool (docs/rendering.md, "Virtual shadow maps").
+enum class ShadowMapKind { Cascades, Virtual };
+
+inline constexpr std::array<std::pair<ShadowMapKind, std::string_view>, 2> kShadowMapKindNames{{
+    {ShadowMapKind::Cascades, "cascades"},
+    {ShadowMapKind::Virtual, "virtual"},
+}};
+
+// Whether a technique reads virtual shadow maps: the depth-map techniques.
+// The moment techniques filter their maps as whole textures (a blur or a
+// summed-area table across page borders), so they stay on cascades.
+constexpr bool supports_virtual_maps(Technique t) {
+  return t == Technique::None || t == Technique::Hard || t == Technique::Pcf;
+}
+
 enum class View {
   Final,
   Shadow,
@@ -75,10 +93,11 @@ enum class View {
   Normals,
   Albedo,
   Ao,
-  Cascades
+  Cascades,
+  Pages
 };
 
-inline constexpr std::array<std::pair<View, std::string_view>, 10> kViewNames{{
+inline constexpr std::array<std::pair<View, std::string_view>, 11> kViewNames{{
     {View::Final, "final"},
     {View::Shadow, "shadow"},
     {View::ShadowReference, "shadow-reference"},
@@ -89,6 +108,7 @@ inline constexpr std::array<std::pair<View, std::string_view>, 10> kViewNames{{
     {View::Albedo, "albedo"},
     {View::Ao, "ao"},
     {View::Cascades, "cascades"},
+    {View::Pages, "pages"},
 }};
 
 // Names of on/off switches on the command line.
@@ -192,6 +212,13 @@ struct ShadowMapSettings {
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
 
+  // Directional lights: cascades, or virtual shadow maps (a clipmap of
+  // 16,384^2-texel levels in 128^2 pages, resident in a page pool). Virtual
+  // maps are drawn by penumbra's renderer; ShadowMaps draws cascades.
+  ShadowMapKind shadow_maps = ShadowMapKind::Cascades;
+  // Virtual shadow maps: the physical page pool's size in MiB of 32-bit
+  // depth (64 KiB a page). 48: the memory of 3 cascades of 2048^2.
+  int page_pool_mib = 48;
   // Directional lights: shadow cascades along the camera's view (1-4).
   int cascades = 3;
   // Split scheme of the cascades: the blend lambda log + (1 - lambda)
@@ -444,7 +471,11 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowF
      0.5f, &ShadowMapSettings::cascade_blend, OptionGroup::Lights},
 }};
 
-inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 7> kShadowIntParams{{
+// The page pool's largest size: 2048 pages of 64 KiB, the layers every
+// GL 4.5 device allows an array texture.
+inline constexpr int kMaxPagePoolMib = 128;
+
+inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 8> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowMapSettings::map_size, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
@@ -460,6 +491,10 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 7> kShadowIntP
      kMaxShadowSamples, &ShadowMapSettings::pcss_filter_samples, OptionGroup::Technique},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
      &ShadowMapSettings::cascades, OptionGroup::Lights},
+    {"page-pool-mib",
+     "--shadow-maps virtual: the physical page pool in MiB (64 KiB of 32-bit depth a 128^2 "
+     "page; 48 is the memory of 3 cascades of 2048^2)",
+     1, kMaxPagePoolMib, &ShadowMapSettings::page_pool_mib, OptionGroup::Lights},
     {"shadow-anisotropy",
      "--shadow-mips: most anisotropic filtering along the pixel's footprint (up to the device's "
      "limit; llvmpipe: 1); 1: trilinear only",

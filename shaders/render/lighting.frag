@@ -7,8 +7,10 @@
 // (FILTER_*), MSM_QUANTIZED (0/1: moments in the quantization basis),
 // SOFT_SHADOWS (0/1: penumbra-sized filters from the summed-area table),
 // SHADOW_MIPS (0/1: the filtered map has a mip chain, read over the
-// pixel's footprint).
+// pixel's footprint), VIRTUAL_SHADOWS (0/1: the light virtual_shadow.counts.x
+// reads virtual shadow maps, shaders/shadow/virtual_shadow.glsl).
 #include "../common/uniforms.glsl"
+#include "../common/world_position.glsl"
 #include "../shadow/lookup.glsl"
 #include "../shadow/view_select.glsl"
 #include "../shadow/hard.glsl"
@@ -25,6 +27,9 @@
 #include "../shadow/soft_moments.glsl"
 #include "../shadow/accumulate.glsl"
 #include "../shadow/backprojection.glsl"
+#if VIRTUAL_SHADOWS
+#include "../shadow/virtual_shadow.glsl"
+#endif
 #include "terminator_offset.glsl"
 #include "camera_depth.glsl"
 
@@ -61,11 +66,6 @@ in vec2 v_uv;
 layout(r32ui, binding = IMAGE_OUTPUT) uniform uimage2D backprojection_fetch_counts;
 #endif
 layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
-
-vec3 world_position(ivec2 pixel, float depth) {
-  vec2 ndc = (vec2(pixel) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
-  return position_from_depth(frame.inverse_view_projection, ndc, depth);
-}
 
 // What one pixel covers of the receiver: the world offsets from the
 // pixel's point to where the camera rays through the next pixel in x and
@@ -336,6 +336,11 @@ float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotatio
   return 1.0;
 #else
   GpuLight light = lights[i];
+#if VIRTUAL_SHADOWS
+  if (i == virtual_shadow.counts.x) {
+    return virtual_shadow_factor(shadow_params, light, world, normal, rotation);
+  }
+#endif
   ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
   // One call site in a loop over the one or two views: the technique's
   // code is inlined once, not twice (half the shader).
@@ -479,6 +484,30 @@ void main() {
                   (selected.blend == 0.0 ||
                    shadow_lookup(shadow_views[selected.next], world, n, 0.0).inside);
     out_color = vec4(inside ? view_colour(shown - light.views.x) : vec3(0.0), 1.0);
+    return;
+  }
+  if (view == VIEW_PAGES) {
+    // The virtual page the chosen light's lookup reads here: a colour per
+    // clipmap level, bright where the page was rendered this frame, dark
+    // where it was cached; page borders as thin dark lines; black where no
+    // page holds the point (or the light has no virtual maps).
+    vec3 colour = vec3(0.0);
+#if VIRTUAL_SHADOWS
+    if (frame.options.z == virtual_shadow.counts.x) {
+      int level = virtual_resident_level(world);
+      if (level >= 0) {
+        vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world) * float(VIRTUAL_PAGES);
+        uint entry = virtual_page_entry(level, ivec2(floor(uv)));
+        // Hues around the wheel, one per level.
+        vec3 hue = clamp(abs(fract(float(level) * 0.2 + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0,
+                         0.0, 1.0);
+        colour = (entry & PAGE_RENDERED) != 0u ? mix(hue, vec3(1.0), 0.15) : 0.4 * hue;
+        vec2 border = min(fract(uv), 1.0 - fract(uv)) * float(VIRTUAL_PAGE_TEXELS);
+        if (min(border.x, border.y) < 1.0) colour *= 0.25;
+      }
+    }
+#endif
+    out_color = vec4(colour, 1.0);
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {

@@ -10,6 +10,7 @@
 #define BINDING_PASS_UBO 3
 #define BINDING_SSAO_UBO 4
 #define BINDING_SHADOW_VIEWS_UBO 5
+#define BINDING_VIRTUAL_UBO 6  // GpuVirtualShadow: a directional light's virtual clipmap
 
 // Storage buffers
 #define BINDING_MATERIALS_SSBO 0
@@ -17,6 +18,13 @@
 #define BINDING_POISSON_SSBO 2
 #define BINDING_SCENE_VERTICES_SSBO 3  // the scene's vertices (GpuScene), read by triangle
 #define BINDING_SCENE_INDICES_SSBO 4   // and its indices, three per triangle
+// Virtual shadow maps (src/render/virtual_shadow_pass.hpp): the page
+// counters (VirtualPageCounters), the free list of pool pages, the list of
+// pages to render, and the indirect draw commands.
+#define BINDING_VIRTUAL_COUNTERS_SSBO 5
+#define BINDING_VIRTUAL_FREE_LIST_SSBO 6
+#define BINDING_VIRTUAL_RENDER_LIST_SSBO 7
+#define BINDING_VIRTUAL_COMMANDS_SSBO 8
 // The vertices' layout in that buffer, in floats (src/scene/mesh.hpp:
 // Vertex, whose offsets src/render/gpu_scene.cpp checks against these).
 #define SCENE_VERTEX_FLOATS 10
@@ -40,6 +48,10 @@
 #define UNIT_SHADOW_DEPTH 8     // z-bar depth maps
 #define UNIT_SHADOW_FILTERED 9  // the filtered representations (or summed-area tables)
 #define UNIT_SHADOW_COMPARE 10  // the depth maps with a comparison sampler
+// Virtual shadow maps: the page table (usampler2DArray, one layer per
+// level) and the physical page pool (a depth array, one layer per page).
+#define UNIT_VIRTUAL_PAGE_TABLE 11
+#define UNIT_VIRTUAL_POOL 12
 #define UNIT_COMPUTE_INPUT 0
 #define UNIT_PRESENT_SOURCE 0
 
@@ -55,6 +67,18 @@
 #define MAX_SHADOW_VIEWS 24
 // Cascades of a directional light.
 #define MAX_CASCADES 4
+
+// Virtual shadow maps: texels per page side, pages per level side (a
+// level is 16,384^2 virtual texels), most clipmap levels.
+#define VIRTUAL_PAGE_TEXELS 128
+#define VIRTUAL_PAGES 128
+#define MAX_VIRTUAL_LEVELS 16
+// A page-table entry: the pool page's index in the low bits, and flags.
+#define PAGE_INDEX_MASK 0xffffu
+#define PAGE_RESIDENT 0x80000000u   // the pool page holds the page's depths
+#define PAGE_REQUESTED 0x40000000u  // a pixel of this frame reads it (marking)
+#define PAGE_RENDERED 0x20000000u   // drawn this frame (else cached)
+#define PAGE_DIRTY 0x10000000u      // a caster over it moved: draw it again
 
 // Widest PCF / PCSS window, in texels.
 #define MAX_PCF_WIDTH 128
@@ -87,6 +111,7 @@
 #define VIEW_SHADOW_REFERENCE 4
 #define VIEW_AO 5
 #define VIEW_CASCADES 6  // the cascade (or cube face) each pixel reads, as a colour
+#define VIEW_PAGES 7     // the virtual page each pixel reads: its level, cached or rendered
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 // (the filterable ones, from TECHNIQUE_VSM on, last)

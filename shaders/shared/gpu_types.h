@@ -134,6 +134,25 @@ struct GpuSsao {
   float unused1;
 };
 
+// A directional light's virtual shadow maps (src/shadow/virtual_clipmap.hpp):
+// one orthographic view per clipmap level over its 128 x 128 pages.
+struct GpuVirtualShadow {
+  GpuShadowView levels[MAX_VIRTUAL_LEVELS];
+  // xy: the world page of level l's first page; z: 1 when the level's
+  // pages are stale as a whole (its texel or depth range changed); w: 1
+  // when its origin moved (pages that scrolled out are freed).
+  ivec4 origins[MAX_VIRTUAL_LEVELS];
+  // The origins of the last frame, for the pages that scrolled out.
+  ivec4 previous_origins[MAX_VIRTUAL_LEVELS];
+  vec4 camera;  // xyz: where footprints are measured from; w: footprint per unit distance
+  // x: level 0's texel (world units); y: texels a lookup reads around its
+  // own (normal offset, filter, bilinear taps, margin); zw: unused
+  vec4 params;
+  // x: the light that reads virtual maps (-1: none); y: level count;
+  // z: pool pages; w: caster draw commands (one per batch)
+  ivec4 counts;
+};
+
 // The shadow core's one block for an engine's shaders (include/penumbra/
 // shadow_block.hpp documents it; shaders/shadow/penumbra_shadows.glsl
 // reads it): the parameters, the camera that picks cascades, every light's

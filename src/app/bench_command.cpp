@@ -28,6 +28,7 @@
 #include "render/device_bandwidth.hpp"
 #include "render/pass_timing.hpp"
 #include "render/renderer.hpp"
+#include "render/virtual_page_orbit.hpp"
 #include "scene/scene_file.hpp"
 
 namespace penumbra {
@@ -73,6 +74,9 @@ std::string describe(const ShadowSettings& s) {
     out << " (" << format_name(representation_format(s.technique)) << ")";
   }
   out << ", map " << s.map_size;
+  if (s.shadow_maps == ShadowMapKind::Virtual) {
+    out << ", virtual maps for the sun (pool " << s.page_pool_mib << " MiB)";
+  }
   if (s.accumulate > 1) out << ", accumulate " << s.accumulate << " (a frame is one sub-frame)";
   return out.str();
 }
@@ -150,6 +154,8 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
   j["blur"] = s.blur;
   j["soft"] = s.soft;
   j["shadow_map_size"] = s.map_size;
+  j["shadow_maps"] = std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, s.shadow_maps));
+  j["page_pool_mib"] = s.page_pool_mib;
   j["fused"] = is_filterable(s.technique) && uses_fused_filter(s);
   j["shadow_mips"] = uses_shadow_mips(s);
   if (is_filterable(s.technique)) {
@@ -238,6 +244,33 @@ nlohmann::json cached_json(const CachedShadowTimes& cached, int frames, bool tim
           {"moving_views_drawn", cached.moving_views}};
 }
 
+// The virtual shadow maps' pages under an orbiting camera: frames of the
+// orbit, and degrees a frame.
+constexpr int kOrbitFrames = 24;
+constexpr float kOrbitDegrees = 1.0f;
+
+void print_orbit(const std::vector<VirtualOrbitFrame>& orbit) {
+  std::printf("  virtual pages, camera orbiting %.0f degree a frame (pool %d pages):\n",
+              static_cast<double>(kOrbitDegrees), orbit.empty() ? 0 : orbit.front().pool_pages);
+  std::printf("  %-6s %10s %10s %9s %10s\n", "frame", "allocated", "rendered", "rendered%",
+              "pool used%");
+  for (std::size_t f = 0; f < orbit.size(); ++f) {
+    const VirtualOrbitFrame& o = orbit[f];
+    std::printf("  %-6zu %10d %10d %8.1f%% %9.1f%%\n", f, o.resident, o.rendered,
+                o.resident > 0 ? 100.0 * o.rendered / o.resident : 0.0,
+                o.pool_pages > 0 ? 100.0 * o.resident / o.pool_pages : 0.0);
+  }
+}
+
+nlohmann::json orbit_json(const std::vector<VirtualOrbitFrame>& orbit) {
+  nlohmann::json frames = nlohmann::json::array();
+  for (const VirtualOrbitFrame& o : orbit) {
+    frames.push_back(
+        {{"allocated", o.resident}, {"rendered", o.rendered}, {"pool_pages", o.pool_pages}});
+  }
+  return {{"degrees_per_frame", kOrbitDegrees}, {"frames", frames}};
+}
+
 // How long the whole plan will take, before it starts: two frames of the
 // first configuration, the first of which compiles its shaders as every
 // configuration's first frame does; the rest are frames like the second.
@@ -289,6 +322,12 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
              "filter of the vsm, esm, msm, msm16, evsm2 and evsm4 maps: a separable Gaussian, or a "
              "summed-area table",
              filter_names(), OptionGroup::Filter);
+  args.named.shadow_maps =
+      std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, args.shadow.shadow_maps));
+  add_choice(command, "shadow-maps", args.named.shadow_maps,
+             "directional lights: cascades, or virtual shadow maps (pages allocated and rendered "
+             "per frame, pool occupancy)",
+             shadow_map_kind_names(), OptionGroup::Lights);
   add_shadow_parameters(command, args.shadow);
   add_accumulate_option(command, args.shadow);
   command.footer(examples_footer({
@@ -338,6 +377,7 @@ int run_bench_command(BenchArgs& args) {
   ProgressBar progress("bench");
   std::vector<PassTimes> runs;
   std::vector<std::optional<CachedShadowTimes>> cached_runs;
+  std::vector<std::optional<std::vector<VirtualOrbitFrame>>> orbits;
   const std::optional<std::size_t> moving = movable_shape(scene);
   const int cached_frames = std::min(args.frames, kMaxCachedFrames);
   // Backprojection's texel reads per pixel {min, mean, max}: its work is
@@ -362,6 +402,12 @@ int run_bench_command(BenchArgs& args) {
       print_cached(*cached, cached_frames, timer_clock);
     }
     cached_runs.push_back(cached);
+    std::optional<std::vector<VirtualOrbitFrame>> orbit;
+    if (settings.shadow_maps == ShadowMapKind::Virtual && renderer.virtual_light() >= 0) {
+      orbit = orbit_virtual_pages(renderer, args.render, settings, kOrbitFrames, kOrbitDegrees);
+      print_orbit(*orbit);
+    }
+    orbits.push_back(orbit);
     if (settings.technique == Technique::Backprojection) {
       fetches[i] = renderer.count_backprojection_fetches(args.render, settings);
       std::printf("  backprojection fetches per pixel: min %.0f, mean %.1f, max %.0f\n",
@@ -394,6 +440,7 @@ int run_bench_command(BenchArgs& args) {
       run["cached_shadow_maps"] = cached_runs[i]
                                       ? cached_json(*cached_runs[i], cached_frames, timer_clock)
                                       : nlohmann::json(nullptr);
+      run["virtual_pages"] = orbits[i] ? orbit_json(*orbits[i]) : nlohmann::json(nullptr);
       if (fetches[i]) {
         run["fetches_per_pixel"] = {
             {"min", (*fetches[i])[0]}, {"mean", (*fetches[i])[1]}, {"max", (*fetches[i])[2]}};

@@ -77,6 +77,8 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   add_changed_name(args, "technique", command.shadow.technique, shadow_defaults.technique,
                    kTechniqueNames);
   add_changed_name(args, "filter", command.shadow.filter, shadow_defaults.filter, kFilterNames);
+  add_changed_name(args, "shadow-maps", command.shadow.shadow_maps, shadow_defaults.shadow_maps,
+                   kShadowMapKindNames);
   add_changed_name(args, "view", command.render.view, render_defaults.view, kViewNames);
   add_changed(args, command.render, kRenderIntParams);
   add_changed(args, command.shadow, kShadowIntParams);

@@ -90,6 +90,10 @@ std::vector<std::string> filter_names() {
   return names_of(kFilterNames);
 }
 
+std::vector<std::string> shadow_map_kind_names() {
+  return names_of(kShadowMapKindNames);
+}
+
 std::vector<Technique> parse_technique_list(const std::string& list, const std::string& flag) {
   std::vector<Technique> all;
   for (const auto& [t, name] : kTechniqueNames) {
@@ -113,6 +117,13 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
              "filter of the vsm, esm, msm, msm16, evsm2 and evsm4 maps: a separable Gaussian, or a "
              "summed-area table",
              filter_names(), OptionGroup::Filter);
+  named.shadow_maps =
+      std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, settings.shadow_maps));
+  add_choice(app, "shadow-maps", named.shadow_maps,
+             "directional lights: cascades, or virtual shadow maps (a clipmap of 16384^2-texel "
+             "levels in 128^2 pages, the pages the image needs rendered into --page-pool-mib; "
+             "hard and pcf)",
+             shadow_map_kind_names(), OptionGroup::Lights);
   add_shadow_parameters(app, settings);
 }
 
@@ -151,7 +162,9 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
              "(shadow-map) or the technique's map before and after its filter (moments, "
              "moments-filtered), a light's several views tiled; the G-buffer (normals, albedo); "
              "the ambient occlusion (ao); the cascade or cube face each pixel reads (cascades: "
-             "red, green, blue, yellow, magenta, cyan for 0-5, black for none)",
+             "red, green, blue, yellow, magenta, cyan for 0-5, black for none); the virtual "
+             "page each pixel reads (pages, --shadow-maps virtual: a colour per clipmap level, "
+             "bright where the page was rendered this frame, dark where cached)",
              names_of(kViewNames), OptionGroup::Output);
   add_render_parameters(app, settings);
 }
@@ -166,6 +179,10 @@ void parse_named_options(const NamedOptions& named, ShadowSettings& shadow,
                          RenderSettings& render) {
   shadow.technique = parse_name(named.technique, "--technique", "technique", kTechniqueNames);
   shadow.filter = parse_name(named.filter, "--filter", "filter", kFilterNames);
+  if (!named.shadow_maps.empty()) {
+    shadow.shadow_maps =
+        parse_name(named.shadow_maps, "--shadow-maps", "shadow-map kind", kShadowMapKindNames);
+  }
   render.view = parse_name(named.view, "--view", "view", kViewNames);
 }
 

@@ -16,6 +16,7 @@ struct NamedOptions {
   std::string technique;
   std::string filter;
   std::string view;
+  std::string shadow_maps;
 };
 
 void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& named);
@@ -33,6 +34,7 @@ void add_reference_options(CLI::App& app, ReferenceSettings& settings);
 // The names a technique, filter or view option accepts.
 std::vector<std::string> technique_names();
 std::vector<std::string> filter_names();
+std::vector<std::string> shadow_map_kind_names();
 
 // "all" or a comma-separated list of names, for commands that take several
 // techniques (all: every one but none) or filters; `flag` names the option

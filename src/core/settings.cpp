@@ -62,6 +62,13 @@ void validate(const ShadowMapSettings& settings) {
         "(1e-35 to 1e35 at c = 40), far beyond the 17 bits per texel a 32-bit summed-area table "
         "keeps; use --filter gaussian, or vsm/msm/msm16 with sat");
   }
+  if (settings.shadow_maps == ShadowMapKind::Virtual &&
+      !supports_virtual_maps(settings.technique)) {
+    throw UsageError(
+        "--shadow-maps virtual needs --technique hard or pcf: the other techniques filter or "
+        "search their maps as whole textures (moments blurred or summed across page borders), "
+        "so they use --shadow-maps cascades");
+  }
 }
 
 void validate(const RenderSettings& settings) {

@@ -234,6 +234,36 @@ void GpuScene::update_vertices(std::size_t first, std::span<const Vertex> vertic
   vertices_.update(vertices.data(), vertices.size_bytes(), first * sizeof(Vertex));
 }
 
+void GpuScene::draw_indirect(SurfaceSet set, std::size_t offset) const {
+  glBindVertexArray(vao_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS_SSBO, materials_.id());
+  for (std::size_t b = 0; b < batches_.size(); ++b) {
+    const Batch& batch = batches_[b];
+    if (batch.index_count == 0) continue;
+    if ((set == SurfaceSet::Opaque && batch.cut_out) ||
+        (set == SurfaceSet::CutOut && !batch.cut_out)) {
+      continue;
+    }
+    glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
+    glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
+    glBindTextureUnit(UNIT_BASE_ALPHA, batch.texture->id());
+    glBindSampler(UNIT_BASE_ALPHA, batch.alpha_sampler->id());
+    glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(offset + b * 5 * sizeof(std::uint32_t)));
+  }
+  glBindSampler(UNIT_BASE_COLOR, 0);
+  glBindSampler(UNIT_BASE_ALPHA, 0);
+}
+
+std::vector<std::uint32_t> GpuScene::indirect_commands() const {
+  std::vector<std::uint32_t> commands;
+  for (const Batch& batch : batches_) {
+    commands.insert(commands.end(), {static_cast<std::uint32_t>(batch.index_count), 0u,
+                                     static_cast<std::uint32_t>(batch.first_index), 0u, 0u});
+  }
+  return commands;
+}
+
 void GpuScene::draw(SurfaceSet set, Corners corners) const {
   glBindVertexArray(vao_.id());
   if (corners == Corners::Read) {

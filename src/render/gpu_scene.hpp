@@ -47,6 +47,14 @@ class GpuScene {
   // LOCATION_FIRST_INDEX.
   enum class Corners { Unread, Read };
   void draw(SurfaceSet set = SurfaceSet::All, Corners corners = Corners::Unread) const;
+  // The same with glDrawElementsIndirect: batch b's command is the
+  // DrawElementsIndirectCommand at byte `offset` + 20 b of the buffer bound
+  // to GL_DRAW_INDIRECT_BUFFER (indirect_commands() gives their first
+  // index and count; the instance count is the caller's).
+  void draw_indirect(SurfaceSet set, std::size_t offset) const;
+  // One DrawElementsIndirectCommand {count, instance count 0, first index,
+  // base vertex 0, base instance 0} per batch, in draw_indirect()'s order.
+  [[nodiscard]] std::vector<std::uint32_t> indirect_commands() const;
   // Replaces vertices [first, first + vertices.size()) (a shape moved).
   void update_vertices(std::size_t first, std::span<const Vertex> vertices);
   [[nodiscard]] std::size_t triangle_count() const { return index_count_ / 3; }

@@ -24,7 +24,8 @@ const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
   const auto key =
       std::make_tuple(technique_define(settings.technique), filter_define(settings), settings.soft,
                       uses_shadow_mips(settings),
-                      fetch_counts_ != 0 && settings.technique == Technique::Backprojection);
+                      fetch_counts_ != 0 && settings.technique == Technique::Backprojection,
+                      settings.shadow_maps == ShadowMapKind::Virtual);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(std::get<0>(key))},
@@ -32,7 +33,8 @@ const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
                            {"MSM_QUANTIZED", uses_quantized_moments(settings) ? "1" : "0"},
                            {"SOFT_SHADOWS", settings.soft ? "1" : "0"},
                            {"SHADOW_MIPS", std::get<3>(key) ? "1" : "0"},
-                           {"BACKPROJECTION_COUNT_FETCHES", std::get<4>(key) ? "1" : "0"}};
+                           {"BACKPROJECTION_COUNT_FETCHES", std::get<4>(key) ? "1" : "0"},
+                           {"VIRTUAL_SHADOWS", std::get<5>(key) ? "1" : "0"}};
     it = programs_
              .emplace(key, gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
                                                  defines))

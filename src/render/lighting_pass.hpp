@@ -39,7 +39,7 @@ class LightingPass {
 
   // One per (technique, filter, soft, mips, counting fetches) combination,
   // compiled on first use.
-  std::map<std::tuple<int, int, bool, bool, bool>, gl::Program> programs_;
+  std::map<std::tuple<int, int, bool, bool, bool, bool>, gl::Program> programs_;
   GLuint fetch_counts_ = 0;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;

@@ -87,6 +87,8 @@ int view_define(View view) {
       return VIEW_AO;
     case View::Cascades:
       return VIEW_CASCADES;
+    case View::Pages:
+      return VIEW_PAGES;
     default:
       return VIEW_FINAL;
   }
@@ -145,6 +147,7 @@ void Renderer::move_shape(std::size_t shape, const glm::vec3& offset) {
   gpu_scene_.update_vertices(first, std::span<const Vertex>(mesh_.vertices).subspan(first, count));
   const Bounds after = shape_bounds(shape);
   shadow_cache_.caster_moved({before.min, before.max}, {after.min, after.max});
+  virtual_pass_.caster_moved(before.min, before.max, after.min, after.max);
   bounds_ = mesh_.bounds();
   // Every fit read the old position: the lights' views, the camera's
   // depth range, and the G-buffer drawn from it.
@@ -246,6 +249,17 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if (render.view == View::Ao && !ssao.enabled) {
     throw UsageError("--view ao needs --ssao on");
   }
+  const bool virtual_maps = shadow.shadow_maps == ShadowMapKind::Virtual;
+  if (virtual_maps && is_map_view(render.view)) {
+    throw UsageError("--view " + std::string(enum_name<View>(kViewNames, render.view)) +
+                     " shows whole shadow maps; with --shadow-maps virtual use --view pages");
+  }
+  if (render.view == View::Pages && !virtual_maps) {
+    throw UsageError("--view pages needs --shadow-maps virtual");
+  }
+  if (virtual_maps && shadow.accumulate > 1) {
+    throw UsageError("--accumulate needs --shadow-maps cascades");
+  }
   const bool ambient_occlusion =
       ssao.enabled && (render.view == View::Final || render.view == View::Ao);
   last_render_ = render;
@@ -279,6 +293,27 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   }
   lights_ubo_.update(lights, sizeof lights);
   views_ubo_.update(views, sizeof views);
+  // Virtual maps for the first directional light (its cascade views stay
+  // in the block, undrawn); the others keep their views.
+  virtual_light_ = -1;
+  if (virtual_maps) {
+    for (int i = 0; i < light_count && virtual_light_ < 0; ++i) {
+      if (scene_.lights[static_cast<std::size_t>(i)].type == LightType::Directional)
+        virtual_light_ = i;
+    }
+  }
+  if (virtual_light_ >= 0) {
+    const Light& light = scene_.lights[static_cast<std::size_t>(virtual_light_)];
+    virtual_clipmap_ = fit_virtual_clipmap(
+        light, camera, render.height, PositionSpan(mesh_.vertices), mesh_.indices,
+        caster_bounds_.bounds(PositionSpan(mesh_.vertices), mesh_.indices,
+                              cascade_light_frame(light)),
+        &virtual_clipmap_);
+  }
+  if (maps_kind_for_ != shadow.shadow_maps) {
+    shadow_cache_.invalidate();
+    maps_kind_for_ = shadow.shadow_maps;
+  }
 
   gpu::GpuFrame frame{};
   frame.view = camera_view();
@@ -305,11 +340,29 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
   shadow_views_drawn_ = 0;
   std::span<const std::uint8_t> stale;
+  if (shadows && virtual_light_ >= 0) {
+    // Marking reads the camera's depth: the G-buffer first.
+    ensure_gbuffer(frame, render, profiler);
+    gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
+    virtual_pass_.execute(virtual_light_, scene_.lights[static_cast<std::size_t>(virtual_light_)],
+                          virtual_clipmap_, shadow, gbuffer_pass_, gpu_scene_);
+    virtual_pass_.bind();
+  }
   if (shadows) {
-    // Only the views whose depths changed (view_cache.hpp).
+    // Only the views whose depths changed (view_cache.hpp); a light with
+    // virtual maps draws none of its views.
     stale = shadow_cache_.stale_views(
         std::span<const gpu::GpuShadowView>(views, static_cast<std::size_t>(view_count_)),
         shadow.map_size);
+    if (virtual_light_ >= 0) {
+      stale_without_virtual_.assign(stale.begin(), stale.end());
+      stale_without_virtual_.resize(static_cast<std::size_t>(view_count_), 1);
+      const auto light = static_cast<std::size_t>(virtual_light_);
+      for (std::size_t v = 0; v < light_views_[light].views.size(); ++v) {
+        stale_without_virtual_[static_cast<std::size_t>(first_views_[light]) + v] = 0;
+      }
+      stale = stale_without_virtual_;
+    }
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
     const std::span<const gpu::GpuShadowView> drawn(views, static_cast<std::size_t>(view_count_));
     shadow_views_drawn_ = shadow_pass_.execute(
@@ -393,13 +446,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   gbuffer_current_ = !is_map_view(render.view);
   if (gbuffer_current_) {
     last_view_projection_ = frame.projection * frame.view;
-    const SurfaceKey surfaces{frame.view, frame.projection, render.width, render.height};
-    if (gbuffer_for_ != surfaces) {
-      gl::GpuPassScope timed(profiler, gl::GpuPass::GBuffer);
-      gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
-      gbuffer_for_ = surfaces;
-      ao_for_.reset();
-    }
+    ensure_gbuffer(frame, render, profiler);
     GLuint ao = 0;
     if (ambient_occlusion) {
       if (ao_for_ != ssao) {
@@ -417,6 +464,17 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     last_filtered_ = filtered_id;
     last_ao_ = ao;
     last_shadows_ = shadows;
+  }
+}
+
+void Renderer::ensure_gbuffer(const gpu::GpuFrame& frame, const RenderSettings& render,
+                              gl::GpuProfiler* profiler) {
+  const SurfaceKey surfaces{frame.view, frame.projection, render.width, render.height};
+  if (gbuffer_for_ != surfaces) {
+    gl::GpuPassScope timed(profiler, gl::GpuPass::GBuffer);
+    gbuffer_pass_.execute(gpu_scene_, render.width, render.height);
+    gbuffer_for_ = surfaces;
+    ao_for_.reset();
   }
 }
 
@@ -454,6 +512,7 @@ void Renderer::shade(View view) {
   last_frame_.options.w = ambient_occlusion ? 1 : 0;
   frame_ubo_.update(&last_frame_, sizeof last_frame_);
   bind_frame_blocks();
+  if (last_shadow_.shadow_maps == ShadowMapKind::Virtual) virtual_pass_.bind();
   if (view == View::ShadowReference) bind_reference_weights(last_shadow_);
   lighting_pass_.execute(gbuffer_pass_, last_shadows_ ? &shadow_pass_.depth_maps() : nullptr,
                          last_filtered_, last_shadow_, ambient_occlusion ? last_ao_ : 0,

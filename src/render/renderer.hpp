@@ -30,6 +30,7 @@
 #include "render/ssao_pass.hpp"
 #include "render/surface_points.hpp"
 #include "render/view_tiling_pass.hpp"
+#include "render/virtual_shadow_pass.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -93,9 +94,18 @@ class Renderer {
   void forget_shadow_maps() {
     shadow_cache_.invalidate();
     filtered_for_.reset();
+    virtual_pass_.invalidate();
   }
   // The shadow views the last render() drew (0: the maps were cached).
   [[nodiscard]] int shadow_views_drawn() const { return shadow_views_drawn_; }
+  // --shadow-maps virtual: the light that reads virtual maps in the last
+  // render() (the first directional light; -1: none), its clipmap, and the
+  // pass that holds its page table and pool.
+  [[nodiscard]] int virtual_light() const { return virtual_light_; }
+  [[nodiscard]] const VirtualClipmap& virtual_clipmap() const { return virtual_clipmap_; }
+  [[nodiscard]] const VirtualShadowPass& virtual_shadows() const { return virtual_pass_; }
+  // Its pages after the last render(), read back from the GPU (benchmarks, tests).
+  [[nodiscard]] VirtualPageStats virtual_page_stats() const { return virtual_pass_.read_stats(); }
 
   // Moves scene shape `shape` by `offset` (world units): its vertices on
   // the CPU and the GPU, the lights' fits, and the shadow views that see it
@@ -191,6 +201,11 @@ class Renderer {
   SsaoPass ssao_pass_;
   LightingPass lighting_pass_;
   ViewTilingPass tiling_pass_;
+  VirtualShadowPass virtual_pass_;
+  VirtualClipmap virtual_clipmap_;
+  int virtual_light_ = -1;
+  // The kind of maps the shadow views' cache holds (a switch redraws them).
+  std::optional<ShadowMapKind> maps_kind_for_;
   gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_, views_ubo_;
   gl::Buffer reference_weights_;
   gl::Buffer poisson_;  // the PCF/PCSS sample set (std430 vec2 array)
@@ -199,6 +214,9 @@ class Renderer {
   // reads (render() fills them; shade() reuses them).
   void bind_frame_blocks();
   void bind_reference_weights(const ShadowSettings& shadow);
+  // Draws the camera's G-buffer unless it holds this frame's surfaces.
+  void ensure_gbuffer(const gpu::GpuFrame& frame, const RenderSettings& render,
+                      gl::GpuProfiler* profiler);
   // Each light's views and the camera's depth range are kept and refitted
   // only when what they depend on changes (the geometry: only through
   // move_shape(), which also forgets the caster bounds below).
@@ -219,6 +237,9 @@ class Renderer {
   int view_count_ = 0;
   // What the shadow maps and the filtered maps hold (forget_shadow_maps()).
   ViewCache shadow_cache_;
+  // The stale views less those of the light with virtual maps (kept to
+  // allocate nothing per frame).
+  std::vector<std::uint8_t> stale_without_virtual_;
   std::optional<ShadowSettings> filtered_for_;
   int shadow_views_drawn_ = 0;
   RenderSettings last_render_;

@@ -272,6 +272,10 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
                    "filter of the vsm/esm/msm/msm16/evsm2/evsm4 maps: separable Gaussian or "
                    "summed-area table");
     }
+    if (offer("shadow-maps")) {
+      choice_combo(state, "shadow-maps", state.shadow.shadow_maps, kShadowMapKindNames,
+                   "directional lights: cascades, or virtual shadow maps (hard, pcf)");
+    }
     for (const auto& p : kShadowFlagParams) {
       if (!offer(p.name)) continue;
       bool value = state.shadow.*(p.field);

@@ -108,6 +108,9 @@ bool set_flag(ViewerState& state, std::string_view name, bool value) {
 bool set_choice(ViewerState& state, std::string_view name, std::string_view value) {
   if (name == "technique") return set_from_table(state.shadow.technique, kTechniqueNames, value);
   if (name == "filter") return set_from_table(state.shadow.filter, kFilterNames, value);
+  if (name == "shadow-maps") {
+    return set_from_table(state.shadow.shadow_maps, kShadowMapKindNames, value);
+  }
   if (name == "view") return set_from_table(state.render.view, kViewNames, value);
   if (name == "ssao") return set_from_table(state.ssao.enabled, kOnOffNames, value);
   for (const auto& p : kShadowSwitchParams) {
@@ -184,6 +187,18 @@ FrameInput frame_input(const ViewerState& state, int width, int height, int max_
   if (r.view == View::Ao && !f.ssao.enabled) {
     f.notes.push_back("ao: SSAO is off; showing final");
     r.view = View::Final;
+  }
+  if (s.shadow_maps == ShadowMapKind::Virtual && !supports_virtual_maps(s.technique)) {
+    s.shadow_maps = ShadowMapKind::Cascades;
+    f.notes.push_back("shadow maps: cascades (virtual maps serve hard and pcf)");
+  }
+  if (s.shadow_maps == ShadowMapKind::Virtual && is_map_view(r.view)) {
+    f.notes.push_back(name_of(r.view) + ": virtual maps have no whole map; showing pages");
+    r.view = View::Pages;
+  }
+  if (r.view == View::Pages && s.shadow_maps != ShadowMapKind::Virtual) {
+    f.notes.push_back("pages: the maps are cascades; showing cascades");
+    r.view = View::Cascades;
   }
   return f;
 }

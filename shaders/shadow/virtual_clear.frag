@@ -1,0 +1,2 @@
+// Virtual shadow maps: the clearing triangle writes depth only.
+void main() {}

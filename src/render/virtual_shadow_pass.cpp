@@ -1,0 +1,247 @@
+#include "render/virtual_shadow_pass.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "penumbra/shadow/shadow_block_data.hpp"
+#include "penumbra/shared/bindings.h"
+
+namespace penumbra {
+
+static_assert(sizeof(gpu::GpuVirtualShadow) ==
+                  MAX_VIRTUAL_LEVELS * (sizeof(gpu::GpuShadowView) + 2 * 16) + 3 * 16,
+              "GpuVirtualShadow must match std140");
+
+namespace {
+
+// The counters' words (virtual_allocate.comp).
+constexpr std::size_t kFreeCount = 0, kRendered = 2, kUnserved = 3, kCounterWords = 4;
+// The clearing draw's command comes first in the command buffer, then the
+// batches' (5 words each).
+constexpr std::size_t kClearCommandWords = 4;
+
+gl::Program page_program(bool cut_outs) {
+  return gl::Program::graphics("shadow/virtual_page.vert", "shadow/shadow_depth.frag",
+                               {{"RADIAL_DEPTH", "0"}, {"CUT_OUTS", cut_outs ? "1" : "0"}});
+}
+
+GLuint groups(int n, int size) {
+  return static_cast<GLuint>((n + size - 1) / size);
+}
+
+}  // namespace
+
+VirtualShadowPass::VirtualShadowPass()
+    : mark_program_(gl::Program::compute("shadow/virtual_mark.comp")),
+      allocate_program_(gl::Program::compute("shadow/virtual_allocate.comp")),
+      dirty_program_(gl::Program::compute("shadow/virtual_dirty.comp")),
+      clear_program_(
+          gl::Program::graphics("shadow/virtual_clear.vert", "shadow/virtual_clear.frag")),
+      page_programs_{page_program(false), page_program(true)},
+      block_ubo_(sizeof(gpu::GpuVirtualShadow), nullptr, true, "virtual shadow block"),
+      counters_(kCounterWords * sizeof(std::uint32_t), nullptr, true, "virtual page counters"),
+      page_table_(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                  .format = GL_R32UI,
+                                  .width = kVirtualPages,
+                                  .height = kVirtualPages,
+                                  .layers = kMaxVirtualLevels,
+                                  .label = "virtual page table"}),
+      empty_vertex_array_("virtual page clear") {
+  block_.counts = glm::ivec4(-1, 0, 0, 0);
+}
+
+void VirtualShadowPass::ensure_pool(int pages) {
+  if (pages == pool_pages_ && !reset_) return;
+  if (pages != pool_pages_) {
+    pool_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                        .format = GL_DEPTH_COMPONENT32F,
+                                        .width = kVirtualPageTexels,
+                                        .height = kVirtualPageTexels,
+                                        .layers = pages,
+                                        .label = "virtual page pool"});
+    pool_framebuffer_ = gl::Framebuffer("virtual page pool");
+    pool_framebuffer_.attach_depth(pool_);  // layered: gl_Layer picks the page
+    pool_framebuffer_.set_draw_buffers(0);
+    pool_framebuffer_.check_complete();
+    render_list_ = gl::Buffer(static_cast<std::size_t>(pages) * 4 * sizeof(std::int32_t), nullptr,
+                              true, "virtual pages to render");
+    pool_pages_ = pages;
+  }
+  // Every page free, none resident.
+  std::vector<std::uint32_t> free(static_cast<std::size_t>(pages));
+  std::iota(free.begin(), free.end(), 0u);
+  free_list_ =
+      gl::Buffer(free.size() * sizeof(std::uint32_t), free.data(), true, "virtual page free list");
+  const std::uint32_t counters[kCounterWords] = {static_cast<std::uint32_t>(pages), 0, 0, 0};
+  counters_.update(counters, sizeof counters);
+  const GLuint zero = 0;
+  glClearTexImage(page_table_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  previous_levels_.clear();
+  moved_boxes_.clear();
+  reset_ = false;
+}
+
+void VirtualShadowPass::caster_moved(const glm::vec3& lo0, const glm::vec3& hi0,
+                                     const glm::vec3& lo1, const glm::vec3& hi1) {
+  moved_boxes_.emplace_back(lo0, hi0);
+  moved_boxes_.emplace_back(lo1, hi1);
+}
+
+void VirtualShadowPass::bind() const {
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_VIRTUAL_UBO, block_ubo_.id());
+  glBindTextureUnit(UNIT_VIRTUAL_PAGE_TABLE, page_table_.id());
+  glBindSampler(UNIT_VIRTUAL_PAGE_TABLE, 0);
+  glBindTextureUnit(UNIT_VIRTUAL_POOL, pool_.id());
+  glBindSampler(UNIT_VIRTUAL_POOL, 0);
+}
+
+VirtualPageStats VirtualShadowPass::read_stats() const {
+  std::uint32_t counters[kCounterWords] = {};
+  glGetNamedBufferSubData(counters_.id(), 0, sizeof counters, counters);
+  VirtualPageStats stats;
+  stats.pool_pages = pool_pages_;
+  stats.resident = pool_pages_ - static_cast<int>(counters[kFreeCount]);
+  stats.rendered = static_cast<int>(counters[kRendered]);
+  stats.unserved = static_cast<int>(counters[kUnserved]);
+  return stats;
+}
+
+void VirtualShadowPass::execute(int light_index, const Light& light, const VirtualClipmap& clipmap,
+                                const ShadowSettings& shadow, const GBufferPass& gbuffer,
+                                const GpuScene& scene) {
+  GLint max_layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  // 16 pages of 64 KiB per MiB.
+  ensure_pool(std::min(shadow.page_pool_mib * 16, std::min(max_layers, int(PAGE_INDEX_MASK) + 1)));
+  if (commands_data_.empty()) {
+    commands_data_ = {3u, 0u, 0u, 0u};  // the clearing triangle
+    const std::vector<std::uint32_t> batches = scene.indirect_commands();
+    commands_data_.insert(commands_data_.end(), batches.begin(), batches.end());
+    commands_ = gl::Buffer(commands_data_.size() * sizeof(std::uint32_t), commands_data_.data(),
+                           true, "virtual page draws");
+  }
+
+  // The block: one view per level, and what changed since the last frame.
+  const int levels = static_cast<int>(clipmap.levels.size());
+  block_ = gpu::GpuVirtualShadow{};
+  for (int l = 0; l < levels; ++l) {
+    const VirtualLevel& level = clipmap.levels[static_cast<std::size_t>(l)];
+    gpu::GpuShadowView view = gpu_shadow_view(light, level.view, shadow);
+    view.depth_range.w = static_cast<float>(kVirtualTexels);
+    block_.levels[l] = view;
+    bool same = static_cast<std::size_t>(l) < previous_levels_.size();
+    glm::ivec2 previous = level.origin;
+    if (same) {
+      const VirtualLevel& before = previous_levels_[static_cast<std::size_t>(l)];
+      same = before.view.z0 == level.view.z0 && before.view.z1 == level.view.z1 &&
+             before.view.texel_world == level.view.texel_world &&
+             before.view.view == level.view.view;
+      previous = before.origin;
+    }
+    block_.origins[l] = glm::ivec4(level.origin, same ? 0 : 1, previous != level.origin ? 1 : 0);
+    block_.previous_origins[l] = glm::ivec4(same ? previous : level.origin, 0, 0);
+  }
+  block_.camera = glm::vec4(clipmap.camera, clipmap.pixel_angle);
+  // What a lookup reads around its texel: the normal offset, PCF's window
+  // (half its width, and one texel for its floor), the bilinear taps, and
+  // two texels for the lookups' own lift off the surface and rounding.
+  const float filter = shadow.technique == Technique::Pcf ? 0.5f * shadow.pcf_width + 1.0f : 1.0f;
+  block_.params = glm::vec4(clipmap.texel0, shadow.normal_offset + filter + 2.0f, 0.0f, 0.0f);
+  const int batch_words = static_cast<int>(commands_data_.size() - kClearCommandWords);
+  block_.counts = glm::ivec4(light_index, levels, pool_pages_, batch_words / 5);
+  block_ubo_.update(&block_, sizeof block_);
+  previous_levels_ = clipmap.levels;
+
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "virtual shadow maps");
+  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_VIRTUAL_UBO, block_ubo_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_COUNTERS_SSBO, counters_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_FREE_LIST_SSBO, free_list_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_RENDER_LIST_SSBO, render_list_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_COMMANDS_SSBO, commands_.id());
+  glBindImageTexture(IMAGE_OUTPUT, page_table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  // This frame's counts of rendered and unserved pages start at 0.
+  const std::uint32_t zeros[2] = {0, 0};
+  counters_.update(zeros, sizeof zeros, kRendered * sizeof(std::uint32_t));
+
+  mark_dirty();
+
+  // Marking, over the camera's pixels.
+  glBindTextureUnit(UNIT_GBUFFER_DEPTH, gbuffer.depth().id());
+  glBindSampler(UNIT_GBUFFER_DEPTH, 0);
+  glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
+  glBindSampler(UNIT_GBUFFER_NORMAL, 0);
+  mark_program_.use();
+  glDispatchCompute(groups(gbuffer.depth().width(), 8), groups(gbuffer.depth().height(), 8), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+
+  // Allocation: free, take, finish.
+  allocate_program_.use();
+  const GLuint program = allocate_program_.id();
+  glProgramUniform1i(program, 0, 0);
+  glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8), kMaxVirtualLevels);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  glProgramUniform1i(program, 0, 1);
+  glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8),
+                    static_cast<GLuint>(std::max(levels, 1)));
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  glProgramUniform1i(program, 0, 2);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                  GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+
+  render_pages(scene);
+  glPopDebugGroup();
+}
+
+void VirtualShadowPass::mark_dirty() {
+  if (moved_boxes_.empty()) return;
+  dirty_program_.use();
+  const int levels = block_.counts.y;
+  for (const auto& [lo, hi] : moved_boxes_) {
+    for (int l = 0; l < levels; ++l) {
+      const auto [first, last] =
+          virtual_pages_of_box(previous_levels_[static_cast<std::size_t>(l)], lo, hi);
+      if (first.x > last.x || first.y > last.y) continue;
+      glProgramUniform1i(dirty_program_.id(), 0, l);
+      glProgramUniform2i(dirty_program_.id(), 1, first.x, first.y);
+      glProgramUniform2i(dirty_program_.id(), 2, last.x, last.y);
+      glDispatchCompute(groups(last.x - first.x + 1, 8), groups(last.y - first.y + 1, 8), 1);
+    }
+  }
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  moved_boxes_.clear();
+}
+
+void VirtualShadowPass::render_pages(const GpuScene& scene) {
+  GLint clip_origin = GL_LOWER_LEFT, clip_depth = GL_NEGATIVE_ONE_TO_ONE;
+  GLfloat depth_range[2] = {0.0f, 1.0f};
+  glGetIntegerv(GL_CLIP_ORIGIN, &clip_origin);
+  glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth);
+  glGetFloatv(GL_DEPTH_RANGE, depth_range);
+  // Window depth = clip z exactly: the level's z-bar (as ShadowMapPass).
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glDepthRangef(0.0f, 1.0f);
+  glBindFramebuffer(GL_FRAMEBUFFER, pool_framebuffer_.id());
+  glViewport(0, 0, kVirtualPageTexels, kVirtualPageTexels);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
+  // Clear the listed pages to the far depth.
+  glDepthFunc(GL_ALWAYS);
+  clear_program_.use();
+  glBindVertexArray(empty_vertex_array_.id());
+  glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+  // The casters, one instance per listed page.
+  glDepthFunc(GL_LESS);
+  const std::size_t batches = kClearCommandWords * sizeof(std::uint32_t);
+  page_programs_[0].use();
+  scene.draw_indirect(SurfaceSet::Opaque, batches);
+  page_programs_[1].use();
+  scene.draw_indirect(SurfaceSet::CutOut, batches);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+  glClipControl(static_cast<GLenum>(clip_origin), static_cast<GLenum>(clip_depth));
+  glDepthRangef(depth_range[0], depth_range[1]);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,82 @@
+#pragma once
+// A directional light's virtual shadow maps: a clipmap of orthographic
+// levels down the light, each 16,384^2 virtual texels in 128 x 128 pages of
+// 128^2, level l's texel 2^l times level 0's, every level centred on the
+// camera and snapped to whole pages (docs/rendering.md, "Virtual shadow
+// maps"). Pure CPU functions, tested without a GPU; the shaders' twins are
+// in shaders/shadow/virtual_lookup.glsl.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+#include "penumbra/light.hpp"
+#include "penumbra/position_span.hpp"
+#include "penumbra/shadow/caster_bounds.hpp"
+#include "penumbra/shadow/light_view.hpp"
+#include "penumbra/shared/bindings.h"
+
+namespace penumbra {
+
+inline constexpr int kVirtualPageTexels = VIRTUAL_PAGE_TEXELS;
+inline constexpr int kVirtualPages = VIRTUAL_PAGES;
+inline constexpr int kVirtualTexels = kVirtualPageTexels * kVirtualPages;
+inline constexpr int kMaxVirtualLevels = MAX_VIRTUAL_LEVELS;
+
+struct VirtualLevel {
+  // Orthographic, over exactly the level's 128 x 128 pages; texel_world is
+  // the level's texel, z0..z1 its depth range.
+  LightView view;
+  // The world page (light-space xy / page size, floored) of the level's
+  // first page: its pages are origin + [0, 128)^2.
+  glm::ivec2 origin{0};
+  bool operator==(const VirtualLevel& o) const {
+    return origin == o.origin && view.z0 == o.view.z0 && view.z1 == o.view.z1 &&
+           view.texel_world == o.view.texel_world && view.view == o.view.view;
+  }
+};
+
+struct VirtualClipmap {
+  std::vector<VirtualLevel> levels;
+  float texel0 = 0.0f;       // level 0's texel, world units (a power of two)
+  float pixel_angle = 0.0f;  // a pixel's footprint per unit of camera distance
+  glm::vec3 camera{0.0f};    // where footprints are measured from
+};
+
+// A pixel's footprint per unit of distance from the camera:
+// 2 tan(fov_y / 2) / height.
+float pixel_footprint_per_distance(const CameraFrustum& camera, int image_height);
+
+// Fits the clipmap to the camera: kMaxVirtualLevels levels, the
+// coarsest's texel the power of two at or below the footprint at the far
+// plane (so level 0's is below the footprint at any near plane), each
+// centred on the camera snapped to whole pages, its depth range from the
+// casters in its column (through `bounds`, built over the triangles in
+// cascade_light_frame(light)), snapped to a coarse grid as cascades' are.
+// With the `previous` frame's clipmap (of the same light), level 0's texel
+// and each level's depth range are kept while they still serve (the texel
+// no larger than the one fitted nor smaller than a quarter of it; the
+// range holding the new one and at most twice as deep), so that an
+// orbiting camera, whose far plane and levels' columns change a little
+// every frame, keeps its cached pages.
+VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& camera,
+                                   int image_height, PositionSpan vertices,
+                                   std::span<const std::uint32_t> indices,
+                                   const CasterHierarchy& bounds,
+                                   const VirtualClipmap* previous = nullptr);
+
+// The level a point at `world` reads: the finest whose texel is no larger
+// than the pixel's footprint there (virtual_level() in the shaders).
+int virtual_level_of(const VirtualClipmap& clipmap, const glm::vec3& world);
+
+// The page-table slot (0..127 on each axis) of world page `page`: the
+// table is addressed modulo 128 in the world's page grid.
+glm::ivec2 virtual_page_slot(glm::ivec2 page);
+
+// Level `level`'s world pages that the world-space box [lo, hi] covers in
+// light space, clipped to the level: {first, last} inclusive; empty
+// (first > last) when the box misses it.
+std::pair<glm::ivec2, glm::ivec2> virtual_pages_of_box(const VirtualLevel& level,
+                                                       const glm::vec3& lo, const glm::vec3& hi);
+
+}  // namespace penumbra
