@@ -81,10 +81,11 @@ bool contact_behind(ivec2 q, vec3 point, out ContactSurface surface) {
 // step's distance from the start): the occluder spans at least from the
 // centre to a, so it hides about 1/2 + a / (2 r) of a source of angular
 // radius r (linear between half of it, a blocker's edge on the ray, and
-// all of it, a >= r); a point source is hidden whole. That keeps the march from cutting hard edges
-// into the penumbrae the technique draws. The most hidden over the steps is kept, and an occluder
-// met at a fraction t of the march hides 1 - smoothstep(0.5, 1, t) of that: the march's end fades
-// instead of cutting a line where its length runs out.
+// all of it, a >= r); a point source is hidden whole. That keeps the
+// march from cutting hard edges into the penumbrae the technique draws.
+// The most hidden over the steps is kept, and an occluder met at a
+// fraction t of the march hides 1 - smoothstep(0.5, 1, t) of that: the
+// march's end fades instead of cutting a line where its length runs out.
 float contact_lit_fraction(ivec2 pixel, vec3 start, vec3 to_light, float reach, float source_tan) {
   float len = min(frame.contact_length, reach);
   int steps = frame.contact_steps;
