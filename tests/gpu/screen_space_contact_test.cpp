@@ -13,11 +13,17 @@
 #include "gpu_fixture.hpp"
 #include "reference/traced_reference.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
 
 using testing::GpuTest;
+using testing::point_light;
+using testing::small_frame;
+using testing::spot_light;
+using testing::sun_light;
+using testing::TestScene;
 
 constexpr float kSlabHeight = 0.02f;
 constexpr float kSlabDepth = 0.6f;  // along z: the light comes from -z
@@ -26,31 +32,18 @@ constexpr float kSlabDepth = 0.6f;  // along z: the light comes from -z
 // the march's default length, before its fade).
 constexpr float kElevation = 0.14f;  // tan(8 degrees)
 
+// A thin slab on the ground, seen from its shadow's side; the light comes
+// from -z, kElevation above the ground at the slab.
 Scene slab_scene(LightType type) {
-  Scene scene;
-  scene.name = "slab";
-  scene.materials = {{"grey", {0.7f, 0.7f, 0.7f}, {0.0f, 0.0f, 0.0f}, 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {8.0f, 0.0f, 8.0f};
-  scene.shapes.push_back(ground);
-  Shape slab;
-  slab.kind = ShapeKind::Box;
-  slab.position = {0.0f, 0.5f * kSlabHeight, 0.0f};
-  slab.size = {1.2f, kSlabHeight, kSlabDepth};
-  scene.shapes.push_back(slab);
-  // From the shadow's side, looking down at the strip behind the slab.
-  scene.camera.position = {0.0f, 0.8f, 1.3f};
-  scene.camera.target = {0.0f, 0.0f, 0.35f};
-  scene.camera.fov_y_degrees = 30.0f;
-  Light light;
-  light.type = type;
-  light.position = {0.0f, 5.0f * kElevation, -5.0f};
-  light.direction = glm::normalize(glm::vec3(0.0f, -kElevation, 1.0f));
-  light.cone_degrees = 25.0f;
-  light.inner_cone_degrees = 20.0f;
-  scene.lights.push_back(light);
-  return scene;
+  const glm::vec3 source(0.0f, 5.0f * kElevation, -5.0f);
+  const Light light = type == LightType::Spot ? spot_light(source, glm::vec3(0.0f), 25.0f, 20.0f)
+                      : type == LightType::Directional ? sun_light(-source)
+                                                       : point_light(source, 30.0f);
+  return TestScene("slab")
+      .ground(8.0f)
+      .box({0.0f, 0.5f * kSlabHeight, 0.0f}, {1.2f, kSlabHeight, kSlabDepth})
+      .camera({0.0f, 0.8f, 1.3f}, {0.0f, 0.0f, 0.35f}, 30.0f)
+      .light(light);
 }
 
 struct StripErrors {
@@ -88,10 +81,7 @@ class ScreenSpaceContactTest : public GpuTest, public ::testing::WithParamInterf
 
 TEST_P(ScreenSpaceContactTest, DarkenTheContactLineTheMapLetsLightUnder) {
   Renderer renderer(slab_scene(GetParam()));
-  RenderSettings rs;
-  rs.width = 192;
-  rs.height = 108;
-  rs.view = View::Shadow;
+  const RenderSettings rs = small_frame(192, 108);
   ShadowSettings base;
   base.map_size = 256;
   base.light_size = 0.0f;  // a point source: the reference's shadow is binary
