@@ -231,6 +231,20 @@ struct ShadowMapSettings {
   // filter's reach plus a margin, in texels, so a filter near a face's edge
   // reads the scene from its own face (no seams between faces).
   bool guard_band = true;
+
+  // Screen-space contact shadows, with every technique, in penumbra's
+  // renderer (ShadowMaps' lookup has no camera depth buffer to march): from
+  // each lit pixel, contact_shadow_steps dithered steps through the
+  // camera's depth buffer towards the light, over contact_shadow_length
+  // world units; a step behind a surface seen in front of it by less than
+  // contact_shadow_thickness is occluded. They catch what the map's bias
+  // and resolution let light under (creases, the foot of a model); the
+  // light's factor is the smaller of the technique's and theirs
+  // (shaders/render/contact_shadow.glsl).
+  bool contact_shadows = false;
+  float contact_shadow_length = 0.3f;
+  float contact_shadow_thickness = 0.1f;
+  int contact_shadow_steps = 16;
   bool operator==(const ShadowMapSettings&) const = default;
 };
 
@@ -428,8 +442,9 @@ inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
 // then still fits the 32 KiB of shared memory every GL 4.5 device has.
 inline constexpr int kMaxFusedBlur = 16;
 inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
+inline constexpr int kMaxContactShadowSteps = 64;
 
-inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowFloatParams{{
+inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 17> kShadowFloatParams{{
     {"constant-bias",
      "constant depth bias, in shadow-map texels (a texel's world size at the receiver)", 0.0f,
      64.0f, &ShadowMapSettings::constant_bias, OptionGroup::Bias},
@@ -469,13 +484,20 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowF
     {"cascade-blend",
      "directional lights: fraction of each cascade, at its far end, blended into the next", 0.0f,
      0.5f, &ShadowMapSettings::cascade_blend, OptionGroup::Lights},
+    {"contact-shadow-length",
+     "--contact-shadows: how far each pixel's march towards the light reaches, in world units",
+     1e-4f, 1000.0f, &ShadowMapSettings::contact_shadow_length, OptionGroup::Technique},
+    {"contact-shadow-thickness",
+     "--contact-shadows: how far behind a surface seen in the depth buffer a step still counts "
+     "as occluded by it, in world units",
+     1e-4f, 1000.0f, &ShadowMapSettings::contact_shadow_thickness, OptionGroup::Technique},
 }};
 
 // The page pool's largest size: 2048 pages of 64 KiB, the layers every
 // GL 4.5 device allows an array texture.
 inline constexpr int kMaxPagePoolMib = 128;
 
-inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 8> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 9> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowMapSettings::map_size, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
@@ -499,6 +521,8 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 8> kShadowIntP
      "--shadow-mips: most anisotropic filtering along the pixel's footprint (up to the device's "
      "limit; llvmpipe: 1); 1: trilinear only",
      1, 16, &ShadowMapSettings::shadow_anisotropy, OptionGroup::Filter},
+    {"contact-shadow-steps", "--contact-shadows: steps of each pixel's march towards the light", 1,
+     kMaxContactShadowSteps, &ShadowMapSettings::contact_shadow_steps, OptionGroup::Technique},
 }};
 
 inline constexpr int kMaxAccumulate = 4096;
@@ -601,7 +625,7 @@ struct SwitchParam {
   OptionGroup group = OptionGroup::Unset;
 };
 
-inline constexpr std::array<SwitchParam<ShadowMapSettings>, 3> kShadowSwitchParams{{
+inline constexpr std::array<SwitchParam<ShadowMapSettings>, 4> kShadowSwitchParams{{
     {"guard-band",
      "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
      "filters near a face's edge read their own face (no seams)",
@@ -616,6 +640,10 @@ inline constexpr std::array<SwitchParam<ShadowMapSettings>, 3> kShadowSwitchPara
      "read trilinearly and anisotropically over the pixel's footprint (distant receivers do not "
      "alias)",
      &ShadowMapSettings::shadow_mips, OptionGroup::Filter},
+    {"contact-shadows",
+     "with every technique: a short march through the camera's depth buffer from each lit pixel "
+     "towards the light darkens what the shadow map misses (creases, the foot of a model)",
+     &ShadowMapSettings::contact_shadows, OptionGroup::Technique},
 }};
 
 inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{

@@ -67,6 +67,8 @@ layout(r32ui, binding = IMAGE_OUTPUT) uniform uimage2D backprojection_fetch_coun
 #endif
 layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
 
+#include "contact_shadow.glsl"
+
 // What one pixel covers of the receiver: the world offsets from the
 // pixel's point to where the camera rays through the next pixel in x and
 // in y meet the receiver's tangent plane. A mipmapped lookup projects them
@@ -354,6 +356,29 @@ float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotatio
 #endif
 }
 
+// Light i's shadow factor `lit` at `start` (the point its lookups use),
+// with the contact shadows when they are on: the smaller of the two. Both
+// estimate the visibility of the same source, and each misses occluders
+// the other sees (the march: those off screen, hidden or beyond its
+// length; the map: those under its bias); where both see one, a product
+// would count it twice and darken a penumbra below either estimate.
+float with_contact_shadow(float lit, int i, ivec2 pixel, vec3 start) {
+  if (frame.contact_shadows == 0 || lit <= 0.0) return lit;
+  GpuLight light = lights[i];
+  // The source's angular radius as source_above_horizon() takes it, but a
+  // spot light's square as its equal-area disc (w / sqrt(pi)).
+  float width = shadow_views[light.views.x].source_width;
+  if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
+    vec3 to_sun = -light.direction_cos_outer.xyz;
+    return min(lit, contact_lit_fraction(pixel, start, to_sun, 1e30, 0.5 * width));
+  }
+  vec3 d = light.position_type.xyz - start;
+  float reach = length(d);
+  if (!(reach > 0.0)) return lit;
+  float radius = int(light.position_type.w) == LIGHT_POINT ? 0.5 * width : 0.56418958 * width;
+  return min(lit, contact_lit_fraction(pixel, start, d / reach, reach, radius / reach));
+}
+
 // Distinct colours for the shadow views of one light (the cascades view).
 vec3 view_colour(int k) {
   const vec3 palette[MAX_CASCADES + 2] =
@@ -522,8 +547,10 @@ void main() {
       out_color = vec4(0.0);
       return;
     }
-    float lit = shadow_factor(i, lifted_point(lights[i], world, n, facet), facet_normal,
-                              view == VIEW_SHADOW_REFERENCE, rotation, footprint);
+    vec3 start = lifted_point(lights[i], world, n, facet);
+    float lit = shadow_factor(i, start, facet_normal, view == VIEW_SHADOW_REFERENCE, rotation,
+                              footprint);
+    if (view == VIEW_SHADOW) lit = with_contact_shadow(lit, i, pixel, start);
     float weight = accumulate_source_weight(lights[i], world, n);
     out_color = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)
                                                        : vec4(vec3(lit), 1.0);
@@ -543,10 +570,10 @@ void main() {
     // Normalized Blinn-Phong: (s + 8) / 8 keeps the highlight's energy
     // constant as the exponent changes (Akenine-Moller et al., RTR 4th ed.).
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
-    color +=
-        shadow_factor(i, lifted_point(lights[i], world, n, facet), facet_normal, false, rotation,
-                      footprint) *
-        irradiance * n_dot_l * brdf;
+    vec3 start = lifted_point(lights[i], world, n, facet);
+    float lit = with_contact_shadow(
+        shadow_factor(i, start, facet_normal, false, rotation, footprint), i, pixel, start);
+    color += lit * irradiance * n_dot_l * brdf;
   }
   out_color = vec4(color, 1.0);
 }

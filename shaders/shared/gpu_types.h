@@ -62,6 +62,13 @@ struct GpuFrame {
   // w: 1 when the ambient-occlusion texture is bound, 0: ambient unoccluded
   ivec4 options;
   vec4 ambient;  // rgb: ambient light colour
+  // Screen-space contact shadows (ShadowSettings::contact_shadows,
+  // shaders/render/contact_shadow.glsl): 1 when on; the march's length and
+  // the depth thickness of what it meets, in world units; its step count.
+  int contact_shadows;
+  float contact_length;
+  float contact_thickness;
+  int contact_steps;
 };
 
 // Shadow parameters (see ShadowSettings in include/penumbra/settings.hpp for their

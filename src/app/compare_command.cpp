@@ -383,6 +383,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
     r["blur"] = is_filterable(s.technique) ? json(s.blur) : json(nullptr);
     r["soft"] = s.soft;
     r["soft_two_moment_blockers"] = s.soft && s.soft_two_moment_blockers;
+    r["contact_shadows"] = s.contact_shadows;
     if (!item.skipped.empty()) {
       r["status"] = "skipped";
       r["reason"] = item.skipped;

@@ -23,7 +23,7 @@ namespace penumbra {
 
 static_assert(sizeof(gpu::GpuLight) == 6 * 16, "GpuLight must match std140");
 static_assert(sizeof(gpu::GpuShadowView) == 3 * 64 + 2 * 16, "GpuShadowView must match std140");
-static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 4 * 16, "GpuFrame must match std140");
+static_assert(sizeof(gpu::GpuFrame) == 3 * 64 + 5 * 16, "GpuFrame must match std140");
 static_assert(sizeof(gpu::GpuShadow) == 144, "GpuShadow must match std140");
 
 namespace {
@@ -328,6 +328,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   frame.options = glm::ivec4(light_count, view_define(render.view), render.light_index,
                              ambient_occlusion ? 1 : 0);
   frame.ambient = glm::vec4(0.06f, 0.065f, 0.08f, 0.0f);
+  frame.contact_shadows = shadow.contact_shadows ? 1 : 0;
+  frame.contact_length = shadow.contact_shadow_length;
+  frame.contact_thickness = shadow.contact_shadow_thickness;
+  frame.contact_steps = shadow.contact_shadow_steps;
   frame_ubo_.update(&frame, sizeof frame);
 
   gpu::GpuShadow shadow_block = gpu_shadow_params(shadow);

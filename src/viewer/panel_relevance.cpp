@@ -56,6 +56,7 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
     return shadowed && directional;
   }
   if (name == "guard-band") return shadowed && has_light(lights, LightType::Point);
+  if (name.rfind("contact-shadow-", 0) == 0) return shadow.contact_shadows;
   if (name != "ssao" && name.rfind("ssao", 0) == 0) return ssao.enabled;
   return true;
 }

@@ -440,7 +440,7 @@ TEST(Cli, HelpListsEveryOptionWithItsDefault) {
                              "--ssao-samples",  "--ssao-radius", "--ssao-bias",
                              "--ssao-range",    "--ssao-blur",   "--ssao-half-resolution",
                              "--light",         "--cascades",    "--cascade-lambda",
-                             "--cascade-blend", "--guard-band"}) {
+                             "--cascade-blend", "--guard-band",  "--contact-shadows"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from --help";
   }
   EXPECT_NE(r.out.find("2048"), std::string::npos) << "shadow-map-size default not shown";

@@ -345,6 +345,9 @@ TEST(Booleans, EverySwitchHasBothSpellingsAndTheOldOnes) {
   EXPECT_FALSE(render("--no-guard-band").shadow.guard_band);
   EXPECT_FALSE(render("--guard-band off").shadow.guard_band);
   EXPECT_TRUE(render("--guard-band").shadow.guard_band);
+  EXPECT_FALSE(render("").shadow.contact_shadows);
+  EXPECT_TRUE(render("--contact-shadows").shadow.contact_shadows);
+  EXPECT_FALSE(render("--contact-shadows off").shadow.contact_shadows);
   EXPECT_FALSE(render("--no-ssao").ssao.enabled);
   EXPECT_FALSE(render("--ssao off").ssao.enabled);
   EXPECT_TRUE(render("--ssao").ssao.enabled);

@@ -490,7 +490,7 @@ TEST_F(Report, CloseUpsAreCutFromTheRegionsTheErrorImagesMark) {
     EXPECT_NEAR(std::stod((*it)[3].str()) * traced.width / 100.0, number(region[3]), 1e-2);
     ++boxes;
   }
-  EXPECT_EQ(boxes, 3 * 11) << "three boxes on each of the eleven error images";
+  EXPECT_EQ(boxes, 3 * 12) << "three boxes on each of the twelve error images";
 
   // Each close-up: its region, 4x nearest neighbour, of the image it links to.
   const std::regex crop_re(
@@ -523,11 +523,11 @@ TEST_F(Report, CloseUpsAreCutFromTheRegionsTheErrorImagesMark) {
     if (region == "largest-error") sources.push_back((*it)[2].str());
     ++crops;
   }
-  EXPECT_EQ(crops, 3 * 12) << "three regions of the reference and eleven settings";
+  EXPECT_EQ(crops, 3 * 13) << "three regions of the reference and twelve settings";
 
   // The largest-error region holds (up to 8-bit rounding) the most summed
   // |technique - reference| of any window its size.
-  ASSERT_EQ(sources.size(), 12u);
+  ASSERT_EQ(sources.size(), 13u);
   const int w = static_cast<int>(number(regions[1][3])),
             h = static_cast<int>(number(regions[1][4]));
   std::vector<double> error(static_cast<std::size_t>(traced.width) * traced.height, 0.0);

@@ -49,6 +49,10 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   EXPECT_OFFSET(p, "frame", GpuFrame, viewport);
   EXPECT_OFFSET(p, "frame", GpuFrame, options);
   EXPECT_OFFSET(p, "frame", GpuFrame, ambient);
+  EXPECT_OFFSET(p, "frame", GpuFrame, contact_shadows);
+  EXPECT_OFFSET(p, "frame", GpuFrame, contact_length);
+  EXPECT_OFFSET(p, "frame", GpuFrame, contact_thickness);
+  EXPECT_OFFSET(p, "frame", GpuFrame, contact_steps);
   EXPECT_OFFSET(p, "lights[0]", GpuLight, position_type);
   EXPECT_OFFSET(p, "lights[0]", GpuLight, direction_cos_outer);
   EXPECT_OFFSET(p, "lights[0]", GpuLight, radiance_cos_inner);

@@ -161,6 +161,19 @@ TEST_F(PanelTest, TimesShowPassNamesAndMilliseconds) {
   }
 }
 
+// The contact shadows' own parameters are offered once they are on.
+TEST(PanelRelevance, ContactShadowParametersFollowTheirSwitch) {
+  ShadowSettings shadow;
+  EXPECT_TRUE(parameter_applies("contact-shadows", shadow, SsaoSettings{}, {}));
+  for (const char* name :
+       {"contact-shadow-length", "contact-shadow-thickness", "contact-shadow-steps"}) {
+    shadow.contact_shadows = false;
+    EXPECT_FALSE(parameter_applies(name, shadow, SsaoSettings{}, {})) << name;
+    shadow.contact_shadows = true;
+    EXPECT_TRUE(parameter_applies(name, shadow, SsaoSettings{}, {})) << name;
+  }
+}
+
 TEST(PanelRelevance, UnknownParametersAreShown) {
   EXPECT_TRUE(parameter_applies("a-parameter-added-later", ShadowSettings{}, SsaoSettings{}, {}));
 }

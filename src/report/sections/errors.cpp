@@ -16,9 +16,10 @@ constexpr Technique kErrorTechniques[] = {
 
 }  // namespace
 
-// A measurement per technique, and the accumulated hard shadows'.
+// A measurement per technique, backprojection's with contact shadows, and
+// the accumulated hard shadows'.
 int Study::errors_items() const {
-  return static_cast<int>(std::size(kErrorTechniques)) + 1;
+  return static_cast<int>(std::size(kErrorTechniques)) + 2;
 }
 
 void Study::errors_section(HtmlPage& page) {
@@ -76,6 +77,13 @@ void Study::errors_section(HtmlPage& page) {
     const ShadowSettings settings = with(t);
     add_row(name_of(t), name_of(t), settings, true, technique_shadow(t));
   }
+  // The best single frame with screen-space contact shadows
+  // (docs/rendering.md, --contact-shadows).
+  step();
+  ShadowSettings contact = with(Technique::Backprojection);
+  contact.contact_shadows = true;
+  add_row("backprojection --contact-shadows", "backprojection-contact", contact, true,
+          shadow_image(contact));
   // The converged counterpart: hard shadows from N points of the source,
   // weighted as the reference weighs them (render/accumulation.hpp).
   step();
