@@ -74,10 +74,11 @@ enum class View {
   Normals,
   Albedo,
   Ao,
-  Cascades
+  Cascades,
+  TexelDensity
 };
 
-inline constexpr std::array<std::pair<View, std::string_view>, 10> kViewNames{{
+inline constexpr std::array<std::pair<View, std::string_view>, 11> kViewNames{{
     {View::Final, "final"},
     {View::Shadow, "shadow"},
     {View::ShadowReference, "shadow-reference"},
@@ -88,6 +89,7 @@ inline constexpr std::array<std::pair<View, std::string_view>, 10> kViewNames{{
     {View::Albedo, "albedo"},
     {View::Ao, "ao"},
     {View::Cascades, "cascades"},
+    {View::TexelDensity, "texel-density"},
 }};
 
 // Names of on/off switches on the command line.

@@ -11,6 +11,7 @@
 #include "../common/uniforms.glsl"
 #include "../shadow/lookup.glsl"
 #include "../shadow/view_select.glsl"
+#include "../shadow/texel_density.glsl"
 #include "../shadow/hard.glsl"
 #include "../shadow/vsm.glsl"
 #include "../shadow/esm.glsl"
@@ -479,6 +480,17 @@ void main() {
                   (selected.blend == 0.0 ||
                    shadow_lookup(shadow_views[selected.next], world, n, 0.0).inside);
     out_color = vec4(inside ? view_colour(shown - light.views.x) : vec3(0.0), 1.0);
+    return;
+  }
+  if (view == VIEW_TEXEL_DENSITY || view == VIEW_TEXEL_DENSITY_VALUES) {
+    // The chosen light's texels per pixel on the pixel's own triangle
+    // (shaders/shadow/texel_density.glsl).
+    GpuLight light = lights[frame.options.z];
+    PixelFootprint on_facet = pixel_footprint(pixel, world, facet_normal);
+    float density = texels_per_pixel(shading_texel(light, world, camera_depth(world)), on_facet.dx,
+                                     on_facet.dy, facet_normal, direction_to_light(light, world));
+    out_color = vec4(view == VIEW_TEXEL_DENSITY ? texel_density_colour(density) : vec3(density),
+                     1.0);
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {

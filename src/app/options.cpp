@@ -143,7 +143,10 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
              "(shadow-map) or the technique's map before and after its filter (moments, "
              "moments-filtered), a light's several views tiled; the G-buffer (normals, albedo); "
              "the ambient occlusion (ao); the cascade or cube face each pixel reads (cascades: "
-             "red, green, blue, yellow, magenta, cyan for 0-5, black for none)",
+             "red, green, blue, yellow, magenta, cyan for 0-5, black for none); the shadow-map "
+             "texels that fall into each pixel's footprint on the receiver, an area ratio "
+             "(texel-density: log scale, red 1/4 or less, green 1, blue 4 or more, black for "
+             "none)",
              names_of(kViewNames), OptionGroup::Output);
   add_render_parameters(app, settings);
 }

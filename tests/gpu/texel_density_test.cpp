@@ -1,0 +1,155 @@
+// Texel density (--view texel-density) on the GPU against the cascades'
+// own prediction: on a ground seen at increasing distance, each pixel's
+// texels per pixel is the area of its footprint on the ground times the
+// cosine of the sun's angle to the ground, over the area of a texel of
+// the cascade that shades it (its extent over the map size, squared),
+// computed here in double from the camera's rays and the cascades'
+// projections. Within a cascade the density grows with distance (the
+// pixel's footprint grows, the texel does not); at each split it drops,
+// by the ratio of the two cascades' texel areas.
+#include <cmath>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "gpu_fixture.hpp"
+#include "render/renderer.hpp"
+
+namespace penumbra {
+namespace {
+
+using testing::GpuTest;
+
+// A ground 300 units long under a sun, seen from 2 units up along it.
+Scene long_ground() {
+  Scene scene;
+  scene.name = "long ground";
+  scene.materials.push_back(Material{"ground", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f});
+  Shape ground;
+  ground.kind = ShapeKind::Plane;
+  ground.size = {60.0f, 0.0f, 300.0f};
+  ground.position = {0.0f, 0.0f, -140.0f};
+  scene.shapes.push_back(ground);
+  scene.camera.position = {0.0f, 2.0f, 8.0f};
+  scene.camera.target = {0.0f, 0.0f, -12.0f};
+  scene.camera.fov_y_degrees = 50.0f;
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
+  scene.lights.push_back(sun);
+  return scene;
+}
+
+// The world point where the camera ray through NDC `ndc` meets the ground
+// (y = 0); false if it does not.
+bool ground_hit(const glm::dmat4& inverse_view_projection, glm::dvec2 ndc, glm::dvec3& hit) {
+  const glm::dvec4 a = inverse_view_projection * glm::dvec4(ndc, -1.0, 1.0);
+  const glm::dvec4 b = inverse_view_projection * glm::dvec4(ndc, 1.0, 1.0);
+  const glm::dvec3 origin = glm::dvec3(a) / a.w;
+  const glm::dvec3 direction = glm::dvec3(b) / b.w - origin;
+  if (!(direction.y < 0.0)) return false;
+  hit = origin + direction * (-origin.y / direction.y);
+  return true;
+}
+
+TEST_F(GpuTest, TexelDensityOnAGroundIsWhatTheCascadesPredict) {
+  const Scene scene = long_ground();
+  Renderer renderer(scene);
+  RenderSettings rs;
+  rs.width = 32;
+  rs.height = 96;
+  rs.view = View::TexelDensity;
+  ShadowSettings shadow;
+  shadow.map_size = 256;
+  shadow.cascades = 3;
+  shadow.technique = Technique::Hard;
+  renderer.render(rs, shadow);
+  const Image density = renderer.read_texel_density();
+
+  const LightShadowViews& views = renderer.shadow_views(0);
+  ASSERT_EQ(views.views.size(), 3u);
+  const glm::dmat4 view(renderer.camera_view());
+  const glm::dmat4 inverse_view_projection =
+      glm::inverse(glm::dmat4(renderer.camera_projection(rs.width, rs.height)) * view);
+  const glm::dvec3 to_sun = -glm::dvec3(scene.lights[0].direction);
+  const double cos_sun = to_sun.y;  // the ground's normal is +y
+
+  const int x = rs.width / 2;
+  std::vector<int> cascade_of_row;
+  double previous = 0.0;
+  int compared = 0, drops_within = 0, drops_at_splits = 0;
+  // Rows from the bottom of the image (near) up (far), in GL's pixel rows.
+  for (int gl_row = 0; gl_row < rs.height; ++gl_row) {
+    const glm::dvec2 step(2.0 / rs.width, 2.0 / rs.height);
+    const glm::dvec2 ndc((x + 0.5) * step.x - 1.0, (gl_row + 0.5) * step.y - 1.0);
+    glm::dvec3 p, px, py;
+    if (!ground_hit(inverse_view_projection, ndc, p) ||
+        !ground_hit(inverse_view_projection, ndc + glm::dvec2(step.x, 0.0), px) ||
+        !ground_hit(inverse_view_projection, ndc + glm::dvec2(0.0, step.y), py)) {
+      continue;
+    }
+    if (p.z < -289.0) continue;  // beyond the ground's far edge
+    const double camera_depth = -(view * glm::dvec4(p, 1.0)).z;
+    std::size_t c = 0;
+    while (c + 1 < views.cascade_end.size() && camera_depth > views.cascade_end[c]) ++c;
+    // The cascade's orthographic extent across its map, over the map size.
+    const double extent = 2.0 / views.views[c].projection[0][0];
+    const double texel = extent / shadow.map_size;
+    const double pixel_area = glm::length(glm::cross(px - p, py - p));
+    const double expected = pixel_area * cos_sun / (texel * texel);
+    const float* measured = density.pixel(x, rs.height - 1 - gl_row);
+    ASSERT_EQ(measured[3], 1.0f) << "row " << gl_row << " sees the ground";
+    EXPECT_NEAR(measured[0], expected, 0.02 * expected)
+        << "row " << gl_row << ", camera depth " << camera_depth << ", cascade " << c;
+    const bool split = !cascade_of_row.empty() && cascade_of_row.back() != static_cast<int>(c);
+    if (split) {
+      drops_at_splits += measured[0] < previous;
+    } else {
+      drops_within += measured[0] < previous * 0.9999;
+    }
+    previous = measured[0];
+    cascade_of_row.push_back(static_cast<int>(c));
+    ++compared;
+  }
+  EXPECT_GT(compared, rs.height / 2);
+  EXPECT_EQ(drops_within, 0) << "within a cascade the density grows with distance";
+  EXPECT_EQ(drops_at_splits, 2) << "it drops at both splits";
+  ASSERT_FALSE(cascade_of_row.empty());
+  EXPECT_EQ(cascade_of_row.front(), 0);
+  EXPECT_EQ(cascade_of_row.back(), 2) << "the rows reach the last cascade";
+}
+
+// The false-colour view shows the same values: green where a texel falls
+// on a pixel, red where texels are four times a pixel's area or more,
+// blue where four texels or more fall into a pixel.
+TEST_F(GpuTest, TexelDensityViewColoursTheValues) {
+  Renderer renderer(long_ground());
+  RenderSettings rs;
+  rs.width = 32;
+  rs.height = 96;
+  rs.view = View::TexelDensity;
+  ShadowSettings shadow;
+  shadow.map_size = 256;
+  renderer.render(rs, shadow);
+  const Image colours = renderer.read_view();
+  const Image values = renderer.read_texel_density();
+  int checked = 0;
+  for (int y = 0; y < rs.height; ++y) {
+    const float d = values.pixel(rs.width / 2, y)[0];
+    const float* c = colours.pixel(rs.width / 2, y);
+    if (values.pixel(rs.width / 2, y)[3] == 0.0f) continue;
+    if (d <= 0.25f) {
+      EXPECT_GT(c[0], c[1] + 0.5f) << "red at " << d;
+      ++checked;
+    } else if (d >= 4.0f) {
+      EXPECT_GT(c[2], c[0] + 0.5f) << "blue at " << d;
+      ++checked;
+    } else if (std::abs(std::log2(d)) < 0.05f) {
+      EXPECT_GT(c[1], c[0] + 0.5f) << "green at " << d;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
+}
+
+}  // namespace
+}  // namespace penumbra
