@@ -83,8 +83,8 @@
 #define VIEW_CASCADES 6  // the cascade (or cube face) each pixel reads, as a colour
 // Shadow-map texels per pixel (shaders/shadow/texel_density.glsl): in false
 // colour, or the values themselves in red (Renderer::read_texel_density)
-#define VIEW_TEXEL_DENSITY 7
-#define VIEW_TEXEL_DENSITY_VALUES 8
+#define VIEW_TEXEL_DENSITY 8
+#define VIEW_TEXEL_DENSITY_VALUES 9
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 // (the filterable ones, from TECHNIQUE_VSM on, last)
