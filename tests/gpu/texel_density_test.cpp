@@ -13,29 +13,22 @@
 
 #include "gpu_fixture.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
 
 using testing::GpuTest;
+using testing::small_frame;
+using testing::sun_light;
+using testing::TestScene;
 
 // A ground 300 units long under a sun, seen from 2 units up along it.
-Scene long_ground() {
-  Scene scene;
-  scene.name = "long ground";
-  scene.materials.push_back(Material{"ground", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f});
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {60.0f, 0.0f, 300.0f};
-  ground.position = {0.0f, 0.0f, -140.0f};
-  scene.shapes.push_back(ground);
-  scene.camera.position = {0.0f, 2.0f, 8.0f};
-  scene.camera.target = {0.0f, 0.0f, -12.0f};
-  scene.camera.fov_y_degrees = 50.0f;
-  Light sun;
-  sun.type = LightType::Directional;
-  sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
-  scene.lights.push_back(sun);
+TestScene long_ground() {
+  TestScene scene("long ground");
+  scene.ground(60.0f, 300.0f, {0.0f, 0.0f, -140.0f})
+      .camera({0.0f, 2.0f, 8.0f}, {0.0f, 0.0f, -12.0f}, 50.0f)
+      .light(sun_light({0.4f, -1.0f, -0.3f}));
   return scene;
 }
 
@@ -54,10 +47,7 @@ bool ground_hit(const glm::dmat4& inverse_view_projection, glm::dvec2 ndc, glm::
 TEST_F(GpuTest, TexelDensityOnAGroundIsWhatTheCascadesPredict) {
   const Scene scene = long_ground();
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 32;
-  rs.height = 96;
-  rs.view = View::TexelDensity;
+  const RenderSettings rs = small_frame(32, 96, View::TexelDensity);
   ShadowSettings shadow;
   shadow.map_size = 256;
   shadow.cascades = 3;
@@ -123,10 +113,7 @@ TEST_F(GpuTest, TexelDensityOnAGroundIsWhatTheCascadesPredict) {
 // blue where four texels or more fall into a pixel.
 TEST_F(GpuTest, TexelDensityViewColoursTheValues) {
   Renderer renderer(long_ground());
-  RenderSettings rs;
-  rs.width = 32;
-  rs.height = 96;
-  rs.view = View::TexelDensity;
+  const RenderSettings rs = small_frame(32, 96, View::TexelDensity);
   ShadowSettings shadow;
   shadow.map_size = 256;
   renderer.render(rs, shadow);
