@@ -7,6 +7,7 @@
 // projections. Within a cascade the density grows with distance (the
 // pixel's footprint grows, the texel does not); at each split it drops,
 // by the ratio of the two cascades' texel areas.
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
@@ -20,6 +21,7 @@ namespace {
 
 using testing::GpuTest;
 using testing::small_frame;
+using testing::spot_light;
 using testing::sun_light;
 using testing::TestScene;
 
@@ -106,6 +108,59 @@ TEST_F(GpuTest, TexelDensityOnAGroundIsWhatTheCascadesPredict) {
   ASSERT_FALSE(cascade_of_row.empty());
   EXPECT_EQ(cascade_of_row.front(), 0);
   EXPECT_EQ(cascade_of_row.back(), 2) << "the rows reach the last cascade";
+}
+
+// A spot light's texel grows with the depth from the light: at light-view
+// depth z it is 2 z tan(fov / 2) / map size, read here from the view's
+// projection (P[1][1] = 1 / tan(fov / 2)); the density on a ground under
+// it follows.
+TEST_F(GpuTest, TexelDensityUnderASpotLightFollowsItsFrustum) {
+  TestScene built("spot ground");
+  built.ground(20.0f)
+      .camera({0.0f, 9.0f, 6.0f}, {0.0f, 0.0f, 0.0f}, 40.0f)
+      .light(spot_light({1.0f, 6.0f, 1.0f}, {0.0f, 0.0f, 0.0f}, 40.0f, 35.0f));
+  const Scene& scene = built;
+  Renderer renderer(scene);
+  const RenderSettings rs = small_frame(48, 32, View::TexelDensity);
+  ShadowSettings shadow;
+  shadow.map_size = 128;
+  renderer.render(rs, shadow);
+  const Image density = renderer.read_texel_density();
+  const LightView& spot = renderer.light_view(0);
+  const glm::dmat4 view(renderer.camera_view());
+  const glm::dmat4 inverse_view_projection =
+      glm::inverse(glm::dmat4(renderer.camera_projection(rs.width, rs.height)) * view);
+  const glm::dmat4 light_view(spot.view);
+  const double tan_half_fov = 1.0 / spot.projection[1][1];
+  int compared = 0;
+  double nearest = INFINITY, farthest = 0.0;
+  for (int gl_row = 0; gl_row < rs.height; gl_row += 3) {
+    for (int x = 0; x < rs.width; x += 3) {
+      const glm::dvec2 step(2.0 / rs.width, 2.0 / rs.height);
+      const glm::dvec2 ndc((x + 0.5) * step.x - 1.0, (gl_row + 0.5) * step.y - 1.0);
+      glm::dvec3 p, px, py;
+      if (!ground_hit(inverse_view_projection, ndc, p) ||
+          !ground_hit(inverse_view_projection, ndc + glm::dvec2(step.x, 0.0), px) ||
+          !ground_hit(inverse_view_projection, ndc + glm::dvec2(0.0, step.y), py)) {
+        continue;
+      }
+      const glm::dvec4 clip = glm::dmat4(spot.view_projection) * glm::dvec4(p, 1.0);
+      const glm::dvec2 uv = glm::dvec2(clip) / clip.w;
+      const float* measured = density.pixel(x, rs.height - 1 - gl_row);
+      if (std::abs(uv.x) > 0.98 || std::abs(uv.y) > 0.98) continue;  // at the map's edge
+      const double depth = -(light_view * glm::dvec4(p, 1.0)).z;
+      const double texel = 2.0 * depth * tan_half_fov / shadow.map_size;
+      const double cos_light =
+          glm::normalize(glm::dvec3(scene.lights[0].position) - p).y;  // ground normal +y
+      const double expected = glm::length(glm::cross(px - p, py - p)) * cos_light / (texel * texel);
+      EXPECT_NEAR(measured[0], expected, 0.02 * expected) << "pixel " << x << ", " << gl_row;
+      nearest = std::min(nearest, expected);
+      farthest = std::max(farthest, expected);
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 40);
+  EXPECT_GT(farthest, 1.5 * nearest) << "the frame spans a range of densities";
 }
 
 // The false-colour view shows the same values: green where a texel falls
