@@ -18,10 +18,11 @@ struct MapLayout {
   ShadowSettings shadow;
 };
 
-// The layouts compared: the directional light's cascades (the --cascades,
-// --shadow-map-size the study runs at). Only the views are fitted: texel
-// density reads the view a pixel's lookup selects, not the map's depths,
-// so no map is drawn (technique none).
+// The layouts compared, each one figure, one table row and one plotted
+// series: the directional light's cascades (the --cascades and
+// --shadow-map-size the study runs at). For cascades only the views are
+// fitted: texel density reads the view a pixel's lookup selects, not the
+// map's depths, so no map is drawn (technique none).
 std::vector<MapLayout> map_layouts(const ShadowSettings& base) {
   ShadowSettings cascades = base;
   cascades.technique = Technique::None;
