@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gpu_fixture.hpp"
+#include "render/camera_depth.hpp"
 #include "render/renderer.hpp"
 #include "test_scene.hpp"
 
@@ -37,10 +38,9 @@ TestScene long_ground() {
 // The world point where the camera ray through NDC `ndc` meets the ground
 // (y = 0); false if it does not.
 bool ground_hit(const glm::dmat4& inverse_view_projection, glm::dvec2 ndc, glm::dvec3& hit) {
-  const glm::dvec4 a = inverse_view_projection * glm::dvec4(ndc, -1.0, 1.0);
-  const glm::dvec4 b = inverse_view_projection * glm::dvec4(ndc, 1.0, 1.0);
-  const glm::dvec3 origin = glm::dvec3(a) / a.w;
-  const glm::dvec3 direction = glm::dvec3(b) / b.w - origin;
+  const glm::dvec3 origin = position_from_depth(inverse_view_projection, ndc, CAMERA_NEAR_DEPTH);
+  const glm::dvec3 direction =
+      position_from_depth(inverse_view_projection, ndc, CAMERA_FAR_DEPTH) - origin;
   if (!(direction.y < 0.0)) return false;
   hit = origin + direction * (-origin.y / direction.y);
   return true;
