@@ -338,14 +338,15 @@ float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotatio
 #else
   GpuLight light = lights[i];
   ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
-  float lit =
-      view_shadow_factor(selected.view, light, world, normal, reference, rotation, footprint);
-  if (selected.blend > 0.0) {
-    float next =
-        view_shadow_factor(selected.next, light, world, normal, reference, rotation, footprint);
-    lit = mix(lit, next, selected.blend);
+  // One call site in a loop over the one or two views: the technique's
+  // code is inlined once, not twice (half the shader).
+  float lit[2] = float[](1.0, 1.0);
+  int count = selected.blend > 0.0 ? 2 : 1;
+  for (int k = 0; k < count; ++k) {
+    lit[k] = view_shadow_factor(k == 0 ? selected.view : selected.next, light, world, normal,
+                                reference, rotation, footprint);
   }
-  return lit;
+  return count == 2 ? mix(lit[0], lit[1], selected.blend) : lit[0];
 #endif
 }
 

@@ -30,10 +30,15 @@ class FusedFilterPass {
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
   // Rows of the tile each workgroup filters (32 wide) for a radius and a
-  // representation of `channels` floats (one float staged per texel): the
-  // tallest of 32, 16 and 8 whose shared memory fits `shared_bytes`; 0 if
-  // none does.
-  static int tile_rows(int radius, int channels, int shared_bytes);
+  // representation of `channels` floats (`staged_floats` staged per texel):
+  // the tallest of 32, 16 and 8 whose shared memory fits `shared_bytes`; 0
+  // if none does.
+  static int tile_rows(int radius, int channels, int shared_bytes, int staged_floats = 1);
+
+  // Whether evsm4 stages its two warps per texel (computed once a texel
+  // instead of once a tap): where they fit in a tile as tall as the one
+  // float staged would give, so the tile and its traffic stay the same.
+  static bool stages_evsm4_warps(int radius, int shared_bytes);
 
   // Bytes per texel of a width x height map: each 32 x tile_rows() tile
   // reads the depth (R32F) under it and its apron of `radius` on every
