@@ -1,7 +1,9 @@
 #pragma once
 // Resolve (compute): the z-bar depth-map array -> the technique's filterable
 // representation (see representation.hpp), every layer (shadow view) at once.
+#include <cstdint>
 #include <map>
+#include <span>
 
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
@@ -14,7 +16,9 @@ class MomentResolvePass {
  public:
   // Writes the representation of every layer of `depth_maps`. The array is
   // reallocated only when its size, layer count or format changes.
-  void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
+  // `layers`: a flag per layer to resolve only those (FusedFilterPass).
+  void execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
+               std::span<const std::uint8_t> layers = {});
 
   // Per texel: one depth read (of `depth_format`), one texel of the
   // technique's representation written.
