@@ -94,10 +94,11 @@ enum class View {
   Albedo,
   Ao,
   Cascades,
-  Pages
+  Pages,
+  TexelDensity
 };
 
-inline constexpr std::array<std::pair<View, std::string_view>, 11> kViewNames{{
+inline constexpr std::array<std::pair<View, std::string_view>, 12> kViewNames{{
     {View::Final, "final"},
     {View::Shadow, "shadow"},
     {View::ShadowReference, "shadow-reference"},
@@ -109,6 +110,7 @@ inline constexpr std::array<std::pair<View, std::string_view>, 11> kViewNames{{
     {View::Ao, "ao"},
     {View::Cascades, "cascades"},
     {View::Pages, "pages"},
+    {View::TexelDensity, "texel-density"},
 }};
 
 // Names of on/off switches on the command line.

@@ -13,6 +13,7 @@
 #include "../common/world_position.glsl"
 #include "../shadow/lookup.glsl"
 #include "../shadow/view_select.glsl"
+#include "../shadow/texel_density.glsl"
 #include "../shadow/hard.glsl"
 #include "../shadow/vsm.glsl"
 #include "../shadow/esm.glsl"
@@ -533,6 +534,21 @@ void main() {
     }
 #endif
     out_color = vec4(colour, 1.0);
+    return;
+  }
+  if (view == VIEW_TEXEL_DENSITY || view == VIEW_TEXEL_DENSITY_VALUES) {
+    // The chosen light's texels per pixel on the pixel's own triangle
+    // (shaders/shadow/texel_density.glsl).
+    GpuLight light = lights[frame.options.z];
+    PixelFootprint on_facet = pixel_footprint(pixel, world, facet_normal);
+    ShadingTexel texel = shading_texel(light, world, camera_depth(world));
+#if VIRTUAL_SHADOWS
+    if (frame.options.z == virtual_shadow.counts.x) texel = virtual_shading_texel(world);
+#endif
+    float density = texels_per_pixel(texel, on_facet.dx, on_facet.dy, facet_normal,
+                                     direction_to_light(light, world));
+    out_color = vec4(view == VIEW_TEXEL_DENSITY ? texel_density_colour(density) : vec3(density),
+                     1.0);
     return;
   }
   if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {

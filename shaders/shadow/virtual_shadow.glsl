@@ -49,6 +49,15 @@ int virtual_resident_level(vec3 world) {
   return -1;
 }
 
+// The texel a virtual map's lookup reads at `world` (texel_density.glsl's
+// shading_texel() for the light with virtual maps): its resident level's.
+ShadingTexel virtual_shading_texel(vec3 world) {
+  int level = virtual_resident_level(world);
+  if (level < 0) return ShadingTexel(0.0, false);
+  GpuShadowView view = virtual_shadow.levels[level];
+  return ShadingTexel(shadow_texel_world(view, light_linear_depth(view, world)), true);
+}
+
 // The hard test at the texel under uv; a missing page is lit.
 float virtual_hard(int level, vec2 uv, float depth) {
   float occluder = virtual_texel_depth(level, ivec2(floor(uv * float(VIRTUAL_TEXELS))));

@@ -112,6 +112,10 @@
 #define VIEW_AO 5
 #define VIEW_CASCADES 6  // the cascade (or cube face) each pixel reads, as a colour
 #define VIEW_PAGES 7     // the virtual page each pixel reads: its level, cached or rendered
+// Shadow-map texels per pixel (shaders/shadow/texel_density.glsl): in false
+// colour, or the values themselves in red (Renderer::read_texel_density)
+#define VIEW_TEXEL_DENSITY 8
+#define VIEW_TEXEL_DENSITY_VALUES 9
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 // (the filterable ones, from TECHNIQUE_VSM on, last)

@@ -21,10 +21,12 @@
 #include "io/staged_folder.hpp"
 #include "penumbra/error.hpp"
 #include "penumbra/gl/context.hpp"
+#include "reference/distance_halves.hpp"
 #include "reference/error_image.hpp"
 #include "reference/reference_cache.hpp"
 #include "reference/shadow_metrics.hpp"
 #include "reference/shadow_ray_tracer.hpp"
+#include "reference/texel_density_stats.hpp"
 #include "reference/traced_reference.hpp"
 #include "render/accumulation.hpp"
 #include "render/renderer.hpp"
@@ -42,6 +44,8 @@ struct Item {
   ShadowSettings settings;
   std::string skipped;  // why the item cannot run (a usage error); empty if it runs
   std::optional<ShadowMetrics> traced, filtered;
+  // Against the traced reference on the near and far halves of the view.
+  std::optional<ShadowMetrics> traced_near, traced_far;
   json images = json::object();
 };
 
@@ -205,6 +209,10 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
            OptionGroup::Output);
   in_group(command.add_flag("--verbose", args.verbose, "print the GPU in use and driver messages"),
            OptionGroup::Output);
+  in_group(command.add_flag("--by-distance", args.by_distance,
+                            "also measure the near and far halves of the compared pixels, split "
+                            "at their median distance from the camera (the JSON always has them)"),
+           OptionGroup::Output);
   in_group(command
                .add_option("--cache-dir", args.cache_dir,
                            "where traced references are kept (default: $XDG_CACHE_HOME/penumbra, "
@@ -274,7 +282,8 @@ std::vector<Item> plan_items(const CompareArgs& args) {
 // against the references and writes the images into `folder` (none if
 // null), naming their final paths in the items.
 void measure_items(Renderer& renderer, const CompareArgs& args, const Image& traced,
-                   std::vector<Item>& items, const StagedFolder* folder) {
+                   const DistanceHalves& halves, std::vector<Item>& items,
+                   const StagedFolder* folder) {
   // The images compared (shadows and references) also go out as 32-bit
   // float EXR, unclamped and unquantized, for measuring them elsewhere;
   // the error images are colour maps and go out as PNG only.
@@ -294,6 +303,8 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
     Image shadow = render_accumulated(renderer, view, item.settings);
     restrict_to(shadow, traced);
     item.traced = compare_shadow(shadow, traced);
+    item.traced_near = compare_shadow(only_half(shadow, halves, false), traced);
+    item.traced_far = compare_shadow(only_half(shadow, halves, true), traced);
     write(shadow, stem, &item, "shadow", true);
     write(error_image(shadow, traced), stem + "-error-traced", &item, "error_traced", false);
     if (has_filtered_reference(item.settings)) {
@@ -309,6 +320,38 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
   }
 }
 
+// What the view itself measures, whatever the technique: its near and far
+// halves, and the light's shadow-map texels per pixel.
+struct ViewMeasures {
+  DistanceHalves halves;
+  TexelDensityStats density;
+};
+
+// The light's texel densities in the view (Renderer::read_texel_density)
+// at the settings of the last item measured (its maps are still current),
+// over the reference's pixels; with a folder, their false colour image too.
+TexelDensityStats measure_texel_density(Renderer& renderer, const CompareArgs& args,
+                                        const std::vector<Item>& items, const Image& traced,
+                                        const StagedFolder* folder) {
+  ShadowSettings shadow = args.shadow;
+  for (const Item& item : items) {
+    if (item.skipped.empty()) shadow = item.settings;
+  }
+  shadow.accumulate = 1;
+  RenderSettings view = args.render;
+  view.view = View::TexelDensity;
+  renderer.render(view, shadow);
+  if (folder != nullptr) {
+    write_png(renderer.read_view(), (fs::path(folder->path()) / "texel-density.png").string(),
+              PngEncoding::Linear);
+  }
+  return texel_density_stats(renderer.read_texel_density(), traced);
+}
+
+json share_json(const TexelDensityShare& s) {
+  return {{"pixels", s.pixels}, {"median", s.median}, {"at_least_one", s.at_least_one}};
+}
+
 std::string light_type_name(LightType type) {
   return std::string(enum_name<LightType>(kLightTypeNames, type));
 }
@@ -320,7 +363,7 @@ double rays_per_second(const TracedReference& reference, double seconds) {
 }
 
 void print_report(const CompareArgs& args, const Scene& scene, const TracedReference& reference,
-                  const std::vector<Item>& items) {
+                  const ViewMeasures& measures, const std::vector<Item>& items) {
   const int light_index = args.render.light_index;
   std::printf("scene %s, light %d (%s), %dx%d pixels, %d^2 shadow maps\n", scene.name.c_str(),
               light_index,
@@ -362,6 +405,10 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
       continue;
     }
     rows.push_back({metrics_row(item, "traced", *item.traced, true)});
+    if (args.by_distance) {
+      rows.push_back({metrics_row(item, "traced, near", *item.traced_near, false)});
+      rows.push_back({metrics_row(item, "traced, far", *item.traced_far, false)});
+    }
     if (item.filtered) rows.push_back({metrics_row(item, "filtered", *item.filtered, false)});
   }
   print_table(rows, 4);
@@ -370,11 +417,24 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
       "averaged with the technique's filter kernel. leak: reference < %.1f while the technique "
       "> %.1f; over-dark: reference > %.1f while the technique < %.1f.\n",
       kLeakReferenceBelow, kLeakTechniqueAbove, kOverDarkReferenceAbove, kOverDarkTechniqueBelow);
+  if (args.by_distance) {
+    std::printf(
+        "near, far: the compared pixels up to and beyond their median distance from the camera, "
+        "%s units (%ld and %ld pixels).\n",
+        fixed(measures.halves.median_distance, 3).c_str(), measures.halves.near_pixels,
+        measures.halves.far_pixels);
+  }
+  const TexelDensityStats& d = measures.density;
+  std::printf(
+      "texel density (shadow-map texels per pixel, an area ratio): median %s; at least 1 on "
+      "%s of the compared pixels and on %s of the %ld shadowed ones (reference < 1).\n",
+      fixed(d.judged.median, 3).c_str(), percent(d.judged.at_least_one).c_str(),
+      percent(d.shadowed.at_least_one).c_str(), d.shadowed.pixels);
   std::fflush(stdout);
 }
 
 json json_report(const CompareArgs& args, const Scene& scene, const TracedReference& reference,
-                 const std::vector<Item>& items) {
+                 const ViewMeasures& measures, const std::vector<Item>& items) {
   json results = json::array();
   for (const Item& item : items) {
     const ShadowSettings& s = item.settings;
@@ -391,6 +451,8 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       r["status"] = "ok";
       r["traced"] = metrics_json(*item.traced);
       r["filtered"] = item.filtered ? metrics_json(*item.filtered) : json(nullptr);
+      r["traced_near"] = metrics_json(*item.traced_near);
+      r["traced_far"] = metrics_json(*item.traced_far);
       if (!args.output_dir.empty()) r["images"] = item.images;
     }
     results.push_back(r);
@@ -433,6 +495,20 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
         {"image", args.output_dir.empty()
                       ? json(nullptr)
                       : json((fs::path(args.output_dir) / "reference-traced.png").string())}}},
+      // The compared pixels split at their median distance from the camera
+      // (results' traced_near and traced_far).
+      {"distance_halves",
+       {{"median_distance", measures.halves.median_distance},
+        {"near_pixels", measures.halves.near_pixels},
+        {"far_pixels", measures.halves.far_pixels}}},
+      // Shadow-map texels per pixel of the light, over the compared pixels
+      // and the shadowed ones (reference below 1).
+      {"texel_density",
+       {{"judged", share_json(measures.density.judged)},
+        {"shadowed", share_json(measures.density.shadowed)},
+        {"image", args.output_dir.empty()
+                      ? json(nullptr)
+                      : json((fs::path(args.output_dir) / "texel-density.png").string())}}},
       {"results", results},
   };
 }
@@ -470,15 +546,22 @@ int run_compare_command(CompareArgs& args) {
   // written: a failure or an interrupt leaves no partial folder.
   std::optional<StagedFolder> folder;
   if (!args.output_dir.empty()) folder.emplace(args.output_dir);
-  measure_items(renderer, args, reference.image, items, folder ? &*folder : nullptr);
+  ViewMeasures measures;
+  measures.halves = split_at_median_distance(renderer.read_surfaces(),
+                                             renderer.scene().camera.position, reference.image);
+  measure_items(renderer, args, reference.image, measures.halves, items,
+                folder ? &*folder : nullptr);
+  measures.density =
+      measure_texel_density(renderer, args, items, reference.image, folder ? &*folder : nullptr);
   if (context->error_count() > 0) {
     throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
                        " error(s); last: " + context->last_error());
   }
   if (folder) folder->publish();
-  print_report(args, scene, reference, items);
+  print_report(args, scene, reference, measures, items);
   if (!args.json.empty()) {
-    write_file_atomically(args.json, json_report(args, scene, reference, items).dump(2) + "\n");
+    write_file_atomically(args.json,
+                          json_report(args, scene, reference, measures, items).dump(2) + "\n");
   }
   return 0;
 }

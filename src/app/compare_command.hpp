@@ -27,6 +27,9 @@ struct CompareArgs {
   std::string cache_dir;   // traced references; default_cache_dir() when empty
   bool cache = true;       // reuse a cached traced reference
   bool verbose = false;
+  // --by-distance: the table also measures the near and far halves of the
+  // compared pixels (reference/distance_halves.hpp); the JSON always does.
+  bool by_distance = false;
   RenderSettings render;
   ShadowSettings shadow;
   ReferenceSettings reference;

@@ -164,7 +164,10 @@ void add_render_options(CLI::App& app, RenderSettings& settings, NamedOptions& n
              "the ambient occlusion (ao); the cascade or cube face each pixel reads (cascades: "
              "red, green, blue, yellow, magenta, cyan for 0-5, black for none); the virtual "
              "page each pixel reads (pages, --shadow-maps virtual: a colour per clipmap level, "
-             "bright where the page was rendered this frame, dark where cached)",
+             "bright where the page was rendered this frame, dark where cached); the shadow-map "
+             "texels that fall into each pixel's footprint on the receiver, an area ratio "
+             "(texel-density: log scale, red 1/4 or less, green 1, blue 4 or more, black for "
+             "none)",
              names_of(kViewNames), OptionGroup::Output);
   add_render_parameters(app, settings);
 }

@@ -1,6 +1,7 @@
 #include "app/render_command.hpp"
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "app/help_formatter.hpp"
@@ -10,6 +11,7 @@
 #include "io/image.hpp"
 #include "penumbra/error.hpp"
 #include "penumbra/gl/context.hpp"
+#include "reference/texel_density_stats.hpp"
 #include "render/accumulation.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
@@ -64,6 +66,10 @@ int run_render_command(RenderArgs& args) {
   }
   Renderer renderer(scene);
   Image image = render_accumulated(renderer, args.render, args.shadow, args.ssao);
+  std::optional<TexelDensityShare> density;
+  if (args.render.view == View::TexelDensity) {
+    density = texel_density_share(renderer.read_texel_density());
+  }
   if (context->error_count() > 0) {
     throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
                        " error(s); last: " + context->last_error());
@@ -75,6 +81,12 @@ int run_render_command(RenderArgs& args) {
     std::printf("wrote %s (%dx%d, %s, technique %s)\n", args.output.c_str(), image.width,
                 image.height, std::string(enum_name<View>(kViewNames, args.render.view)).c_str(),
                 std::string(enum_name<Technique>(kTechniqueNames, args.shadow.technique)).c_str());
+    if (density) {
+      std::printf(
+          "texel density (shadow-map texels per pixel, an area ratio): median %.3f; at least 1 "
+          "on %.1f%% of the %ld pixels that see geometry\n",
+          density->median, 100.0 * density->at_least_one, density->pixels);
+    }
   }
   return 0;
 }

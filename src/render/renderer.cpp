@@ -89,6 +89,8 @@ int view_define(View view) {
       return VIEW_CASCADES;
     case View::Pages:
       return VIEW_PAGES;
+    case View::TexelDensity:
+      return VIEW_TEXEL_DENSITY;
     default:
       return VIEW_FINAL;
   }
@@ -237,6 +239,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   const int light_count = static_cast<int>(scene_.lights.size());
   if (render.light_index >= light_count &&
       (render.view == View::Shadow || render.view == View::ShadowReference ||
+       render.view == View::Cascades || render.view == View::TexelDensity ||
        is_map_view(render.view))) {
     throw UsageError("--light-index " + std::to_string(render.light_index) + ": scene '" +
                      scene_.name + "' has " + std::to_string(light_count) + " light(s)");
@@ -512,12 +515,26 @@ void Renderer::shade(View view) {
     throw std::logic_error("shade() of a view that needs SSAO the last render() skipped");
   }
   last_render_.view = view;
-  last_frame_.options.y = view_define(view);
+  shade_as(view_define(view), ambient_occlusion);
+}
+
+Image Renderer::read_texel_density() {
+  if (!gbuffer_current_)
+    throw std::logic_error("read_texel_density() needs a camera view rendered");
+  // The lighting output holds the values now, not the view last_render_
+  // names: read_view() returns them too, until the next render().
+  shade_as(VIEW_TEXEL_DENSITY_VALUES, false);
+  return read_texture(lighting_pass_.output().id(), last_render_.width, last_render_.height,
+                      GL_RGBA);
+}
+
+void Renderer::shade_as(int define, bool ambient_occlusion) {
+  last_frame_.options.y = define;
   last_frame_.options.w = ambient_occlusion ? 1 : 0;
   frame_ubo_.update(&last_frame_, sizeof last_frame_);
   bind_frame_blocks();
   if (last_shadow_.shadow_maps == ShadowMapKind::Virtual) virtual_pass_.bind();
-  if (view == View::ShadowReference) bind_reference_weights(last_shadow_);
+  if (define == VIEW_SHADOW_REFERENCE) bind_reference_weights(last_shadow_);
   lighting_pass_.execute(gbuffer_pass_, last_shadows_ ? &shadow_pass_.depth_maps() : nullptr,
                          last_filtered_, last_shadow_, ambient_occlusion ? last_ao_ : 0,
                          last_render_.width, last_render_.height);

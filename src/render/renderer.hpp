@@ -125,6 +125,16 @@ class Renderer {
   // sub-frame, or for a view that needs SSAO the last render() skipped.
   void shade(View view);
 
+  // The last render()'s camera view as texel densities of its light
+  // (render.light_index): per pixel, the shadow-map texels that fall into
+  // its footprint on the receiver (shaders/shadow/texel_density.glsl, the
+  // values --view texel-density colours) in every colour channel, 0 where
+  // no shadow view covers the point; alpha 1 where the pixel sees
+  // geometry. Reuses the frame as shade() does; read_view() returns these
+  // values until the next render(). Throws std::logic_error after a map
+  // view.
+  [[nodiscard]] Image read_texel_density();
+
   // The view chosen in the last render(): the lighting pass's output for
   // camera views; for map views, the light's z-bar maps (shadow-map) or
   // their representation before or after the filter (moments,
@@ -217,6 +227,9 @@ class Renderer {
   // Draws the camera's G-buffer unless it holds this frame's surfaces.
   void ensure_gbuffer(const gpu::GpuFrame& frame, const RenderSettings& render,
                       gl::GpuProfiler* profiler);
+  // The lighting pass again on the last frame's inputs, writing VIEW_*
+  // define `define` (with the AO of the last render() if asked).
+  void shade_as(int define, bool ambient_occlusion);
   // Each light's views and the camera's depth range are kept and refitted
   // only when what they depend on changes (the geometry: only through
   // move_shape(), which also forgets the caster bounds below).

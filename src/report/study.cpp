@@ -38,7 +38,7 @@ Study::Study(const Scene& scene, const StudyOptions& options, gl::Context& conte
 
 int Study::total_items() const {
   return techniques_items() + light_types_items() + maps_items() + sweeps_items() + esm_items() +
-         errors_items() + foliage_items() + timings_items();
+         errors_items() + foliage_items() + timings_items() + texel_density_items();
 }
 
 StudyResult Study::run() {
@@ -61,6 +61,7 @@ StudyResult Study::run() {
   closeups_section(page);
   foliage_section(page);
   timings_section(page);
+  texel_density_section(page);
   progress_.step("the verdict and the page", items_, total_items());
   verdict(page);
 

@@ -106,6 +106,8 @@ class Study {
   [[nodiscard]] int foliage_items() const;
   void timings_section(HtmlPage& page);  // 9
   [[nodiscard]] int timings_items() const;
+  void texel_density_section(HtmlPage& page);  // 10
+  [[nodiscard]] int texel_density_items() const;
   void verdict(HtmlPage& page);
 
   // Section helpers that read the study's state.

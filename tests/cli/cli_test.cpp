@@ -420,12 +420,16 @@ TEST(Cli, LightTypeUsageErrors) {
 
 TEST(Cli, RendersEveryLightType) {
   for (const char* light : {"spot", "directional", "point"}) {
-    for (const char* view : {"final", "shadow-map", "cascades"}) {
+    for (const char* view : {"final", "shadow-map", "cascades", "texel-density"}) {
       const std::string png = out_path(std::string(light) + "-" + view + ".png");
       Result r = run(std::string("render --width 48 --height 32 --shadow-map-size 64 --light ") +
                      light + " --view " + view + " --guard-band off --cascades 2 -o " + png);
       EXPECT_EQ(r.status, 0) << light << " " << view << ": " << r.err;
       EXPECT_TRUE(fs::exists(png)) << light << " " << view;
+      // The texel-density view also says how many pixels get a texel.
+      EXPECT_EQ(r.out.find("texel density") != std::string::npos,
+                std::string(view) == "texel-density")
+          << r.out;
     }
   }
 }

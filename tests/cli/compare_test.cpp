@@ -3,6 +3,7 @@
 // anything is written).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -253,3 +254,46 @@ TEST(Compare, HelpListsItsOptions) {
 }
 
 }  // namespace
+
+// The near and far halves partition the compared pixels (their squared
+// errors add up to the whole's), the table shows them with --by-distance,
+// and the light's texel density is measured over the same pixels.
+TEST(Compare, NearAndFarHalvesAndTexelDensity) {
+  const std::string dir = out_path("compare-halves-out");
+  const std::string json_path = out_path("compare-halves.json");
+  Result r =
+      run("compare " + kSmall + "--techniques hard --light-size 0 --by-distance --no-cache -o " +
+          dir + " --json " + json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("traced, near"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("traced, far"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("texel density"), std::string::npos) << r.out;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const long pixels = j["reference"]["pixels"].get<long>();
+  const auto& halves = j["distance_halves"];
+  const long near_pixels = halves["near_pixels"].get<long>();
+  const long far_pixels = halves["far_pixels"].get<long>();
+  EXPECT_EQ(near_pixels + far_pixels, pixels);
+  EXPECT_LE(std::abs(near_pixels - far_pixels), pixels / 10) << "split at the median";
+  EXPECT_GT(halves["median_distance"].get<double>(), 0.0);
+  const auto& hard = j["results"][0];
+  EXPECT_EQ(hard["traced_near"]["pixels"].get<long>(), near_pixels);
+  EXPECT_EQ(hard["traced_far"]["pixels"].get<long>(), far_pixels);
+  const double near_rmse = hard["traced_near"]["rmse"].get<double>();
+  const double far_rmse = hard["traced_far"]["rmse"].get<double>();
+  const double whole = std::sqrt((near_rmse * near_rmse * static_cast<double>(near_pixels) +
+                                  far_rmse * far_rmse * static_cast<double>(far_pixels)) /
+                                 static_cast<double>(pixels));
+  EXPECT_NEAR(whole, hard["traced"]["rmse"].get<double>(), 1e-9);
+  const auto& density = j["texel_density"];
+  EXPECT_EQ(density["judged"]["pixels"].get<long>(), pixels);
+  EXPECT_LE(density["shadowed"]["pixels"].get<long>(), pixels);
+  EXPECT_GT(density["shadowed"]["pixels"].get<long>(), 0);
+  for (const char* set : {"judged", "shadowed"}) {
+    EXPECT_GT(density[set]["median"].get<double>(), 0.0) << set;
+    EXPECT_GE(density[set]["at_least_one"].get<double>(), 0.0) << set;
+    EXPECT_LE(density[set]["at_least_one"].get<double>(), 1.0) << set;
+  }
+  EXPECT_TRUE(fs::exists(density["image"].get<std::string>()));
+}

@@ -289,7 +289,7 @@ TEST_F(Report, WritesAPageWhoseImagesExist) {
        {"<section id=\"summary\">", "1. The techniques", "2. Spot, point and directional lights",
         "3. Shadow maps before and after", "4. From anti-aliased to soft", "5. The ESM exponent c",
         "6. Errors against", "7. Close-ups at 4x", "8. Foliage: alpha-tested casters",
-        "9. GPU time and memory traffic per pass"}) {
+        "9. GPU time and memory traffic per pass", "10. Cascades or virtual maps"}) {
     EXPECT_NE(html_.find(section), std::string::npos) << section;
   }
   EXPECT_LT(html_.find("<section id=\"summary\">"), html_.find("1. The techniques"))
@@ -733,6 +733,37 @@ TEST_F(Report, TheErrorAtLightSizeZeroIsExplainedByItsNumbers) {
   // The hard shadow's RMSE is that square root: binary errors of 1, nearly
   // all of its error (a few pixels may be off by less than a half).
   EXPECT_NEAR(number((*zero)[static_cast<std::size_t>(hard)]), std::stod(why[5].str()), 0.003);
+}
+
+// The sun's texels per pixel: a table row and a plotted series per
+// shadow-map layout, each point a median over a band of distances; its
+// image is written.
+TEST_F(Report, TexelDensityOfEachLayoutAgainstDistance) {
+  const std::string section = section_of(html_, "density");
+  ASSERT_FALSE(section.empty());
+  const Table table = tables_of(section).front();
+  const int share = column_of(table, "at least 1 texel");
+  ASSERT_GE(share, 0);
+  ASSERT_EQ(table.size(), 2u) << "one layout: the cascades";
+  EXPECT_NE(table[1][0].find("cascades"), std::string::npos);
+  const double percent = std::stod(table[1][static_cast<std::size_t>(share)]);
+  EXPECT_GT(percent, 0.0);
+  EXPECT_LE(percent, 100.0);
+  const std::vector<Plot> plots = plots_of(section);
+  ASSERT_EQ(plots.size(), 1u);
+  std::map<std::string, std::vector<PlotPoint>> series;
+  for (const PlotPoint& p : plots.front().points) series[p.series].push_back(p);
+  ASSERT_EQ(series.size(), 2u) << "the cascades and the one-texel line, no empty series";
+  const std::vector<PlotPoint>& cascades = series[table[1][0]];
+  ASSERT_GE(cascades.size(), 4u);
+  for (std::size_t i = 0; i < cascades.size(); ++i) {
+    EXPECT_GT(cascades[i].y, 0.0);
+    if (i > 0) {
+      EXPECT_GT(cascades[i].x, cascades[i - 1].x) << "in order of distance";
+    }
+  }
+  for (const PlotPoint& p : series["one texel per pixel"]) EXPECT_EQ(p.y, 1.0);
+  EXPECT_TRUE(fs::exists(dir_ / "texel-density-0.png"));
 }
 
 TEST_F(Report, ChromiumShowsThePageWithoutConsoleErrors) {
