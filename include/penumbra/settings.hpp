@@ -146,6 +146,17 @@ struct ShadowSettings {
   // fraction, as vsm estimates it, instead of Peters' quadrature.
   bool soft_two_moment_blockers = false;
 
+  // Samples per shadow-map texel (1, 2, 4 or 8): the casters are drawn
+  // into a multisampled depth target (seed 002: "render the scene from the
+  // light's view to a multisampled depth buffer"). The filterable
+  // techniques average every sample's moments (or exponentials) in the
+  // resolve, so a texel a caster's edge crosses holds the mean of what it
+  // covers, antialiased before the filter. The techniques that read depth
+  // (hard, pcf, pcss, backprojection, and --soft's blocker search) read
+  // one depth per texel, the nearest of its samples: a caster covers every
+  // texel one of its samples touches. 1: one sample at the texel's centre.
+  int shadow_msaa = 1;
+
   // Filtering of the vsm, esm, msm and msm16 maps.
   Filter filter = Filter::Gaussian;
   // Filter radius W in texels: a Gaussian of 2W+1 taps (s = W/2), or a
@@ -358,6 +369,10 @@ inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
 // then still fits the 32 KiB of shared memory every GL 4.5 device has.
 inline constexpr int kMaxFusedBlur = 16;
 inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
+// --shadow-msaa takes the sample counts every GL 4.5 device can offer for a
+// depth texture, powers of two (GL_MAX_DEPTH_TEXTURE_SAMPLES is at least 1;
+// each device's own limit is checked where the maps are made).
+inline constexpr int kMaxShadowMsaa = 8;
 
 inline constexpr std::array<NumericParam<ShadowSettings, float>, 17> kShadowFloatParams{{
     {"constant-bias",
@@ -411,9 +426,14 @@ inline constexpr std::array<NumericParam<ShadowSettings, float>, 17> kShadowFloa
      0.5f, &ShadowSettings::cascade_blend, OptionGroup::Lights},
 }};
 
-inline constexpr std::array<NumericParam<ShadowSettings, int>, 7> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 8> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowSettings::map_size, OptionGroup::Technique},
+    {"shadow-msaa",
+     "samples per shadow-map texel, 1, 2, 4 or 8 (up to the GPU's limit): the filterable "
+     "techniques average each sample's moments before the filter (antialiased edges); hard, "
+     "pcf, pcss and backprojection read the nearest sample's depth",
+     1, kMaxShadowMsaa, &ShadowSettings::shadow_msaa, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
      kMaxBlur, &ShadowSettings::blur, OptionGroup::Filter},
     {"pcf-samples", "PCF samples from the Poisson set (1: hardware 2x2 compare)", 1,

@@ -28,6 +28,7 @@
 #include "reference/traced_reference.hpp"
 #include "render/accumulation.hpp"
 #include "render/renderer.hpp"
+#include "report/edge_errors.hpp"
 #include "scene/scene_file.hpp"
 
 namespace penumbra {
@@ -42,6 +43,9 @@ struct Item {
   ShadowSettings settings;
   std::string skipped;  // why the item cannot run (a usage error); empty if it runs
   std::optional<ShadowMetrics> traced, filtered;
+  // Against the traced reference within 2 pixels of its edges (where it
+  // steps by more than a half): where the maps' texels alias.
+  std::optional<ShadowMetrics> traced_edges;
   json images = json::object();
 };
 
@@ -294,6 +298,7 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
     Image shadow = render_accumulated(renderer, view, item.settings);
     restrict_to(shadow, traced);
     item.traced = compare_shadow(shadow, traced);
+    item.traced_edges = compare_shadow(at_reference_edges(shadow, traced, 2), traced);
     write(shadow, stem, &item, "shadow", true);
     write(error_image(shadow, traced), stem + "-error-traced", &item, "error_traced", false);
     if (has_filtered_reference(item.settings)) {
@@ -389,6 +394,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
     } else {
       r["status"] = "ok";
       r["traced"] = metrics_json(*item.traced);
+      r["traced_edges"] = metrics_json(*item.traced_edges);
       r["filtered"] = item.filtered ? metrics_json(*item.filtered) : json(nullptr);
       if (!args.output_dir.empty()) r["images"] = item.images;
     }
@@ -406,6 +412,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"width", args.render.width},
       {"height", args.render.height},
       {"shadow_map_size", args.shadow.map_size},
+      {"shadow_msaa", args.shadow.shadow_msaa},
       {"light_size", args.shadow.light_size},
       {"sun_angle", args.shadow.sun_angle},
       {"reference",

@@ -25,24 +25,30 @@ FusedFilterPass::FusedFilterPass() {
   glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared_bytes_);
 }
 
-int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes) {
+int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes, int staged_channels) {
   const int span_x = kTileX + 2 * radius;
   const int stride = span_x + 1 - span_x % 2;  // STAGED_STRIDE
   for (int rows : {32, 16, 8}) {               // multiples of the shader's GROUP_Y rows of threads
     const int span_y = rows + 2 * radius;
-    const int bytes = span_y * stride * 4 + span_y * kTileX * 4 * channels;
+    const int bytes = span_y * stride * 4 * staged_channels + span_y * kTileX * 4 * channels;
     if (bytes <= shared_bytes) return rows;
   }
   return 0;
 }
 
+int FusedFilterPass::staged_channels(GLenum format, int samples) {
+  return samples > 1 ? channel_count(format) : 1;
+}
+
 TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width, int height,
-                                            int shared_bytes) {
-  const int rows = tile_rows(radius, channel_count(format), shared_bytes);
+                                            int shared_bytes, int samples) {
+  const int rows =
+      tile_rows(radius, channel_count(format), shared_bytes, staged_channels(format, samples));
   if (rows == 0 || width <= 0 || height <= 0) return {};
   const double tiles = static_cast<double>(groups(width, kTileX)) * groups(height, rows);
   const double texels_read = tiles * (kTileX + 2.0 * radius) * (rows + 2.0 * radius);
-  return {4.0 * texels_read / (static_cast<double>(width) * height), 1.0 * bytes_per_texel(format)};
+  return {4.0 * samples * texels_read / (static_cast<double>(width) * height),
+          1.0 * bytes_per_texel(format)};
 }
 
 void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
@@ -52,10 +58,12 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
   }
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);
-  const int rows = tile_rows(radius, channel_count(format), shared_bytes_);
+  const int samples = depth_maps.samples();
+  const int rows =
+      tile_rows(radius, channel_count(format), shared_bytes_, staged_channels(format, samples));
   if (rows == 0) throw RuntimeError("the fused filter's tile does not fit in shared memory");
   const bool quantized = uses_quantized_moments(settings);
-  const auto key = std::make_tuple(technique, quantized, radius, rows);
+  const auto key = std::make_tuple(technique, quantized, radius, rows, samples);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     std::string weight_list;
@@ -69,7 +77,8 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
                            {"IMAGE_FORMAT", image_format_qualifier(format)},
                            {"RADIUS", std::to_string(radius)},
                            {"TILE_Y", std::to_string(rows)},
-                           {"GAUSSIAN_WEIGHTS", weight_list}};
+                           {"GAUSSIAN_WEIGHTS", weight_list},
+                           {"SAMPLES", std::to_string(samples)}};
     it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;
   }
   gl::ensure_texture_array(output_, format, depth_maps.width(), depth_maps.height(),

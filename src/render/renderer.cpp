@@ -287,9 +287,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     const std::span<const gpu::GpuShadowView> drawn(views, static_cast<std::size_t>(view_count_));
     shadow_views_drawn_ = shadow_pass_.execute(
         [&](int view) {
-          shadow_casters_.draw(gpu_scene_, view, caster_depth(views[view]) == CasterDepth::Written);
+          shadow_casters_.draw(gpu_scene_, view, caster_depth(views[view]) == CasterDepth::Written,
+                               shadow.shadow_msaa);
         },
-        drawn, shadow.map_size, stale);
+        drawn, shadow.map_size, stale, shadow.shadow_msaa);
   }
   // The resolve and the filters read every layer: they run again when a
   // view was drawn or the settings changed, else their output is current.
@@ -300,16 +301,17 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if (fused) {
     if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::FusedFilter);
-      fused_pass_.execute(shadow_pass_.depth_maps(), shadow);
+      fused_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow);
     }
     filtered = &fused_pass_.output();
     // The moments view shows the unfiltered representation, which the
     // fused pass never writes.
-    if (render.view == View::Moments) resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
+    if (render.view == View::Moments)
+      resolve_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow);
   } else if (is_filterable(shadow.technique)) {
     if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
-      resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
+      resolve_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow);
     }
     const gl::Texture& representation = resolve_pass_.representation();
     filtered = &representation;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "penumbra/error.hpp"
+#include "penumbra/filter/fused_filter_pass.hpp"
 #include "penumbra/shared/bindings.h"
 
 namespace penumbra {
@@ -40,9 +41,25 @@ int filter_define(const ShadowSettings& settings) {
   return settings.filter == Filter::Sat ? FILTER_SAT : FILTER_GAUSSIAN;
 }
 
+int max_fused_blur(const ShadowSettings& settings) {
+  if (settings.shadow_msaa <= 1 || !is_filterable(settings.technique)) return kMaxFusedBlur;
+  // The widest radius whose tile, staging the representation's channels,
+  // fits the 32 KiB of shared memory every GL 4.5 device has, so the plan
+  // is the same on every device.
+  constexpr int kMinSharedBytes = 32768;
+  const GLenum format = representation_format(settings.technique);
+  int radius = kMaxFusedBlur;
+  while (radius > 0 && FusedFilterPass::tile_rows(
+                           radius, channel_count(format), kMinSharedBytes,
+                           FusedFilterPass::staged_channels(format, settings.shadow_msaa)) == 0) {
+    --radius;
+  }
+  return radius;
+}
+
 bool uses_fused_filter(const ShadowSettings& settings) {
   return settings.fused && filter_define(settings) == FILTER_GAUSSIAN &&
-         settings.blur <= kMaxFusedBlur;
+         settings.blur <= max_fused_blur(settings);
 }
 
 bool uses_shadow_mips(const ShadowSettings& settings) {

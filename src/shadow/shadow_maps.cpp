@@ -315,7 +315,7 @@ void ShadowMaps::render(const DrawCasters& draw) {
                         .view_projection = m.block.views[view].view_projection,
                         .program = program});
       },
-      views, s.map_size, stale);
+      views, s.map_size, stale, s.shadow_msaa);
 
   // The resolve and the filter read every layer: run again when a view was
   // drawn or the settings changed, else their output is still current.
@@ -336,11 +336,11 @@ void ShadowMaps::Impl::filter(const ShadowSettings& s) {
   }
   if (!is_filterable(s.technique)) return;
   if (uses_fused_filter(s)) {
-    fused_pass.execute(map_pass.depth_maps(), s);
+    fused_pass.execute(map_pass.sampled_depth_maps(), s);
     filtered = fused_pass.output().id();
     return;
   }
-  resolve_pass.execute(map_pass.depth_maps(), s);
+  resolve_pass.execute(map_pass.sampled_depth_maps(), s);
   filtered = resolve_pass.representation().id();
   if (filter_define(s) == FILTER_GAUSSIAN) {
     blur_pass.execute(resolve_pass.representation(), s.blur);

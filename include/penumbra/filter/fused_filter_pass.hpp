@@ -22,7 +22,9 @@ class FusedFilterPass {
   FusedFilterPass();
 
   // Filters every layer of `depth_maps` with the settings' technique and
-  // radius (settings.blur in 1..kMaxFusedBlur) into output().
+  // radius (settings.blur in 1..max_fused_blur()) into output(); a
+  // multisampled array (ShadowMapPass::sampled_depth_maps()) has the mean
+  // of each texel's samples' representations filtered.
   void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
 
   // Same size, layers and format as the resolve's representation. Valid
@@ -30,19 +32,25 @@ class FusedFilterPass {
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
   // Rows of the tile each workgroup filters (32 wide) for a radius and a
-  // representation of `channels` floats (one float staged per texel): the
-  // tallest of 32, 16 and 8 whose shared memory fits `shared_bytes`; 0 if
-  // none does.
-  static int tile_rows(int radius, int channels, int shared_bytes);
+  // representation of `channels` floats, with `staged_channels` floats
+  // staged per texel (staged_channels()): the tallest of 32, 16 and 8 whose
+  // shared memory fits `shared_bytes`; 0 if none does.
+  static int tile_rows(int radius, int channels, int shared_bytes, int staged_channels = 1);
+
+  // Floats staged per texel: one (the value the moments are expanded
+  // from), or with `samples` > 1 the representation's channels (the mean
+  // of the samples' moments).
+  static int staged_channels(GLenum format, int samples);
 
   // Bytes per texel of a width x height map: each 32 x tile_rows() tile
-  // reads the depth (R32F) under it and its apron of `radius` on every
-  // side, and writes the representation (`format`) once.
+  // reads the depth (R32F, `samples` per texel) under it and its apron of
+  // `radius` on every side, and writes the representation (`format`) once.
   static TexelTraffic texel_traffic(GLenum format, int radius, int width, int height,
-                                    int shared_bytes);
+                                    int shared_bytes, int samples = 1);
 
  private:
-  std::map<std::tuple<Technique, bool, int, int>, gl::Program> programs_;
+  // (technique, quantized, radius, tile rows, samples per depth texel)
+  std::map<std::tuple<Technique, bool, int, int, int>, gl::Program> programs_;
   int shared_bytes_ = 0;  // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE
   gl::Texture output_;
 };

@@ -74,6 +74,7 @@ class Texture {
   [[nodiscard]] int layers() const { return layers_; }
   [[nodiscard]] int levels() const { return levels_; }
   [[nodiscard]] GLenum format() const { return format_; }
+  [[nodiscard]] int samples() const { return samples_; }
   [[nodiscard]] explicit operator bool() const { return static_cast<bool>(handle_); }
 
  private:
@@ -83,6 +84,7 @@ class Texture {
   int layers_ = 0;
   int levels_ = 0;
   GLenum format_ = 0;
+  int samples_ = 1;
 };
 
 // Makes `texture` a 2D array texture of this format, size, layer count and
@@ -91,6 +93,11 @@ class Texture {
 // (re)allocated.
 bool ensure_texture_array(Texture& texture, GLenum format, int width, int height, int layers,
                           std::string_view label, int levels = 1);
+
+// The same for a multisampled 2D array texture of `samples` samples per
+// texel (fixed sample locations).
+bool ensure_multisample_texture_array(Texture& texture, GLenum format, int width, int height,
+                                      int layers, int samples, std::string_view label);
 
 class Framebuffer {
  public:

@@ -15,10 +15,16 @@ int technique_define(Technique technique);
 // The value of the SHADOW_FILTER define (FILTER_*) for the shadow settings.
 int filter_define(const ShadowSettings& settings);
 
+// The widest radius the fused resolve + Gaussian takes: kMaxFusedBlur, or
+// with --shadow-msaa above 1, where each staged texel holds the mean of its
+// samples' moments, the widest whose tile still fits 32 KiB of shared
+// memory (8 for msm, msm16 and evsm4; 16 for the others).
+int max_fused_blur(const ShadowSettings& settings);
+
 // Whether the renderer filters with the fused resolve + Gaussian pass
-// (FusedFilterPass): --fused on, the Gaussian filter, radius 1..kMaxFusedBlur.
-// Otherwise a filterable technique runs the resolve, then the two blur
-// passes or the summed-area table.
+// (FusedFilterPass): --fused on, the Gaussian filter, radius
+// 1..max_fused_blur(). Otherwise a filterable technique runs the resolve,
+// then the two blur passes or the summed-area table.
 bool uses_fused_filter(const ShadowSettings& settings);
 
 // Whether the filtered maps carry a mip chain (--shadow-mips) that the
