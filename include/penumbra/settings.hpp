@@ -149,12 +149,14 @@ struct ShadowSettings {
   // Samples per shadow-map texel (1, 2, 4 or 8): the casters are drawn
   // into a multisampled depth target (seed 002: "render the scene from the
   // light's view to a multisampled depth buffer"). The filterable
-  // techniques average every sample's moments (or exponentials) in the
-  // resolve, so a texel a caster's edge crosses holds the mean of what it
-  // covers, antialiased before the filter. The techniques that read depth
-  // (hard, pcf, pcss, backprojection, and --soft's blocker search) read
-  // one depth per texel, the nearest of its samples: a caster covers every
-  // texel one of its samples touches. 1: one sample at the texel's centre.
+  // techniques (vsm, esm, evsm2/4, msm, msm16) average every sample's
+  // moments (or exponentials) in the resolve, so a texel a caster's edge
+  // crosses holds the mean of what it covers, antialiased before the
+  // filter; their depth maps (--soft's blocker search, the shadow-map
+  // view) hold the nearest of each texel's samples. The techniques that
+  // read depth (hard, pcf, pcss, backprojection) draw their maps with one
+  // sample whatever this says (depth_samples()). 1: one sample at the
+  // texel's centre.
   int shadow_msaa = 1;
 
   // Filtering of the vsm, esm, msm and msm16 maps.
@@ -430,9 +432,9 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 8> kShadowIntPara
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowSettings::map_size, OptionGroup::Technique},
     {"shadow-msaa",
-     "samples per shadow-map texel, 1, 2, 4 or 8 (up to the GPU's limit): the filterable "
-     "techniques average each sample's moments before the filter (antialiased edges); hard, "
-     "pcf, pcss and backprojection read the nearest sample's depth",
+     "samples per shadow-map texel of vsm, esm, evsm2, evsm4, msm and msm16, 1, 2, 4 or 8 (up "
+     "to the GPU's limit): each sample's moments are averaged before the filter, so the maps' "
+     "edges are antialiased (hard, pcf, pcss and backprojection draw one sample)",
      1, kMaxShadowMsaa, &ShadowSettings::shadow_msaa, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
      kMaxBlur, &ShadowSettings::blur, OptionGroup::Filter},

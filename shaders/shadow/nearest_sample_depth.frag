@@ -1,11 +1,13 @@
-// --shadow-msaa above 1: one layer of the multisampled z-bar maps resolved
-// to the one depth per texel that hard, pcf, pcss, backprojection and the
-// blocker search of --soft read: the nearest of the texel's samples. A
-// binary depth test cannot average coverage, and the nearest depth keeps
-// every caster a sample saw (a thin caster between texel centres still
-// casts); a mean of depths would invent a surface half-way between the
-// caster and what lies behind it. The filterable techniques average the
-// samples' moments instead (filter/resolve.comp, filter/fused_filter.comp).
+// --shadow-msaa above 1 (the filterable techniques): one layer of the
+// multisampled z-bar maps resolved to the one depth per texel that the
+// blocker search of --soft and the shadow-map view read: the nearest of
+// the texel's samples, which keeps every caster a sample saw (a thin
+// caster between texel centres still counts as a blocker); a mean of
+// depths would invent a surface half-way between the caster and what lies
+// behind it. The moments themselves are the samples' mean
+// (filter/resolve.comp, filter/fused_filter.comp). The techniques that
+// read depth draw one sample instead (depth_samples(): the nearest sample
+// grows their shadows by up to half a texel, which measured worse).
 layout(binding = 0) uniform sampler2DMSArray u_depth;
 layout(location = 0) uniform int u_layer;
 

@@ -53,6 +53,8 @@ std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
       if (args.sweep == "blur") s.blur = v;
       if (args.sweep == "fused") s.fused = v == 1;
       if (args.sweep == "msaa") s.shadow_msaa = v;
+      // Maps of depth are drawn with one sample whatever --shadow-msaa says.
+      if (depth_samples(s) != s.shadow_msaa && v > 1) continue;
       if (is_filterable(t) && !supports_sat(t) && s.filter == Filter::Sat) continue;  // refused
       // Soft only for the techniques that can be; a wrong filter is still refused.
       if (s.soft && !supports_soft_shadows(t, Filter::Sat)) s.soft = false;
@@ -75,7 +77,7 @@ std::string describe(const ShadowSettings& s) {
     out << " (" << format_name(representation_format(s.technique)) << ")";
   }
   out << ", map " << s.map_size;
-  if (s.shadow_msaa > 1) out << ", msaa " << s.shadow_msaa;
+  if (depth_samples(s) > 1) out << ", msaa " << depth_samples(s);
   if (s.accumulate > 1) out << ", accumulate " << s.accumulate << " (a frame is one sub-frame)";
   return out.str();
 }
@@ -153,7 +155,7 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
   j["blur"] = s.blur;
   j["soft"] = s.soft;
   j["shadow_map_size"] = s.map_size;
-  j["shadow_msaa"] = s.shadow_msaa;
+  j["shadow_msaa"] = depth_samples(s);  // the samples drawn per texel
   j["fused"] = is_filterable(s.technique) && uses_fused_filter(s);
   j["shadow_mips"] = uses_shadow_mips(s);
   if (is_filterable(s.technique)) {
@@ -335,7 +337,7 @@ int run_bench_command(BenchArgs& args) {
     // --shadow-msaa beyond it is refused by the first frame instead.
     GLint max_samples = 1;
     glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_samples);
-    std::erase_if(plan, [&](const ShadowSettings& s) { return s.shadow_msaa > max_samples; });
+    std::erase_if(plan, [&](const ShadowSettings& s) { return depth_samples(s) > max_samples; });
     std::printf("--sweep msaa: up to %d samples per texel, this GPU's limit for depth textures\n",
                 max_samples);
   }

@@ -49,7 +49,8 @@ bool ensure_texture_array(Texture& texture, GLenum format, int width, int height
 bool ensure_multisample_texture_array(Texture& texture, GLenum format, int width, int height,
                                       int layers, int samples, std::string_view label) {
   if (texture && texture.width() == width && texture.height() == height &&
-      texture.layers() == layers && texture.format() == format && texture.samples() == samples) {
+      texture.layers() == layers && texture.format() == format &&
+      texture.requested_samples() == samples) {
     return false;
   }
   texture = Texture(TextureInfo{.target = GL_TEXTURE_2D_MULTISAMPLE_ARRAY,
@@ -68,7 +69,8 @@ Texture::Texture(const TextureInfo& info)
       layers_(info.layers),
       levels_(info.levels),
       format_(info.format),
-      samples_(info.samples) {
+      samples_(info.samples),
+      requested_samples_(info.samples) {
   GLuint id = 0;
   glCreateTextures(info.target, 1, &id);
   handle_ = Handle<detail::delete_texture>(id);
@@ -91,6 +93,13 @@ Texture::Texture(const TextureInfo& info)
       break;
     default:
       throw RuntimeError("unsupported texture target");
+  }
+  if (info.target == GL_TEXTURE_2D_MULTISAMPLE || info.target == GL_TEXTURE_2D_MULTISAMPLE_ARRAY) {
+    // The count asked for is a minimum (the driver may give more: llvmpipe
+    // gives 4 for 2); shaders that loop over the samples use the real one.
+    GLint samples = info.samples;
+    glGetTextureLevelParameteriv(id, 0, GL_TEXTURE_SAMPLES, &samples);
+    samples_ = std::max(static_cast<int>(samples), 1);
   }
   // Filter with NEAREST unless a sampler says otherwise: the default
   // (NEAREST_MIPMAP_LINEAR) makes integer textures incomplete, and then even

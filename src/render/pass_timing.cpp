@@ -42,11 +42,12 @@ std::array<std::optional<TexelTraffic>, kPassCount> shadow_map_traffic(const Sha
     const int filter = filter_define(shadow);
     if (!uses_fused_filter(shadow)) {
       set(GpuPass::Resolve,
-          MomentResolvePass::texel_traffic(depth, shadow.technique, shadow.shadow_msaa));
+          MomentResolvePass::texel_traffic(depth, shadow.technique, depth_samples(shadow)));
     }
     if (uses_fused_filter(shadow)) {
-      set(GpuPass::FusedFilter, FusedFilterPass::texel_traffic(maps, shadow.blur, width, height,
-                                                               shared_bytes, shadow.shadow_msaa));
+      set(GpuPass::FusedFilter,
+          FusedFilterPass::texel_traffic(maps, shadow.blur, width, height, shared_bytes,
+                                         depth_samples(shadow)));
     } else if (filter == FILTER_GAUSSIAN) {
       set(GpuPass::FilterHorizontal,
           GaussianBlurPass::texel_traffic(maps, shadow.blur, 0, width, height));

@@ -288,9 +288,9 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     shadow_views_drawn_ = shadow_pass_.execute(
         [&](int view) {
           shadow_casters_.draw(gpu_scene_, view, caster_depth(views[view]) == CasterDepth::Written,
-                               shadow.shadow_msaa);
+                               depth_samples(shadow));
         },
-        drawn, shadow.map_size, stale, shadow.shadow_msaa);
+        drawn, shadow.map_size, stale, depth_samples(shadow));
   }
   // The resolve and the filters read every layer: they run again when a
   // view was drawn or the settings changed, else their output is current.

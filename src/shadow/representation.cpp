@@ -41,17 +41,21 @@ int filter_define(const ShadowSettings& settings) {
   return settings.filter == Filter::Sat ? FILTER_SAT : FILTER_GAUSSIAN;
 }
 
+int depth_samples(const ShadowSettings& settings) {
+  return is_filterable(settings.technique) ? settings.shadow_msaa : 1;
+}
+
 int max_fused_blur(const ShadowSettings& settings) {
-  if (settings.shadow_msaa <= 1 || !is_filterable(settings.technique)) return kMaxFusedBlur;
+  if (depth_samples(settings) <= 1) return kMaxFusedBlur;
   // The widest radius whose tile, staging the representation's channels,
   // fits the 32 KiB of shared memory every GL 4.5 device has, so the plan
   // is the same on every device.
   constexpr int kMinSharedBytes = 32768;
   const GLenum format = representation_format(settings.technique);
   int radius = kMaxFusedBlur;
-  while (radius > 0 && FusedFilterPass::tile_rows(
-                           radius, channel_count(format), kMinSharedBytes,
-                           FusedFilterPass::staged_channels(format, settings.shadow_msaa)) == 0) {
+  while (radius > 0 && FusedFilterPass::tile_rows(radius, channel_count(format), kMinSharedBytes,
+                                                  FusedFilterPass::staged_channels(
+                                                      format, depth_samples(settings))) == 0) {
     --radius;
   }
   return radius;

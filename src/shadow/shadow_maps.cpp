@@ -315,7 +315,7 @@ void ShadowMaps::render(const DrawCasters& draw) {
                         .view_projection = m.block.views[view].view_projection,
                         .program = program});
       },
-      views, s.map_size, stale, s.shadow_msaa);
+      views, s.map_size, stale, depth_samples(s));
 
   // The resolve and the filter read every layer: run again when a view was
   // drawn or the settings changed, else their output is still current.

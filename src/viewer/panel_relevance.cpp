@@ -23,11 +23,13 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
   const bool positional = has_light(lights, LightType::Spot) || has_light(lights, LightType::Point);
   const bool directional = has_light(lights, LightType::Directional);
 
-  if (name == "shadow-map-size" || name == "shadow-msaa" || name == "constant-bias" ||
-      name == "slope-bias" || name == "max-slope" || name == "normal-offset") {
+  if (name == "shadow-map-size" || name == "constant-bias" || name == "slope-bias" ||
+      name == "max-slope" || name == "normal-offset") {
     return shadowed;
   }
-  if (name == "filter" || name == "blur" || name == "filter-slope-bias") return is_filterable(t);
+  if (name == "filter" || name == "blur" || name == "filter-slope-bias" || name == "shadow-msaa") {
+    return is_filterable(t);
+  }
   if (name == "pcf-width" || name == "pcf-samples") return t == Technique::Pcf;
   if (name == "pcss-blocker-samples" || name == "pcss-filter-samples")
     return t == Technique::Pcss || t == Technique::Backprojection;

@@ -15,6 +15,15 @@ int technique_define(Technique technique);
 // The value of the SHADOW_FILTER define (FILTER_*) for the shadow settings.
 int filter_define(const ShadowSettings& settings);
 
+// Samples per texel of the depth maps the casters are drawn into:
+// --shadow-msaa for the filterable techniques, whose resolve averages the
+// samples' moments; 1 for those that read depth (hard, pcf, pcss,
+// backprojection): a binary test reads one depth per texel, and the one
+// samples can give it (the nearest, what --soft's blocker search reads)
+// measured worse against the traced reference than the texel centre's
+// (docs/rendering.md), so their maps are drawn as at 1.
+int depth_samples(const ShadowSettings& settings);
+
 // The widest radius the fused resolve + Gaussian takes: kMaxFusedBlur, or
 // with --shadow-msaa above 1, where each staged texel holds the mean of its
 // samples' moments, the widest whose tile still fits 32 KiB of shared

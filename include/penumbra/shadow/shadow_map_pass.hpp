@@ -13,7 +13,7 @@
 // full-screen pass; only a point light's faces (radial depth, RADIAL_DEPTH
 // 1 in the caster shaders) write it.
 //
-// With more than one sample per texel (--shadow-msaa), the views are drawn
+// With more than one sample per texel (depth_samples()), the views are drawn
 // into a multisampled array of the same layout (a spot view's scratch layer
 // is multisampled too, and linearized sample by sample), which the moment
 // resolves read (sampled_depth_maps()); depth_maps() then holds the nearest
