@@ -126,19 +126,9 @@ def model(shape):
                     tris.append((ids[0], ids[k], ids[k + 1]))
                     corner_normals.append((nids[0], nids[k], nids[k + 1]))
     if tris and all(i is not None for c in corner_normals for i in c):
-        out_verts, out_normals, out_tris, index = [], [], [], {}
-        for tri, nids in zip(tris, corner_normals):
-            corner_ids = []
-            for i, j in zip(tri, nids):
-                n = tuple(Vector(file_normals[j]).normalized())
-                key = (verts[i], n)
-                if key not in index:
-                    index[key] = len(out_verts)
-                    out_verts.append(verts[i])
-                    out_normals.append(n)
-                corner_ids.append(index[key])
-            out_tris.append(tuple(corner_ids))
-        return out_verts, out_tris, out_normals
+        normals = [[tuple(Vector(file_normals[j]).normalized()) for j in nids]
+                   for nids in corner_normals]
+        return share_vertices(verts, tris, normals)
     face_normals = []  # area-weighted (the cross product's length is twice the area)
     for a, b, c in tris:
         e1 = Vector(verts[b]) - Vector(verts[a])
@@ -149,18 +139,28 @@ def model(shape):
         for i in tri:
             around.setdefault(verts[i], []).append(t)
     cos_crease = math.cos(math.radians(CREASE_DEGREES))
-    # Corners with the same position and normal share a vertex.
-    out_verts, out_normals, out_tris, index = [], [], [], {}
+    normals = []
     for t, tri in enumerate(tris):
         own = face_normals[t].normalized() if face_normals[t].length > 0 else Vector((0, 1, 0))
-        corner_ids = []
+        corners = []
         for i in tri:
             n = Vector((0.0, 0.0, 0.0))
             for u in around[verts[i]]:
                 m = face_normals[u]
                 if m.length > 0 and m.normalized().dot(own) >= cos_crease:
                     n += m
-            n = tuple(n.normalized() if n.length > 0 else own)
+            corners.append(tuple(n.normalized() if n.length > 0 else own))
+        normals.append(corners)
+    return share_vertices(verts, tris, normals)
+
+
+def share_vertices(verts, tris, normals):
+    # One vertex per distinct (position, normal) pair of the triangles'
+    # corners; normals[t][k] is corner k of triangle t's normal.
+    out_verts, out_normals, out_tris, index = [], [], [], {}
+    for tri, corners in zip(tris, normals):
+        corner_ids = []
+        for i, n in zip(tri, corners):
             key = (verts[i], n)
             if key not in index:
                 index[key] = len(out_verts)

@@ -14,6 +14,7 @@
 #include "render/accumulator.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -24,10 +25,7 @@ using testing::GpuTest;
 // maps from a spot light 1.5 wide: the default scene's setting of the
 // tests below.
 RenderSettings shadow_view(int width, int height) {
-  RenderSettings rs;
-  rs.width = width;
-  rs.height = height;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(width, height);
   return rs;
 }
 

@@ -21,6 +21,7 @@
 #include "render/renderer.hpp"
 #include "render/surface_points.hpp"
 #include "scene/scene.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -33,30 +34,16 @@ constexpr double kSlabEdge = 0.5;  // the slab covers x < kSlabEdge
 constexpr double kSourceWidth = 0.5;
 
 Scene edge_scene() {
-  Scene scene;
-  scene.name = "edge";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {16.0f, 0.0f, 16.0f};
-  scene.shapes.push_back(ground);
-  Shape slab;  // x in [-3.5, 0.5], z in [-2, 2], y in [1.9, 2]
-  slab.kind = ShapeKind::Box;
-  slab.size = {4.0f, 0.1f, 4.0f};
-  slab.position = {float(kSlabEdge) - 2.0f, float(kSlabTop) - 0.05f, 0.0f};
-  scene.shapes.push_back(slab);
   // Close above the penumbra, a few pixels per shadow-map texel.
   const float penumbra_x = float(kSlabEdge * kLightHeight / (kLightHeight - kSlabTop));
-  scene.camera.position = {penumbra_x, 0.45f, 0.25f};
-  scene.camera.target = {penumbra_x, 0.0f, 0.0f};
-  Light light;
-  light.type = LightType::Spot;
-  light.position = {0.0f, float(kLightHeight), 0.0f};
-  light.direction = {0.0f, -1.0f, 0.0f};
-  light.cone_degrees = 25.0f;  // a 1024^2 map: 9 mm texels on the ground
-  light.inner_cone_degrees = 20.0f;
-  scene.lights.push_back(light);
-  return scene;
+  return testing::TestScene("edge")
+      .ground(16.0f)
+      // x in [-3.5, 0.5], z in [-2, 2], y in [1.9, 2]
+      .box({float(kSlabEdge) - 2.0f, float(kSlabTop) - 0.05f, 0.0f}, {4.0f, 0.1f, 4.0f})
+      .camera({penumbra_x, 0.45f, 0.25f}, {penumbra_x, 0.0f, 0.0f})
+      // cone 25 degrees: a 1024^2 map has 9 mm texels on the ground
+      .light(
+          testing::spot_light({0.0f, float(kLightHeight), 0.0f}, {0.0f, 0.0f, 0.0f}, 25.0f, 20.0f));
 }
 
 // Integral over t in [lo, hi] of 1 / (a + t^2)^2.
@@ -108,10 +95,7 @@ struct EdgeError {
 
 EdgeError edge_error(Technique technique, int map_size) {
   Renderer renderer(edge_scene());
-  RenderSettings rs;
-  rs.width = 320;
-  rs.height = 240;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(320, 240);
   ShadowSettings s;
   s.technique = technique;
   s.map_size = map_size;
@@ -173,33 +157,13 @@ TEST_F(GpuTest, BackprojectionHasNoSawtoothAcrossAStraightEdge) {
 // error) as the yardstick: point light 0.0052 against pcss's 0.0887, sun
 // 0.0020 against 0.0045.
 Scene floating_box(LightType type) {
-  Scene scene;
-  scene.name = "floating box";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {14.0f, 0.0f, 14.0f};
-  scene.shapes.push_back(ground);
-  Shape box;
-  box.kind = ShapeKind::Box;
-  box.size = glm::vec3(1.0f);
-  box.position = {0.0f, 1.2f, 0.0f};
-  scene.shapes.push_back(box);
-  Shape post;  // standing on the ground: a contact shadow beside the wide one
-  post.kind = ShapeKind::Box;
-  post.size = {0.3f, 1.0f, 0.3f};
-  post.position = {1.6f, 0.5f, 1.0f};
-  scene.shapes.push_back(post);
-  scene.camera.position = {0.0f, 6.0f, 5.0f};
-  scene.camera.target = {0.3f, 0.0f, 0.3f};
-  scene.camera.fov_y_degrees = 50.0f;
-  Light light;
-  light.type = type;
-  light.position = {0.6f, 4.0f, 0.3f};                             // point light
-  light.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));  // sun
-  light.intensity = type == LightType::Point ? 30.0f : 1.0f;
-  scene.lights.push_back(light);
-  return scene;
+  return testing::TestScene("floating box")
+      .ground(14.0f)
+      .box({0.0f, 1.2f, 0.0f}, glm::vec3(1.0f))
+      // standing on the ground: a contact shadow beside the wide one
+      .box({1.6f, 0.5f, 1.0f}, {0.3f, 1.0f, 0.3f})
+      .camera({0.0f, 6.0f, 5.0f}, {0.3f, 0.0f, 0.3f}, 50.0f)
+      .light(testing::overhead_light(type));
 }
 
 struct SoftErrors {
@@ -208,10 +172,7 @@ struct SoftErrors {
 
 SoftErrors soft_errors(LightType type) {
   Renderer renderer(floating_box(type));
-  RenderSettings rs;
-  rs.width = 200;
-  rs.height = 150;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(200, 150);
   ShadowSettings s;
   s.map_size = 1024;
   s.light_size = 0.6f;  // the point light's sphere

@@ -10,6 +10,7 @@
 #include "gpu_fixture.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -25,10 +26,7 @@ Scene sunlit_scene() {
 
 TEST_F(GpuTest, EveryVisiblePixelFallsInACascade) {
   Renderer renderer(sunlit_scene());
-  RenderSettings rs;
-  rs.width = 192;
-  rs.height = 128;
-  rs.view = View::Cascades;
+  RenderSettings rs = testing::small_frame(192, 128, View::Cascades);
   for (int cascades = 1; cascades <= 4; ++cascades) {
     ShadowSettings shadow;
     shadow.map_size = 256;
@@ -76,10 +74,7 @@ glm::vec2 map_origin(const LightView& v) {
 
 TEST_F(GpuTest, SubTexelCameraMovesLeaveTheCascadeMapsUnchanged) {
   Renderer renderer(sunlit_scene());
-  RenderSettings rs;
-  rs.width = 128;
-  rs.height = 96;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(128, 96);
   ShadowSettings shadow;
   shadow.map_size = 256;
   const Camera start = renderer.scene().camera;
@@ -139,34 +134,16 @@ TEST_F(GpuTest, SubTexelCameraMovesLeaveTheCascadeMapsUnchanged) {
 // cascade fitted to its own slice alone would miss the blend band in
 // front of it, where the previous cascade blends into it.
 Scene wall_scene() {
-  Scene scene;
-  scene.name = "wall";
-  scene.materials = {{"grey", {0.7f, 0.7f, 0.7f}, {0.0f, 0.0f, 0.0f}, 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {200.0f, 0.0f, 200.0f};
-  scene.shapes.push_back(ground);
-  Shape wall;
-  wall.kind = ShapeKind::Box;
-  wall.position = {0.0f, 1.0f, 0.0f};
-  wall.size = {0.3f, 2.0f, 160.0f};
-  scene.shapes.push_back(wall);
-  scene.camera.position = {4.0f, 4.0f, 70.0f};
-  scene.camera.target = {1.5f, 0.0f, -40.0f};
-  scene.camera.fov_y_degrees = 8.0f;
-  Light sun;
-  sun.type = LightType::Directional;
-  sun.direction = glm::normalize(glm::vec3(1.0f, -0.8f, 0.15f));
-  scene.lights.push_back(sun);
-  return scene;
+  return testing::TestScene("wall")
+      .ground(200.0f)
+      .box({0.0f, 1.0f, 0.0f}, {0.3f, 2.0f, 160.0f})
+      .camera({4.0f, 4.0f, 70.0f}, {1.5f, 0.0f, -40.0f}, 8.0f)
+      .light(testing::sun_light({1.0f, -0.8f, 0.15f}));
 }
 
 TEST_F(GpuTest, CascadeBlendBandsReadOnlyWhereTheNextCascadeHasData) {
   Renderer renderer(wall_scene());
-  RenderSettings rs;
-  rs.width = 160;
-  rs.height = 120;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(160, 120);
   ShadowSettings shadow;
   shadow.map_size = 1024;
   shadow.cascades = 2;

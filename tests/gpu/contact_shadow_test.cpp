@@ -13,6 +13,7 @@
 #include "gpu_fixture.hpp"
 #include "reference/traced_reference.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -23,29 +24,11 @@ constexpr float kBoxSize = 1.5f;
 
 // A box on a plane, lit by a spot light at `light` in front of it (+z).
 Scene box_scene(const glm::vec3& light) {
-  Scene scene;
-  scene.name = "box";
-  scene.materials = {{"grey", {0.7f, 0.7f, 0.7f}, {0.0f, 0.0f, 0.0f}, 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {16.0f, 0.0f, 16.0f};
-  scene.shapes.push_back(ground);
-  Shape box;
-  box.kind = ShapeKind::Box;
-  box.position = {0.0f, 0.5f * kBoxSize, 0.0f};
-  box.size = glm::vec3(kBoxSize);
-  scene.shapes.push_back(box);
-  scene.camera.position = {0.0f, 3.0f, 6.0f};
-  scene.camera.target = {0.0f, 0.5f, 0.0f};
-  scene.camera.fov_y_degrees = 40.0f;
-  Light spot;
-  spot.type = LightType::Spot;
-  spot.position = light;
-  spot.direction = glm::normalize(-spot.position);
-  spot.cone_degrees = 40.0f;
-  spot.inner_cone_degrees = 35.0f;
-  scene.lights.push_back(spot);
-  return scene;
+  return testing::TestScene("box")
+      .ground(16.0f)
+      .box({0.0f, 0.5f * kBoxSize, 0.0f}, glm::vec3(kBoxSize))
+      .camera({0.0f, 3.0f, 6.0f}, {0.0f, 0.5f, 0.0f}, 40.0f)
+      .light(testing::spot_light(light, glm::vec3(0.0f), 40.0f, 35.0f));
 }
 
 // Low in front (the light meets the ground at the foot at 25 degrees) and
@@ -54,10 +37,7 @@ class ContactTest : public GpuTest, public ::testing::WithParamInterface<glm::ve
 
 TEST_P(ContactTest, GroundAtTheFootOfALitFaceIsNotDarkened) {
   Renderer renderer(box_scene(GetParam()));
-  RenderSettings rs;
-  rs.width = 240;
-  rs.height = 136;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(240, 136);
   for (float light_size : {0.5f, 1.5f}) {
     ShadowSettings base;
     base.map_size = 512;

@@ -19,6 +19,7 @@
 #include "gpu_fixture.hpp"
 #include "reference/shadow_ray_tracer.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -152,10 +153,7 @@ TEST_F(GpuTest, TracedReferenceAgreesAcrossEmbreeInstructionSets) {
   constexpr int kSamples = 16;
   for (const IsaScene& test : isa_scenes()) {
     Renderer renderer(test.scene);
-    RenderSettings view;
-    view.width = 96;
-    view.height = 54;
-    view.view = View::Shadow;
+    RenderSettings view = testing::small_frame(96, 54);
     ShadowSettings settings;
     settings.technique = Technique::None;
     settings.map_size = 256;

@@ -17,6 +17,7 @@
 #include "penumbra/shadow/representation.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -139,10 +140,7 @@ TEST_F(GpuTest, FusedAndTwoPassRenderTheSameShadows) {
   point.position = {0.5f, 4.5f, 1.0f};
   point.intensity = 60.0f;
   Renderer renderer(scene);
-  RenderSettings render;
-  render.width = 96;
-  render.height = 64;
-  render.view = View::Shadow;
+  RenderSettings render = testing::small_frame(96, 64);
   for (const std::vector<Light>& lights : {scene.lights, std::vector<Light>{point}}) {
     renderer.set_lights(lights);
     for (Technique technique : kFilterable) {

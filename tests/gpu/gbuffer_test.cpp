@@ -3,6 +3,7 @@
 // through a second transfer curve.
 #include "gpu_fixture.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -35,10 +36,7 @@ Scene two_planes(float left_albedo, float right_albedo) {
 TEST_F(GpuTest, AlbedoViewReturnsTheLinearAlbedo) {
   const float left = 0.2f, right = 0.7f;
   Renderer renderer(two_planes(left, right));
-  RenderSettings rs;
-  rs.width = 64;
-  rs.height = 64;
-  rs.view = View::Albedo;
+  RenderSettings rs = testing::small_frame(64, 64, View::Albedo);
   renderer.render(rs, ShadowSettings{});
   const Image image = renderer.read_view();
   // sRGB 8-bit steps are below 0.004 in linear units over this range.

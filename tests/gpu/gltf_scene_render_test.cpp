@@ -15,6 +15,7 @@
 #include "reference/traced_reference.hpp"
 #include "render/renderer.hpp"
 #include "scene/gltf_scene.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -56,10 +57,7 @@ std::optional<glm::vec3> ground_point(glm::vec3 eye, glm::vec3 target, float yfo
 }
 
 RenderSettings shadow_view() {
-  RenderSettings rs;
-  rs.width = kSize;
-  rs.height = kSize;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(kSize, kSize);
   return rs;
 }
 

@@ -4,6 +4,7 @@
 
 #include "gpu_fixture.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -14,23 +15,11 @@ constexpr float kBoxHalf = 0.5f;
 constexpr float kBoxBottom = 1.5f;
 
 Scene box_above_plane(const Light& light) {
-  Scene scene;
-  scene.name = "box above plane";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape plane;
-  plane.kind = ShapeKind::Plane;
-  plane.size = {12.0f, 0.0f, 12.0f};
-  scene.shapes.push_back(plane);
-  Shape box;
-  box.kind = ShapeKind::Box;
-  box.size = glm::vec3(2.0f * kBoxHalf);
-  box.position = {0.0f, kBoxBottom + kBoxHalf, 0.0f};
-  scene.shapes.push_back(box);
-  scene.camera.position = {0.0f, 9.0f, 5.0f};
-  scene.camera.target = {0.0f, 0.0f, 0.0f};
-  scene.camera.fov_y_degrees = 50.0f;
-  scene.lights.push_back(light);
-  return scene;
+  return testing::TestScene("box above plane")
+      .ground(12.0f)
+      .box({0.0f, kBoxBottom + kBoxHalf, 0.0f}, glm::vec3(2.0f * kBoxHalf))
+      .camera({0.0f, 9.0f, 5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f)
+      .light(light);
 }
 
 // Where the camera ray through a pixel meets the plane y = 0, if it meets
@@ -63,10 +52,7 @@ struct PlaneStats {
 PlaneStats measure(const Light& light, const ShadowSettings& shadow) {
   Scene scene = box_above_plane(light);
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 256;
-  rs.height = 256;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(256, 256);
   renderer.render(rs, shadow);
   Image image = renderer.read_view();
   PlaneStats stats;
@@ -179,10 +165,7 @@ TEST_F(GpuTest, ContactShadowHasNoGapAtTheFoot) {
   scene.shapes[1].position.y = kBoxHalf;       // resting on the ground
   scene.camera.position = {5.0f, 4.0f, 3.0f};  // looking at the shadowed side
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 512;
-  rs.height = 512;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(512, 512);
   ShadowSettings shadow;
   shadow.map_size = 1024;
   renderer.render(rs, shadow);

@@ -20,6 +20,7 @@
 #include "render/renderer.hpp"
 #include "scene/mesh.hpp"
 #include "scene/model.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -60,37 +61,20 @@ std::shared_ptr<Model> bent_card_stack() {
 }
 
 Scene card_stack_scene() {
-  Scene scene;
-  scene.name = "bent-normal cards";
-  scene.materials = {Material{"grey", glm::vec3(0.6f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {6.0f, 0.0f, 6.0f};
-  scene.shapes.push_back(ground);
   Shape cards;
   cards.kind = ShapeKind::Model;
   cards.model = bent_card_stack();
-  scene.shapes.push_back(cards);
-  scene.camera.position = {0.0f, 2.3f, 1.4f};
-  scene.camera.target = {0.0f, 1.1f, 0.0f};
-  scene.camera.fov_y_degrees = 22.0f;
-  Light spot;
-  spot.type = LightType::Spot;
-  spot.position = {-0.9f, 3.0f, 0.6f};
-  spot.direction = glm::normalize(glm::vec3(0.0f, 1.1f, 0.0f) - spot.position);
-  spot.cone_degrees = 30.0f;
-  spot.inner_cone_degrees = 25.0f;
-  scene.lights.push_back(spot);
-  return scene;
+  return testing::TestScene("bent-normal cards", 0.6f)
+      .ground(6.0f)
+      .shape(cards)
+      .camera({0.0f, 2.3f, 1.4f}, {0.0f, 1.1f, 0.0f}, 22.0f)
+      .light(testing::spot_light({-0.9f, 3.0f, 0.6f}, {0.0f, 1.1f, 0.0f}, 30.0f, 25.0f));
 }
 
 // The technique's mean shadow factor minus the reference's over the
 // cards' pixels the reference judges.
 double card_mean_error(Renderer& renderer, const ShadowSettings& shadow, int* cards) {
-  RenderSettings rs;
-  rs.width = 160;
-  rs.height = 120;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(160, 120);
   renderer.render(rs, shadow);
   const Image image = renderer.read_view();
   const TracedReference reference = traced_reference(renderer, rs, shadow, 256, "");

@@ -6,6 +6,7 @@
 
 #include "gpu_fixture.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -23,28 +24,11 @@ struct Combination {
 };
 
 Scene box_above_ground(LightType type) {
-  Scene scene;
-  scene.name = "box above ground";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {14.0f, 0.0f, 14.0f};
-  scene.shapes.push_back(ground);
-  Shape box;
-  box.kind = ShapeKind::Box;
-  box.size = glm::vec3(2.0f * kBoxHalf);
-  box.position = kBoxCenter;
-  scene.shapes.push_back(box);
-  scene.camera.position = {0.0f, 8.0f, 6.0f};
-  scene.camera.target = {0.0f, 0.0f, 0.0f};
-  scene.camera.fov_y_degrees = 50.0f;
-  Light light;
-  light.type = type;
-  light.position = {0.6f, 4.0f, 0.3f};                             // point light
-  light.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));  // sun
-  light.intensity = type == LightType::Point ? 30.0f : 1.0f;
-  scene.lights.push_back(light);
-  return scene;
+  return testing::TestScene("box above ground")
+      .ground(14.0f)
+      .box(kBoxCenter, glm::vec3(2.0f * kBoxHalf))
+      .camera({0.0f, 8.0f, 6.0f}, {0.0f, 0.0f, 0.0f}, 50.0f)
+      .light(testing::overhead_light(type));
 }
 
 // Whether the segment from p towards the light passes through the box
@@ -80,10 +64,7 @@ TEST_P(LightTypeTest, ShadowUnderTheCasterIsDarkerThanTheOpenGround) {
   shadow.soft = c.soft;
   shadow.map_size = 256;
   shadow.light_size = 0.2f;
-  RenderSettings rs;
-  rs.width = 128;
-  rs.height = 128;
-  rs.view = View::Final;
+  RenderSettings rs = testing::small_frame(128, 128, View::Final);
   renderer.render(rs, shadow);  // the lit image, for GL errors
   rs.view = View::Shadow;
   renderer.render(rs, shadow);
@@ -177,10 +158,7 @@ TEST_F(GpuTest, SeveralLightsEachReadTheirOwnViews) {
   shadow.technique = Technique::Pcf;
   shadow.map_size = 256;
   shadow.cascades = 2;
-  RenderSettings rs;
-  rs.width = 128;
-  rs.height = 128;
-  rs.view = View::Final;
+  RenderSettings rs = testing::small_frame(128, 128, View::Final);
   renderer.render(rs, shadow);
   EXPECT_EQ(renderer.first_view(0), 0);
   EXPECT_EQ(renderer.first_view(1), 6);

@@ -9,6 +9,7 @@
 #include "model_files.hpp"
 #include "render/renderer.hpp"
 #include "scene/model.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -75,10 +76,7 @@ struct Measured {
 Measured measure(const ShadowSettings& shadow) {
   const Scene scene = cube_model_above_plane();
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 128;
-  rs.height = 128;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(128, 128);
   renderer.render(rs, shadow);
   const Image factor = renderer.read_view();
   rs.view = View::Final;
@@ -146,10 +144,7 @@ TEST_F(GpuTest, MillionTriangleModelReceivesAShadow) {
   scene.camera.position = {0.0f, 8.0f, 4.0f};
   Renderer renderer(scene);
   ASSERT_EQ(renderer.mesh().indices.size() / 3, 2u * 708 * 708 + 12u);
-  RenderSettings rs;
-  rs.width = 64;
-  rs.height = 64;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(64, 64);
   ShadowSettings shadow;
   shadow.map_size = 512;
   renderer.render(rs, shadow);

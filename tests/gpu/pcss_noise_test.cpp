@@ -13,6 +13,7 @@
 #include "reference/traced_reference.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -77,10 +78,7 @@ ErrorParts error_parts(const Image& technique, const Image& reference) {
 // light, at 320x180.
 std::vector<ErrorParts> soft_errors(Renderer& renderer, float light_size,
                                     std::initializer_list<Technique> techniques) {
-  RenderSettings rs;
-  rs.width = 320;
-  rs.height = 180;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(320, 180);
   rs.light_index = 0;  // the key spot light
   ShadowSettings s;
   s.light_size = light_size;

@@ -6,6 +6,7 @@
 #include "gpu_fixture.hpp"
 #include "render/renderer.hpp"
 #include "shadow/cube_views.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -17,37 +18,22 @@ constexpr float kCasterHalf = 0.5f;  // the caster, a cube, is this half-wide
 constexpr float kCasterAt = 2.5f;    // ... and this far from the light
 
 Light point_light(const glm::vec3& position) {
-  Light light;
-  light.type = LightType::Point;
-  light.position = position;
-  light.intensity = 40.0f;
-  return light;
+  return testing::point_light(position, 40.0f);
 }
 
 // A closed room: six planes facing inwards, a point light at the centre,
 // a cube between the light and the wall in direction `axis`.
 Scene room_with_caster(const glm::vec3& axis) {
-  Scene scene;
-  scene.name = "room";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
+  testing::TestScene scene("room");
   // Rotations that turn a plane's +y normal to face +x, -x, +y, -y, +z, -z.
   const glm::vec3 rotations[kCubeFaces] = {{0, 0, -90}, {0, 0, 90}, {0, 0, 0},
                                            {180, 0, 0}, {90, 0, 0}, {-90, 0, 0}};
   for (int face = 0; face < kCubeFaces; ++face) {
-    Shape wall;
-    wall.kind = ShapeKind::Plane;
-    wall.size = {2.0f * kRoom, 0.0f, 2.0f * kRoom};
-    wall.position = -kRoom * cube_face_axis(face);  // the wall facing +axis lies at -axis
-    wall.rotation_degrees = rotations[face];
-    scene.shapes.push_back(wall);
+    // the wall facing +axis lies at -axis
+    scene.plane(-kRoom * cube_face_axis(face), 2.0f * kRoom, rotations[face]);
   }
-  Shape caster;
-  caster.kind = ShapeKind::Box;
-  caster.size = glm::vec3(2.0f * kCasterHalf);
-  caster.position = kCasterAt * axis;
-  scene.shapes.push_back(caster);
-  scene.lights.push_back(point_light(glm::vec3(0.0f)));
-  return scene;
+  return scene.box(kCasterAt * axis, glm::vec3(2.0f * kCasterHalf))
+      .light(point_light(glm::vec3(0.0f)));
 }
 
 // Whether the segment from p to the origin (the light) crosses the caster
@@ -78,10 +64,7 @@ TEST_F(GpuTest, PointLightShadowFallsOnTheWallBehindTheCaster) {
   for (int caster_face = 0; caster_face < kCubeFaces; ++caster_face) {
     const glm::vec3 axis = cube_face_axis(caster_face);
     Renderer renderer(room_with_caster(axis));
-    RenderSettings rs;
-    rs.width = 128;
-    rs.height = 128;
-    rs.view = View::Shadow;
+    RenderSettings rs = testing::small_frame(128, 128);
     ShadowSettings shadow;
     shadow.technique = Technique::Hard;
     shadow.map_size = 256;
@@ -141,29 +124,15 @@ struct SeamJump {
 };
 
 SeamJump measure_seam(const ShadowSettings& shadow) {
-  Scene scene;
-  scene.name = "seam";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {24.0f, 0.0f, 24.0f};
-  scene.shapes.push_back(ground);
-  Shape bar;
-  bar.kind = ShapeKind::Box;
-  bar.size = {3.0f, 0.15f, 0.3f};
-  bar.position = {1.1f, 1.0f, 0.6f};
-  bar.rotation_degrees = {0.0f, -45.0f, 0.0f};  // along (1, 0, 1)
-  scene.shapes.push_back(bar);
-  scene.lights.push_back(point_light({0.0f, 2.0f, 0.0f}));
-  scene.camera.position = {2.0f, 6.0f, 1.0f};
-  scene.camera.target = {2.0f, 0.0f, 1.0f};
+  Scene scene = testing::TestScene("seam")
+                    .ground(24.0f)
+                    // along (1, 0, 1)
+                    .box({1.1f, 1.0f, 0.6f}, {3.0f, 0.15f, 0.3f}, {0.0f, -45.0f, 0.0f})
+                    .light(point_light({0.0f, 2.0f, 0.0f}))
+                    .camera({2.0f, 6.0f, 1.0f}, {2.0f, 0.0f, 1.0f}, 30.0f);
   scene.camera.up = {0.0f, 0.0f, -1.0f};
-  scene.camera.fov_y_degrees = 30.0f;
   Renderer renderer(scene);
-  RenderSettings rs;
-  rs.width = 160;
-  rs.height = 160;
-  rs.view = View::Shadow;
+  const RenderSettings rs = testing::small_frame(160, 160);
   renderer.render(rs, shadow);
   const Image image = renderer.read_view();
   const SurfacePoints surfaces = renderer.read_surfaces();
@@ -235,10 +204,7 @@ TEST_F(GpuTest, PointLightShadowIsContinuousAcrossCubeFaceEdges) {
 // row, +x -x +y on top, -y +z -z below, each tile the face's map as it is.
 TEST_F(GpuTest, ShadowMapViewTilesTheCubeFaces) {
   Renderer renderer(room_with_caster(cube_face_axis(3)));
-  RenderSettings rs;
-  rs.width = 64;
-  rs.height = 64;
-  rs.view = View::ShadowMap;
+  RenderSettings rs = testing::small_frame(64, 64, View::ShadowMap);
   ShadowSettings shadow;
   shadow.map_size = 48;
   renderer.render(rs, shadow);

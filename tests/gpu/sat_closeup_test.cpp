@@ -10,6 +10,7 @@
 
 #include "gpu_fixture.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -25,29 +26,13 @@ constexpr float kEdgeX = -2.0f;        // the slab's shadow edge on the ground
 // camera looks down from close by at the straight edge of the slab's
 // shadow, which runs along z and so crosses every image row.
 Scene closeup_scene() {
-  Scene scene;
-  scene.name = "sat close-up";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {16.0f, 0.0f, 16.0f};
-  scene.shapes.push_back(ground);
-  Shape slab;  // x in [-3, -1] at height 5: its right edge projects to x = -2
-  slab.kind = ShapeKind::Box;
-  slab.size = {2.0f, 0.1f, 2.0f};
-  slab.position = {-2.0f, 0.5f * kLightHeight, 0.0f};
-  scene.shapes.push_back(slab);
-  scene.camera.position = {kEdgeX, 2.5f, 0.4f};
-  scene.camera.target = {kEdgeX, 0.0f, 0.0f};
-  scene.camera.fov_y_degrees = 40.0f;
-  Light light;
-  light.type = LightType::Spot;
-  light.position = {0.0f, kLightHeight, 0.0f};
-  light.direction = {0.0f, -1.0f, 0.0f};
-  light.cone_degrees = kConeDegrees;
-  light.inner_cone_degrees = kConeDegrees - 2.0f;
-  scene.lights.push_back(light);
-  return scene;
+  return testing::TestScene("sat close-up")
+      .ground(16.0f)
+      // x in [-3, -1] at height 5: its right edge projects to x = -2
+      .box({-2.0f, 0.5f * kLightHeight, 0.0f}, {2.0f, 0.1f, 2.0f})
+      .camera({kEdgeX, 2.5f, 0.4f}, {kEdgeX, 0.0f, 0.0f}, 40.0f)
+      .light(testing::spot_light({0.0f, kLightHeight, 0.0f}, {0.0f, 0.0f, 0.0f}, kConeDegrees,
+                                 kConeDegrees - 2.0f));
 }
 
 RenderSettings view_settings(View view) {

@@ -13,6 +13,7 @@
 #include "reference/shadow_metrics.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -49,10 +50,7 @@ ShadowMetrics measure(Renderer& renderer, const Case& c) {
   shadow.filter = c.filter;
   shadow.blur = c.blur;
   shadow.map_size = 1024;
-  RenderSettings rs;
-  rs.width = 240;
-  rs.height = 160;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(240, 160);
   renderer.render(rs, shadow);
   const Image technique = renderer.read_view();
   rs.view = View::ShadowReference;

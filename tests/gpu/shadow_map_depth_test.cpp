@@ -12,6 +12,7 @@
 
 #include "gpu_fixture.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -24,21 +25,12 @@ constexpr int kPlanes = 5;
 // A stack of tilted planes, wide enough to fill most views, lit by one
 // light.
 Scene plane_stack(const Light& light) {
-  Scene scene;
-  scene.name = "plane stack";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
+  testing::TestScene scene("plane stack");
   for (int i = 0; i < kPlanes; ++i) {
-    Shape plane;
-    plane.kind = ShapeKind::Plane;
-    plane.size = {14.0f, 0.0f, 14.0f};
-    plane.position = {0.0f, 0.3f * static_cast<float>(i), 0.0f};
-    plane.rotation_degrees = {12.0f + 2.0f * static_cast<float>(i), 0.0f, 7.0f};
-    scene.shapes.push_back(plane);
+    scene.plane({0.0f, 0.3f * static_cast<float>(i), 0.0f}, 14.0f,
+                {12.0f + 2.0f * static_cast<float>(i), 0.0f, 7.0f});
   }
-  scene.camera.position = {0.0f, 6.0f, 9.0f};
-  scene.camera.target = {0.0f, 0.5f, 0.0f};
-  scene.lights.push_back(light);
-  return scene;
+  return scene.camera({0.0f, 6.0f, 9.0f}, {0.0f, 0.5f, 0.0f}).light(light);
 }
 
 struct Hit {

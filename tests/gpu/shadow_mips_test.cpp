@@ -15,6 +15,7 @@
 #include "penumbra/shadow/representation.hpp"
 #include "reference/traced_reference.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -113,38 +114,17 @@ TEST_F(ShadowMipsTest, EachLevelIsTheMeanOfTheTwoByTwoTexelsBelow) {
 // almost overhead: a ground of shadow stripes 2 m apart that recede to the
 // horizon, where many stripes fall in one pixel.
 Scene pergola_scene() {
-  Scene scene;
-  scene.name = "pergola";
-  scene.materials = {{"grey", {0.7f, 0.7f, 0.7f}, {0.0f, 0.0f, 0.0f}, 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {40.0f, 0.0f, 260.0f};
-  ground.position = {0.0f, 0.0f, -100.0f};
-  scene.shapes.push_back(ground);
-  for (float z = 24.0f; z > -224.0f; z -= 2.0f) {
-    Shape slat;
-    slat.kind = ShapeKind::Box;
-    slat.size = {40.0f, 0.2f, 0.5f};
-    slat.position = {0.0f, 6.0f, z};
-    scene.shapes.push_back(slat);
-  }
-  scene.camera.position = {0.0f, 2.5f, 24.0f};
-  scene.camera.target = {0.0f, 0.6f, -20.0f};
-  scene.camera.fov_y_degrees = 40.0f;
-  Light sun;
-  sun.type = LightType::Directional;
-  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.2f));
+  testing::TestScene scene("pergola");
+  scene.ground(40.0f, 260.0f, {0.0f, 0.0f, -100.0f});
+  for (float z = 24.0f; z > -224.0f; z -= 2.0f) scene.box({0.0f, 6.0f, z}, {40.0f, 0.2f, 0.5f});
+  Light sun = testing::sun_light({0.3f, -1.0f, -0.2f});
   sun.intensity = 2.5f;
-  scene.lights.push_back(sun);
-  return scene;
+  return scene.camera({0.0f, 2.5f, 24.0f}, {0.0f, 0.6f, -20.0f}, 40.0f).light(sun);
 }
 
 TEST_F(ShadowMipsTest, TheRenderersMapsCarryTheChainOfTheirMoments) {
   Renderer renderer(pergola_scene());
-  RenderSettings rs;
-  rs.width = 64;
-  rs.height = 36;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(64, 36);
   for (const Technique technique : {Technique::Msm, Technique::Msm16, Technique::Evsm2}) {
     for (const bool fused : {true, false}) {
       ShadowSettings shadow;
@@ -230,10 +210,7 @@ double rmse(const Image& image, const Image& reference, float distance) {
 
 TEST_F(ShadowMipsTest, MipsBringTheFarGroundCloserToItsAreaAveragedShadow) {
   Renderer renderer(pergola_scene());
-  RenderSettings rs;
-  rs.width = 160;
-  rs.height = 90;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(160, 90);
   ShadowSettings base;
   base.map_size = 512;
   const Image reference = ground_reference(renderer, rs, base, 4);

@@ -25,6 +25,7 @@
 #include "render/renderer.hpp"
 #include "scene/mesh.hpp"
 #include "scene/model.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -71,37 +72,20 @@ std::shared_ptr<Model> coarse_sphere() {
 // The sphere over a plane, seen from the front, a spot light to its right
 // and a little above, so that the terminator runs down the sphere's middle.
 Scene sphere_scene() {
-  Scene scene;
-  scene.name = "coarse sphere";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {12.0f, 0.0f, 12.0f};
-  scene.shapes.push_back(ground);
   Shape sphere;
   sphere.kind = ShapeKind::Model;
   sphere.model = coarse_sphere();
   sphere.position = kCentre;
-  scene.shapes.push_back(sphere);
-  scene.camera.position = {0.0f, 1.5f, 4.5f};
-  scene.camera.target = kCentre;
-  scene.camera.fov_y_degrees = 30.0f;
-  Light spot;
-  spot.type = LightType::Spot;
-  spot.position = {6.0f, 2.5f, 0.0f};
-  spot.direction = glm::normalize(kCentre - spot.position);
-  spot.cone_degrees = 25.0f;
-  spot.inner_cone_degrees = 20.0f;
-  scene.lights.push_back(spot);
-  return scene;
+  return testing::TestScene("coarse sphere")
+      .ground(12.0f)
+      .shape(sphere)
+      .camera({0.0f, 1.5f, 4.5f}, kCentre, 30.0f)
+      .light(testing::spot_light({6.0f, 2.5f, 0.0f}, kCentre, 25.0f, 20.0f));
 }
 
 TEST_F(GpuTest, ShadowLookupsStartOnTheSmoothSurfaceOfACoarseMesh) {
   Renderer renderer(sphere_scene());
-  RenderSettings rs;
-  rs.width = 160;
-  rs.height = 120;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(160, 120);
   ShadowSettings shadow;  // hard shadows from a point, the default biases
   shadow.map_size = 1024;
   shadow.light_size = 0.0f;

@@ -10,6 +10,7 @@
 #include "reference/shadow_ray_tracer.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -17,10 +18,7 @@ namespace {
 using testing::GpuTest;
 
 RenderSettings shadow_view(int width = 256, int height = 192) {
-  RenderSettings rs;
-  rs.width = width;
-  rs.height = height;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(width, height);
   return rs;
 }
 
@@ -105,33 +103,13 @@ constexpr float kLightHeight = 10.0f;
 constexpr float kSlabHeight = 5.0f;
 
 Scene contact_scene() {
-  Scene scene;
-  scene.name = "contact";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {16.0f, 0.0f, 16.0f};
-  scene.shapes.push_back(ground);
-  Shape box;  // x in [2.5, 3.5], resting on the ground
-  box.kind = ShapeKind::Box;
-  box.size = glm::vec3(1.0f);
-  box.position = {3.0f, 0.5f, 0.0f};
-  scene.shapes.push_back(box);
-  Shape slab;  // x in [-4, -2] at height 5: its shadow's right edge near x = -4
-  slab.kind = ShapeKind::Box;
-  slab.size = {2.0f, 0.1f, 2.0f};
-  slab.position = {-3.0f, kSlabHeight, 0.0f};
-  scene.shapes.push_back(slab);
-  scene.camera.position = {0.0f, 12.0f, 6.0f};
-  scene.camera.target = {0.0f, 0.0f, 0.0f};
-  Light light;
-  light.type = LightType::Spot;
-  light.position = {0.0f, kLightHeight, 0.0f};
-  light.direction = {0.0f, -1.0f, 0.0f};
-  light.cone_degrees = 50.0f;
-  light.inner_cone_degrees = 45.0f;
-  scene.lights.push_back(light);
-  return scene;
+  return testing::TestScene("contact")
+      .ground(16.0f)
+      .box({3.0f, 0.5f, 0.0f}, glm::vec3(1.0f))  // x in [2.5, 3.5], resting on the ground
+      // x in [-4, -2] at height 5: its shadow's right edge near x = -4
+      .box({-3.0f, kSlabHeight, 0.0f}, {2.0f, 0.1f, 2.0f})
+      .camera({0.0f, 12.0f, 6.0f}, {0.0f, 0.0f, 0.0f})
+      .light(testing::spot_light({0.0f, kLightHeight, 0.0f}, {0.0f, 0.0f, 0.0f}, 50.0f, 45.0f));
 }
 
 // The shadow factor along a ground line from `inside` to `outside`, 401

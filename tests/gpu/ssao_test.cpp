@@ -14,6 +14,7 @@
 #include "render/renderer.hpp"
 #include "render/ssao_kernel.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -24,20 +25,11 @@ constexpr int kWidth = 256;
 constexpr int kHeight = 192;
 
 Scene plane_scene(glm::vec3 camera, glm::vec3 target, glm::vec3 up = {0.0f, 1.0f, 0.0f}) {
-  Scene scene;
-  scene.name = "ssao test";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape plane;
-  plane.kind = ShapeKind::Plane;
-  plane.size = {40.0f, 0.0f, 40.0f};
-  scene.shapes.push_back(plane);
-  scene.camera.position = camera;
-  scene.camera.target = target;
+  Scene scene = testing::TestScene("ssao test")
+                    .ground(40.0f)
+                    .camera(camera, target, 45.0f)
+                    .light(testing::sun_light({0.0f, -1.0f, 0.0f}));
   scene.camera.up = up;
-  scene.camera.fov_y_degrees = 45.0f;
-  Light light;
-  light.type = LightType::Directional;
-  scene.lights.push_back(light);
   return scene;
 }
 
@@ -58,10 +50,7 @@ void add_sphere(Scene& scene, glm::vec3 center, float radius) {
 }
 
 RenderSettings ao_view(int width = kWidth, int height = kHeight) {
-  RenderSettings rs;
-  rs.width = width;
-  rs.height = height;
-  rs.view = View::Ao;
+  RenderSettings rs = testing::small_frame(width, height, View::Ao);
   return rs;
 }
 

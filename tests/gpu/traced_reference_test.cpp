@@ -10,6 +10,7 @@
 #include "reference/shadow_ray_tracer.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -17,10 +18,7 @@ namespace {
 using testing::GpuTest;
 
 RenderSettings small_view(int light) {
-  RenderSettings rs;
-  rs.width = 192;
-  rs.height = 128;
-  rs.view = View::Shadow;
+  RenderSettings rs = testing::small_frame(192, 128);
   rs.light_index = light;
   return rs;
 }

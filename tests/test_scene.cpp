@@ -1,0 +1,101 @@
+#include "test_scene.hpp"
+
+#include <utility>
+
+namespace penumbra::testing {
+
+TestScene::TestScene(std::string name, float albedo) {
+  scene_.name = std::move(name);
+  scene_.materials = {Material{"grey", glm::vec3(albedo), glm::vec3(0.0f), 8.0f}};
+}
+
+TestScene& TestScene::ground(float width, float depth, const glm::vec3& centre) {
+  Shape plane;
+  plane.kind = ShapeKind::Plane;
+  plane.size = {width, 0.0f, depth > 0.0f ? depth : width};
+  plane.position = centre;
+  return shape(std::move(plane));
+}
+
+TestScene& TestScene::plane(const glm::vec3& centre, float width,
+                            const glm::vec3& rotation_degrees) {
+  Shape plane;
+  plane.kind = ShapeKind::Plane;
+  plane.size = {width, 0.0f, width};
+  plane.position = centre;
+  plane.rotation_degrees = rotation_degrees;
+  return shape(std::move(plane));
+}
+
+TestScene& TestScene::box(const glm::vec3& centre, const glm::vec3& size,
+                          const glm::vec3& rotation_degrees) {
+  Shape box;
+  box.kind = ShapeKind::Box;
+  box.size = size;
+  box.position = centre;
+  box.rotation_degrees = rotation_degrees;
+  return shape(std::move(box));
+}
+
+TestScene& TestScene::shape(Shape shape) {
+  scene_.shapes.push_back(std::move(shape));
+  return *this;
+}
+
+TestScene& TestScene::camera(const glm::vec3& position, const glm::vec3& target,
+                             std::optional<float> fov_y_degrees) {
+  scene_.camera.position = position;
+  scene_.camera.target = target;
+  if (fov_y_degrees) scene_.camera.fov_y_degrees = *fov_y_degrees;
+  return *this;
+}
+
+TestScene& TestScene::light(const Light& light) {
+  scene_.lights.push_back(light);
+  return *this;
+}
+
+Light spot_light(const glm::vec3& position, const glm::vec3& target, float cone_degrees,
+                 float inner_cone_degrees) {
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.position = position;
+  spot.direction = glm::normalize(target - position);
+  spot.cone_degrees = cone_degrees;
+  spot.inner_cone_degrees = inner_cone_degrees;
+  return spot;
+}
+
+Light sun_light(const glm::vec3& direction) {
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(direction);
+  return sun;
+}
+
+Light point_light(const glm::vec3& position, float intensity) {
+  Light point;
+  point.type = LightType::Point;
+  point.position = position;
+  point.intensity = intensity;
+  return point;
+}
+
+Light overhead_light(LightType type) {
+  Light light;
+  light.type = type;
+  light.position = {0.6f, 4.0f, 0.3f};
+  light.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
+  light.intensity = type == LightType::Point ? 30.0f : 1.0f;
+  return light;
+}
+
+RenderSettings small_frame(int width, int height, View view) {
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.view = view;
+  return settings;
+}
+
+}  // namespace penumbra::testing
