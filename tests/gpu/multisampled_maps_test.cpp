@@ -18,6 +18,7 @@
 #include "penumbra/shadow/representation.hpp"
 #include "penumbra/shadow_maps.hpp"
 #include "render/renderer.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -275,33 +276,15 @@ TEST(MultisampledPlan, FourMomentFusedRadiusFitsTheSharedMemoryEveryDeviceHas) {
   EXPECT_TRUE(uses_fused_filter(s));
 }
 
-// A scene of a box over a ground under one light of each type: its views
-// (a spot view, the cascades, six cube faces) multisampled give the shadow
-// of one sample up to antialiasing at its edges.
+// A box over a ground under one light of each type: its views (a spot
+// view, the cascades, six cube faces) multisampled give the shadow of one
+// sample up to antialiasing at its edges.
 Scene box_scene(LightType type) {
-  Scene scene;
-  scene.name = "box";
-  scene.materials = {Material{"grey", glm::vec3(0.7f), glm::vec3(0.0f), 8.0f}};
-  Shape ground;
-  ground.kind = ShapeKind::Plane;
-  ground.size = {12.0f, 0.0f, 12.0f};
-  scene.shapes.push_back(ground);
-  Shape box;
-  box.kind = ShapeKind::Box;
-  box.size = {1.0f, 1.0f, 1.0f};
-  box.position = {0.0f, 1.5f, 0.0f};
-  box.rotation_degrees = {0.0f, 20.0f, 0.0f};
-  scene.shapes.push_back(box);
-  scene.camera.position = {0.0f, 6.0f, 7.0f};
-  scene.camera.target = {0.0f, 0.0f, 0.0f};
-  Light light;
-  light.type = type;
-  light.position = {0.7f, 5.0f, 0.4f};
-  light.direction = glm::normalize(glm::vec3(-0.15f, -1.0f, -0.1f));
-  light.cone_degrees = 60.0f;
-  if (type == LightType::Point) light.position = {0.6f, 3.5f, 0.3f};
-  scene.lights.push_back(light);
-  return scene;
+  return testing::TestScene("box")
+      .ground(12.0f)
+      .box({0.0f, 1.5f, 0.0f}, glm::vec3(1.0f), {0.0f, 20.0f, 0.0f})
+      .camera({0.0f, 6.0f, 7.0f}, {0.0f, 0.0f, 0.0f})
+      .light(testing::overhead_light(type));
 }
 
 class MultisampledLightTypes : public GpuTest, public ::testing::WithParamInterface<LightType> {};
@@ -309,10 +292,7 @@ class MultisampledLightTypes : public GpuTest, public ::testing::WithParamInterf
 TEST_P(MultisampledLightTypes, ShadowMatchesOneSampleAwayFromEdges) {
   const Scene scene = box_scene(GetParam());
   Renderer renderer(scene);
-  RenderSettings render;
-  render.width = 64;
-  render.height = 48;
-  render.view = View::Shadow;
+  const RenderSettings render = testing::small_frame(64, 48);
   ShadowSettings shadow;
   shadow.technique = Technique::Vsm;
   shadow.map_size = 128;
