@@ -54,6 +54,14 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
     framebuffers_ = layer_framebuffers(maps_, "shadow view");
     all = true;  // a new array holds nothing yet
   }
+  if (!multisample && multisample_maps_) {
+    // Back to one sample: the multisampled layers (N times the maps'
+    // memory) are not kept for a later frame.
+    multisample_framebuffers_.clear();
+    multisample_maps_ = gl::Texture();
+    multisample_reciprocal_framebuffer_ = gl::Framebuffer();
+    multisample_reciprocal_ = gl::Texture();
+  }
   if (multisample &&
       gl::ensure_multisample_texture_array(multisample_maps_, kDepthFormat, map_size, map_size,
                                            layers, samples, "multisampled shadow maps")) {
