@@ -122,7 +122,10 @@ GlStateGuard::~GlStateGuard() {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_framebuffer_));
   glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-  glUseProgram(static_cast<GLuint>(program_));
+  // A program deleted while it was current is freed once another one is
+  // used (OpenGL 4.5, 7.3): there is none to restore then.
+  const auto program = static_cast<GLuint>(program_);
+  glUseProgram(program != 0 && glIsProgram(program) ? program : 0);
   glBindVertexArray(static_cast<GLuint>(vertex_array_));
   set_enabled(GL_DEPTH_TEST, depth_test_);
   set_enabled(GL_CULL_FACE, cull_face_);
