@@ -10,7 +10,8 @@
 // Each workgroup filters a tile of TILE_X x TILE_Y texels of one layer:
 //  1. stage: the tile's depths and an apron of RADIUS texels on every side
 //     go to shared memory as representation_stage() values (one float a
-//     texel: z-bar, or the exponential of ESM and EVSM2);
+//     texel: z-bar, or the exponential of ESM and EVSM2; EVSM4's two warps
+//     where they fit, EVSM4_STAGE_WARPS, so no tap takes an exponential);
 //  2. horizontal: for every staged row, the 2 RADIUS + 1 taps of the
 //     expanded representation (its moments) -> `rows`, TILE_X wide;
 //  3. vertical: the 2 RADIUS + 1 rows of `rows` above and below each
@@ -37,14 +38,14 @@
 // SAMPLES above 1 (--shadow-msaa): the depth maps are multisampled, and
 // step 1 stages each texel's mean of its samples' expanded representation
 // (as filter/resolve.comp stores it) instead of one value to expand: the
-// moments of different depths do not combine into one staged float. The
+// moments of different depths do not combine into one staged value. The
 // staged rows then take the representation's channels, which is why the
 // host allows four-moment techniques a narrower radius here
 // (max_fused_blur()).
 //
-// Defines: REPRESENTATION, MSM_QUANTIZED (shadow/representation.glsl),
-// IMAGE_FORMAT, RADIUS (W, 1..16), GAUSSIAN_WEIGHTS (the weights, comma-
-// separated), TILE_Y (a multiple of GROUP_Y, chosen by the host so that the
+// Defines: REPRESENTATION, MSM_QUANTIZED, EVSM4_STAGE_WARPS (shadow/
+// representation.glsl), IMAGE_FORMAT, RADIUS (W, 1..16), GAUSSIAN_WEIGHTS
+// (the weights, comma-separated), TILE_Y (a multiple of GROUP_Y, chosen by the host so that the
 // shared memory fits the device's limit), SAMPLES (1, 2, 4, 8).
 #include "../shared/bindings.h"
 #include "../shadow/representation.glsl"

@@ -26,6 +26,7 @@
 #include "../shadow/accumulate.glsl"
 #include "../shadow/backprojection.glsl"
 #include "terminator_offset.glsl"
+#include "camera_depth.glsl"
 
 layout(std140, binding = BINDING_SHADOW_UBO) uniform ShadowBlock { GpuShadow shadow_params; };
 
@@ -63,8 +64,7 @@ layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
 
 vec3 world_position(ivec2 pixel, float depth) {
   vec2 ndc = (vec2(pixel) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
-  vec4 p = frame.inverse_view_projection * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-  return p.xyz / p.w;
+  return position_from_depth(frame.inverse_view_projection, ndc, depth);
 }
 
 // What one pixel covers of the receiver: the world offsets from the
@@ -86,10 +86,9 @@ struct PixelFootprint {
 // to the ray at the point's own camera distance (beyond that the lookup
 // is at the map's coarsest levels anyway).
 vec3 footprint_offset(vec2 ndc, vec3 world, vec3 n) {
-  vec4 near_h = frame.inverse_view_projection * vec4(ndc, -1.0, 1.0);
-  vec4 far_h = frame.inverse_view_projection * vec4(ndc, 1.0, 1.0);
-  vec3 origin = near_h.xyz / near_h.w;
-  vec3 direction = far_h.xyz / far_h.w - origin;
+  vec3 origin = position_from_depth(frame.inverse_view_projection, ndc, CAMERA_NEAR_DEPTH);
+  vec3 far_point = position_from_depth(frame.inverse_view_projection, ndc, CAMERA_FAR_DEPTH);
+  vec3 direction = far_point - origin;
   // The ray's point at the camera depth of `world` (depth is affine along it).
   float d0 = -(frame.view * vec4(origin, 1.0)).z;
   float d1 = -(frame.view * vec4(origin + direction, 1.0)).z;
@@ -338,14 +337,15 @@ float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotatio
 #else
   GpuLight light = lights[i];
   ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
-  float lit =
-      view_shadow_factor(selected.view, light, world, normal, reference, rotation, footprint);
-  if (selected.blend > 0.0) {
-    float next =
-        view_shadow_factor(selected.next, light, world, normal, reference, rotation, footprint);
-    lit = mix(lit, next, selected.blend);
+  // One call site in a loop over the one or two views: the technique's
+  // code is inlined once, not twice (half the shader).
+  float lit[2] = float[](1.0, 1.0);
+  int count = selected.blend > 0.0 ? 2 : 1;
+  for (int k = 0; k < count; ++k) {
+    lit[k] = view_shadow_factor(k == 0 ? selected.view : selected.next, light, world, normal,
+                                reference, rotation, footprint);
   }
-  return lit;
+  return count == 2 ? mix(lit[0], lit[1], selected.blend) : lit[0];
 #endif
 }
 

@@ -3,6 +3,7 @@
 // and the upsampling on one surface.
 #include "../shared/bindings.h"
 #include "../shared/gpu_types.h"
+#include "camera_depth.glsl"
 
 layout(std140, binding = BINDING_SSAO_UBO) uniform SsaoBlock { GpuSsao ssao; };
 
@@ -23,9 +24,7 @@ ivec2 gbuffer_texel(ivec2 ao_texel) { return min(ao_texel * ssao.scale, ssao.siz
 // Camera-view position of the surface seen through a G-buffer texel's centre.
 vec3 view_position(ivec2 texel) {
   vec2 ndc = (vec2(texel) + 0.5) / vec2(ssao.size.zw) * 2.0 - 1.0;
-  float depth = texelFetch(gbuffer_depth, texel, 0).r;
-  vec4 p = ssao.inverse_projection * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-  return p.xyz / p.w;
+  return position_from_depth(ssao.inverse_projection, ndc, texelFetch(gbuffer_depth, texel, 0).r);
 }
 
 // The surface seen through a G-buffer texel, in camera view; false where

@@ -19,16 +19,29 @@
 // then comes from the screen-space derivatives of the position: within
 // one triangle they are its plane's.
 layout(std430, binding = BINDING_SCENE_VERTICES_SSBO) readonly buffer SceneVerticesBlock {
-  float scene_vertices[];  // SCENE_VERTEX_FLOATS per vertex (src/scene/mesh.hpp: Vertex)
+  // SCENE_VERTEX_FLOATS per vertex (src/scene/mesh.hpp: Vertex), read four at a time
+  vec4 scene_vertex_quads[];
 };
 layout(std430, binding = BINDING_SCENE_INDICES_SSBO) readonly buffer SceneIndicesBlock {
   uint scene_indices[];
 };
 layout(location = LOCATION_FIRST_INDEX) uniform uint first_index;
 
-vec3 scene_vertex_vec3(uint vertex, uint offset) {
-  uint at = vertex * uint(SCENE_VERTEX_FLOATS) + offset;
-  return vec3(scene_vertices[at], scene_vertices[at + 1u], scene_vertices[at + 2u]);
+struct SceneCorner {
+  vec3 position;
+  vec3 normal;  // as stored (not normalized)
+};
+
+// A vertex's position and normal, six consecutive floats, in two vec4
+// loads instead of six float loads: a vertex starts at an even float
+// (src/render/gpu_scene.cpp asserts it), so the six lie at offset 0 or 2
+// of two aligned quads.
+SceneCorner scene_corner(uint vertex) {
+  uint at = vertex * uint(SCENE_VERTEX_FLOATS) + uint(SCENE_VERTEX_POSITION);
+  vec4 a = scene_vertex_quads[at / 4u];
+  vec4 b = scene_vertex_quads[at / 4u + 1u];
+  return (at & 3u) == 0u ? SceneCorner(a.xyz, vec3(a.w, b.xy))
+                         : SceneCorner(vec3(a.zw, b.x), b.yzw);
 }
 
 struct SmoothSurface {
@@ -46,11 +59,11 @@ SmoothSurface smooth_surface(vec3 p, vec3 n) {
     return SmoothSurface(dot(facet_normal, n) < 0.0 ? -facet_normal : facet_normal, 0.0);
   }
   uint first = first_index + 3u * uint(gl_PrimitiveID);
-  uint corner_index[3] =
-      uint[3](scene_indices[first], scene_indices[first + 1u], scene_indices[first + 2u]);
-  vec3 v0 = scene_vertex_vec3(corner_index[0], uint(SCENE_VERTEX_POSITION));
-  vec3 v1 = scene_vertex_vec3(corner_index[1], uint(SCENE_VERTEX_POSITION));
-  vec3 v2 = scene_vertex_vec3(corner_index[2], uint(SCENE_VERTEX_POSITION));
+  // Nine loads: three indices, two quads a corner.
+  SceneCorner c0 = scene_corner(scene_indices[first]);
+  SceneCorner c1 = scene_corner(scene_indices[first + 1u]);
+  SceneCorner c2 = scene_corner(scene_indices[first + 2u]);
+  vec3 v0 = c0.position, v1 = c1.position, v2 = c2.position;
   vec3 g = cross(v1 - v0, v2 - v0);
   float area2 = dot(g, g);
   SmoothSurface s = SmoothSurface(n, 0.0);
@@ -61,9 +74,9 @@ SmoothSurface smooth_surface(vec3 p, vec3 n) {
   vec3 w = vec3(dot(cross(v2 - v1, p - v1), g), dot(cross(v0 - v2, p - v2), g),
                 dot(cross(v1 - v0, p - v0), g)) /
            area2;
-  vec3 n0 = normalize(scene_vertex_vec3(corner_index[0], uint(SCENE_VERTEX_NORMAL)));
-  vec3 n1 = normalize(scene_vertex_vec3(corner_index[1], uint(SCENE_VERTEX_NORMAL)));
-  vec3 n2 = normalize(scene_vertex_vec3(corner_index[2], uint(SCENE_VERTEX_NORMAL)));
+  vec3 n0 = normalize(c0.normal);
+  vec3 n1 = normalize(c1.normal);
+  vec3 n2 = normalize(c2.normal);
   vec3 raw = w.x * n0 + w.y * n1 + w.z * n2;
   // The corners' normals on n's side, all turned at once.
   if (dot(raw, n) < 0.0) {

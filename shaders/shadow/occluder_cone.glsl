@@ -9,23 +9,38 @@
 #pragma once
 #include "penumbra.glsl"
 
-// The world point a shadow view stores at map point uv with relative
-// depth z_bar: on the light's ray through uv, where the view's depth
-// (axial, or radial for point lights) is z_bar's. Both depths are affine
-// along a ray through the eye, so one interpolation finds it.
-vec3 shadow_map_point(GpuShadowView view, vec2 uv, float z_bar) {
-  vec3 near_p, far_p;
-  shadow_map_ray(view, uv, near_p, far_p);
-  float d_near = light_linear_depth(view, near_p), d_far = light_linear_depth(view, far_p);
-  return mix(near_p, far_p, (linear_depth_of(view, z_bar) - d_near) / (d_far - d_near));
-}
-
-// The cone from a receiver to the light's source.
+// The cone from a receiver to the light's source, in the shadow view's
+// own view space (the view matrix is a rigid lookAt, so lengths and angles
+// are the world's), with what the per-texel test needs precomputed once
+// per receiver: the homogeneous view-space point where the light's ray
+// through map point ndc = uv * 2 - 1 meets the near plane is affine in ndc
+// (ray_x * ndc.x + ray_y * ndc.y + ray_origin), so finding the point a
+// texel stores costs a few multiplies instead of taking two clip points
+// back through inverse_view_projection and view (four mat4 products).
 struct OccluderCone {
-  vec3 apex;             // the receiver (the lookup point)
-  vec3 axis;             // unit direction towards the centre of the source
+  vec3 apex;             // the receiver (the lookup point), in view space
+  vec3 axis;             // unit direction towards the centre of the source, in view space
   float tan_half_angle;  // the source's angular radius, as a tangent
+  vec4 ray_x;            // the near-plane point's change per unit of ndc.x
+  vec4 ray_y;            // ... of ndc.y
+  vec4 ray_origin;       // ... at ndc (0, 0); orthographic views: divided through by w
 };
+
+// Columns x, y and (w - z) of view * inverse_view_projection: clip point
+// (ndc, -1, 1) taken to view space.
+void occluder_cone_rays(GpuShadowView view, inout OccluderCone c) {
+  mat4 to_view = view.view * view.inverse_view_projection;
+  c.ray_x = to_view[0];
+  c.ray_y = to_view[1];
+  c.ray_origin = to_view[3] - to_view[2];
+  if (view.perspective == 0) {
+    // Orthographic: w is the same for every ray (no perspective row).
+    float inverse_w = 1.0 / c.ray_origin.w;
+    c.ray_x *= inverse_w;
+    c.ray_y *= inverse_w;
+    c.ray_origin *= inverse_w;
+  }
+}
 
 // The cone under which the receiver sees the light's source, widened to
 // at least min_tan_half_angle: a spot light's square of width w as the
@@ -36,8 +51,8 @@ struct OccluderCone {
 OccluderCone occluder_cone(GpuLight light, GpuShadowView view, vec3 receiver,
                            float min_tan_half_angle) {
   OccluderCone c;
-  c.apex = receiver;
-  c.axis = direction_to_light(light, receiver);
+  c.apex = (view.view * vec4(receiver, 1.0)).xyz;
+  c.axis = mat3(view.view) * direction_to_light(light, receiver);
   float tan_half;
   if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
     tan_half = 0.5 * view.source_width;
@@ -48,12 +63,13 @@ OccluderCone occluder_cone(GpuLight light, GpuShadowView view, vec3 receiver,
     tan_half = radius / sqrt(max(distance * distance - radius * radius, 1e-12));
   }
   c.tan_half_angle = max(tan_half, min_tan_half_angle);
+  occluder_cone_rays(view, c);
   return c;
 }
 
-// True if the surface at `occluder` lies inside the cone, within `slack`
-// (world units: the footprint of the texel that stores it, so the texel
-// on the receiver's own ray always counts).
+// True if the view-space point `occluder` lies inside the cone, within
+// `slack` (world units: the footprint of the texel that stores it, so the
+// texel on the receiver's own ray always counts).
 bool inside_occluder_cone(OccluderCone c, vec3 occluder, float slack) {
   vec3 v = occluder - c.apex;
   float along = dot(v, c.axis);
@@ -63,12 +79,24 @@ bool inside_occluder_cone(OccluderCone c, vec3 occluder, float slack) {
 }
 
 // Whether the surface stored in texel `texel` of view v (at relative depth
-// `occluder_depth`) can block the cone's light.
+// `occluder_depth`) can block the cone's light. The stored point lies on
+// the texel's ray where the view's depth is the occluder's: d times the
+// ray's direction scaled to unit depth along -z (perspective), or to unit
+// length (radial depth); an orthographic ray keeps its x, y at z = -d.
 bool texel_occludes(GpuShadowView view, ivec2 texel, ivec2 size, float occluder_depth,
                     OccluderCone cone) {
-  vec2 uv = (vec2(texel) + 0.5) / vec2(size);
-  vec3 p = shadow_map_point(view, uv, occluder_depth);
+  vec2 ndc = (vec2(texel) + 0.5) / vec2(size) * 2.0 - 1.0;
+  vec4 h = cone.ray_x * ndc.x + cone.ray_y * ndc.y + cone.ray_origin;
+  float d = linear_depth_of(view, occluder_depth);
+  vec3 p;
+  if (view.perspective == 0) {
+    p = vec3(h.xy, -d);
+  } else {
+    float scale = view.radial_depth != 0 ? inversesqrt(dot(h.xyz, h.xyz)) * sign(-h.z)
+                                         : 1.0 / -h.z;
+    p = h.xyz * (d * scale);
+  }
   // Half a texel's diagonal at the occluder: the texel stands for all of it.
-  float slack = 0.75 * shadow_texel_world(view, linear_depth_of(view, occluder_depth));
+  float slack = 0.75 * shadow_texel_world(view, d);
   return inside_occluder_cone(cone, p, slack);
 }

@@ -120,14 +120,15 @@ float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, v
   vec2 rotation = vec2(cos(angle), sin(angle));
   float camera_depth = -(penumbra_block.camera_view * vec4(world, 1.0)).z;
   ViewSelection selected = select_shadow_view(light, world, camera_depth);
-  float lit =
-      penumbra_view_shadow(technique, selected.view, light, world, normal, pixel, noise, rotation);
-  if (selected.blend > 0.0) {
-    float next =
-        penumbra_view_shadow(technique, selected.next, light, world, normal, pixel, noise, rotation);
-    lit = mix(lit, next, selected.blend);
+  // One call site in a loop over the one or two views: the technique's
+  // code is inlined once, not twice.
+  float lit[2] = float[](1.0, 1.0);
+  int count = selected.blend > 0.0 ? 2 : 1;
+  for (int k = 0; k < count; ++k) {
+    lit[k] = penumbra_view_shadow(technique, k == 0 ? selected.view : selected.next, light, world,
+                                  normal, pixel, noise, rotation);
   }
-  return lit;
+  return count == 2 ? mix(lit[0], lit[1], selected.blend) : lit[0];
 }
 
 float penumbra_shadow_at(int light, vec3 world_position, vec3 world_normal, vec2 pixel) {

@@ -29,7 +29,17 @@
 #else
 #define REPRESENTATION_TYPE vec4
 #endif
+// EVSM4_STAGE_WARPS (fused filter, where shared memory allows): evsm4
+// stages both warps, so each texel's two exponentials are taken once, not
+// once for every tap that reads it.
+#ifndef EVSM4_STAGE_WARPS
+#define EVSM4_STAGE_WARPS 0
+#endif
+#if REPRESENTATION == TECHNIQUE_EVSM4 && EVSM4_STAGE_WARPS
+#define STAGE_TYPE vec2
+#else
 #define STAGE_TYPE float
+#endif
 
 // The constants of the exponential representations (ShadowSettings).
 struct RepresentationConstants {
@@ -43,8 +53,10 @@ STAGE_TYPE representation_stage(float z, RepresentationConstants k) {
   return esm_encode(z, k.esm_c);
 #elif REPRESENTATION == TECHNIQUE_EVSM2
   return evsm_warp(z, k.evsm_positive, k.evsm_negative).x;
+#elif REPRESENTATION == TECHNIQUE_EVSM4 && EVSM4_STAGE_WARPS
+  return evsm_warp(z, k.evsm_positive, k.evsm_negative);
 #else
-  return z;  // evsm4 too: its two warps would not fit a fused filter's shared memory at W = 16
+  return z;  // evsm4 too where its two warps do not fit (a fused filter at large W)
 #endif
 }
 
@@ -52,7 +64,11 @@ REPRESENTATION_TYPE representation_expand(STAGE_TYPE s, RepresentationConstants 
 #if REPRESENTATION == TECHNIQUE_VSM || REPRESENTATION == TECHNIQUE_EVSM2
   return vec2(s, s * s);  // the first two moments (of z, or of its warp)
 #elif REPRESENTATION == TECHNIQUE_EVSM4
+#if EVSM4_STAGE_WARPS
+  vec2 w = s;
+#else
   vec2 w = evsm_warp(s, k.evsm_positive, k.evsm_negative);
+#endif
   return vec4(w.x, w.x * w.x, w.y, w.y * w.y);
 #elif REPRESENTATION == TECHNIQUE_ESM
   return s;

@@ -64,6 +64,12 @@
 // Most samples per pixel of the SSAO kernel (GpuSsao::kernel)
 #define SSAO_MAX_SAMPLES 64
 
+// The camera's window depth at its near and far planes: reversed-Z
+// (src/render/camera_depth.hpp), read back only through
+// position_from_depth (shaders/render/camera_depth.glsl)
+#define CAMERA_NEAR_DEPTH 1.0
+#define CAMERA_FAR_DEPTH 0.0
+
 // Material flags (GpuMaterial::uv_row1.w)
 #define MATERIAL_TEXTURED 1
 #define MATERIAL_DOUBLE_SIDED 2

@@ -10,8 +10,12 @@
 #define GAUSSIAN_TILE_ACROSS 8
 
 // The parallel summed-area table (shaders/filter/sat_scan.comp): a
-// workgroup scans SAT_TILE_ACROSS lines, SAT_TILE_ALONG texels at a time.
-#define SAT_TILE_ALONG 32
+// workgroup scans SAT_TILE_ACROSS lines, SAT_TILE_ALONG texels at a time,
+// with SAT_THREADS_ALONG threads a line, each scanning a run of SAT_RUN
+// consecutive texels.
+#define SAT_THREADS_ALONG 8
+#define SAT_RUN 16
+#define SAT_TILE_ALONG (SAT_THREADS_ALONG * SAT_RUN)
 #define SAT_TILE_ACROSS 8
 
 #endif

@@ -25,12 +25,12 @@ FusedFilterPass::FusedFilterPass() {
   glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared_bytes_);
 }
 
-int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes, int staged_channels) {
+int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes, int staged_floats) {
   const int span_x = kTileX + 2 * radius;
   const int stride = span_x + 1 - span_x % 2;  // STAGED_STRIDE
   for (int rows : {32, 16, 8}) {               // multiples of the shader's GROUP_Y rows of threads
     const int span_y = rows + 2 * radius;
-    const int bytes = span_y * stride * 4 * staged_channels + span_y * kTileX * 4 * channels;
+    const int bytes = span_y * stride * 4 * staged_floats + span_y * kTileX * 4 * channels;
     if (bytes <= shared_bytes) return rows;
   }
   return 0;
@@ -38,6 +38,11 @@ int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes, int s
 
 int FusedFilterPass::staged_channels(GLenum format, int samples) {
   return samples > 1 ? channel_count(format) : 1;
+}
+
+bool FusedFilterPass::stages_evsm4_warps(int radius, int shared_bytes) {
+  const int rows = tile_rows(radius, 4, shared_bytes);
+  return rows > 0 && tile_rows(radius, 4, shared_bytes, 2) == rows;
 }
 
 TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width, int height,
@@ -63,6 +68,9 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
       tile_rows(radius, channel_count(format), shared_bytes_, staged_channels(format, samples));
   if (rows == 0) throw RuntimeError("the fused filter's tile does not fit in shared memory");
   const bool quantized = uses_quantized_moments(settings);
+  // Several samples stage the mean of their moments, warps included.
+  const bool stage_warps =
+      technique == Technique::Evsm4 && samples == 1 && stages_evsm4_warps(radius, shared_bytes_);
   const auto key = std::make_tuple(technique, quantized, radius, rows, samples);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
@@ -77,6 +85,7 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
                            {"IMAGE_FORMAT", image_format_qualifier(format)},
                            {"RADIUS", std::to_string(radius)},
                            {"TILE_Y", std::to_string(rows)},
+                           {"EVSM4_STAGE_WARPS", stage_warps ? "1" : "0"},
                            {"GAUSSIAN_WEIGHTS", weight_list},
                            {"SAMPLES", std::to_string(samples)}};
     it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;

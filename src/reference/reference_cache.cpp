@@ -72,7 +72,10 @@ std::uint64_t reference_key(const TriangleMesh& mesh, const SurfacePoints& surfa
   h.value(kReferenceFormatVersion);
   if (cutouts != 0) h.value(cutouts);  // keys of scenes without cut-outs are unchanged
   h.value(mesh.vertices.size());
-  for (const Vertex& v : mesh.vertices) h.value(v.position);
+  for (const Vertex& v : mesh.vertices) {
+    h.value(v.position);
+    h.value(v.normal);  // the ray origins' smooth surface (terminator_offset.hpp)
+  }
   h.value(mesh.indices.size());
   h.bytes(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
   h.value(light.type);

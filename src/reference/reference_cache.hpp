@@ -20,8 +20,10 @@ namespace penumbra {
 // Bumped whenever the tracer's output for the same inputs changes (2: the
 // radiometric shadow factor and ray origins offset by the position's error
 // bound; 3: source points from precomputed sets, other noise of the same
-// size; 4: ray origins on the smooth surface of the vertex normals).
-inline constexpr std::uint32_t kReferenceFormatVersion = 4;
+// size; 4: ray origins on the smooth surface of the vertex normals; 5: that
+// rise bounded and applied only where the light grazes, as Cycles does, and
+// the vertex normals part of the key).
+inline constexpr std::uint32_t kReferenceFormatVersion = 5;
 
 // `cutouts`: CasterCutouts::hash() of the scene (0: none).
 std::uint64_t reference_key(const TriangleMesh& mesh, const SurfacePoints& surfaces,

@@ -1,5 +1,7 @@
 #include "render/gbuffer_pass.hpp"
 
+#include "render/camera_depth.hpp"
+
 namespace penumbra {
 
 GBufferPass::GBufferPass()
@@ -37,11 +39,19 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, width, height);
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  const float far_depth = 1.0f;
+  const auto far_depth = static_cast<float>(CAMERA_FAR_DEPTH);
   for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, zero);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+  // Reversed-Z (render/camera_depth.hpp): window depth = NDC z in [0, 1],
+  // nearer is greater. The clip control is put back below, so passes that
+  // follow (and an engine's own state, for tests sharing a context) see
+  // the one they had.
+  GLint clip_origin = GL_LOWER_LEFT, clip_depth = GL_NEGATIVE_ONE_TO_ONE;
+  glGetIntegerv(GL_CLIP_ORIGIN, &clip_origin);
+  glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth);
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+  glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   // The albedo target is sRGB8: with GL_FRAMEBUFFER_SRGB on, the linear
@@ -54,6 +64,8 @@ void GBufferPass::execute(const GpuScene& scene, int width, int height) {
   cut_out_program_.use();
   scene.draw(SurfaceSet::CutOut, GpuScene::Corners::Read);
   glDisable(GL_FRAMEBUFFER_SRGB);
+  glDepthFunc(GL_LESS);
+  glClipControl(static_cast<GLenum>(clip_origin), static_cast<GLenum>(clip_depth));
   glPopDebugGroup();
 }
 

@@ -18,6 +18,9 @@ namespace penumbra {
 static_assert(sizeof(Vertex) == SCENE_VERTEX_FLOATS * sizeof(float));
 static_assert(offsetof(Vertex, position) == SCENE_VERTEX_POSITION * sizeof(float));
 static_assert(offsetof(Vertex, normal) == SCENE_VERTEX_NORMAL * sizeof(float));
+// smooth_surface.glsl reads a vertex's position and normal as two vec4s.
+static_assert(SCENE_VERTEX_FLOATS % 2 == 0 && SCENE_VERTEX_POSITION % 2 == 0 &&
+              SCENE_VERTEX_NORMAL == SCENE_VERTEX_POSITION + 3);
 
 namespace {
 

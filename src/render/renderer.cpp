@@ -16,6 +16,7 @@
 #include "penumbra/shadow/shadow_block_data.hpp"
 #include "penumbra/shared/bindings.h"
 #include "penumbra/shared/gpu_types.h"
+#include "render/camera_depth.hpp"
 #include "render/depth_position_error.hpp"
 
 namespace penumbra {
@@ -180,7 +181,8 @@ glm::mat4 Renderer::camera_projection(int width, int height) const {
   float near_plane = 0.0f, far_plane = 0.0f;
   camera_depth_range(width, height, near_plane, far_plane);
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  return glm::perspective(glm::radians(scene_.camera.fov_y_degrees), aspect, near_plane, far_plane);
+  return camera_perspective(glm::radians(scene_.camera.fov_y_degrees), aspect, near_plane,
+                            far_plane);
 }
 
 CameraFrustum Renderer::camera_frustum(int width, int height) const {
@@ -261,7 +263,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   gpu::GpuFrame frame{};
   frame.view = camera_view();
   frame.projection = camera_projection(render.width, render.height);
-  frame.inverse_view_projection = glm::inverse(frame.projection * frame.view);
+  // Inverted in double: the float inverse's own rounding would add to the
+  // depth buffer's in every position rebuilt from it.
+  frame.inverse_view_projection =
+      glm::mat4(glm::inverse(glm::dmat4(frame.projection) * glm::dmat4(frame.view)));
   frame.camera_position = glm::vec4(scene_.camera.position, 1.0f);
   frame.viewport = glm::vec4(render.width, render.height, 1.0f / static_cast<float>(render.width),
                              1.0f / static_cast<float>(render.height));
@@ -533,15 +538,13 @@ SurfacePoints Renderer::read_surfaces() const {
       if (n[3] == 0.0f) continue;  // shininess 0 marks the background, as in lighting.frag
       // The pixel centre in NDC, as lighting.frag's world_position() (GL
       // rows run bottom to top, image rows top to bottom).
-      const glm::dvec4 ndc((x + 0.5) / width * 2.0 - 1.0, (height - y - 0.5) / height * 2.0 - 1.0,
-                           double(depth.pixel(x, y)[0]) * 2.0 - 1.0, 1.0);
-      const glm::dvec4 p = inverse * ndc;
-      surfaces.position[i] = glm::vec3(glm::dvec3(p) / p.w);
+      const glm::dvec2 ndc((x + 0.5) / width * 2.0 - 1.0, (height - y - 0.5) / height * 2.0 - 1.0);
+      const double window_depth = depth.pixel(x, y)[0];
+      surfaces.position[i] = glm::vec3(position_from_depth(inverse, ndc, window_depth));
       surfaces.normal[i] = glm::normalize(glm::vec3(n[0], n[1], n[2]));
       surfaces.covered[i] = 1;
-      surfaces.position_error[i] =
-          depth_position_error(inverse, glm::dvec2(ndc), double(depth.pixel(x, y)[0]),
-                               surfaces.normal[i], width, height, subpixel_bits);
+      surfaces.position_error[i] = depth_position_error(
+          inverse, ndc, window_depth, surfaces.normal[i], width, height, subpixel_bits);
     }
   }
   return surfaces;

@@ -58,7 +58,7 @@ void SsaoPass::execute(const GBufferPass& gbuffer, const glm::mat4& view,
   gpu::GpuSsao block{};
   block.view = view;
   block.projection = projection;
-  block.inverse_projection = glm::inverse(projection);
+  block.inverse_projection = glm::mat4(glm::inverse(glm::dmat4(projection)));
   std::copy(kernel_.begin(), kernel_.end(), block.kernel);
   block.size = glm::ivec4(ao_width, ao_height, width, height);
   block.radius = settings.radius;

@@ -130,6 +130,22 @@ TEST(FusedFilterTile, WidestRadiusFitsTheSharedMemoryEveryDeviceHas) {
   EXPECT_EQ(FusedFilterPass::tile_rows(kMaxFusedBlur, 4, 16384), 0);
 }
 
+// evsm4 stages its two warps (an exponential each, once a texel) where
+// they fit without a shorter tile, and its depth (two exponentials a tap)
+// where they do not: FusedFilterEqualsResolveThenTwoBlurPasses runs both
+// (W = 1 and 9 staged, 4 and 16 not, in 32 KiB).
+TEST(FusedFilterTile, Evsm4StagesItsWarpsWhereTheTileStaysTheSame) {
+  for (int radius : {1, 2, 3, 8, 9})
+    EXPECT_TRUE(FusedFilterPass::stages_evsm4_warps(radius, 32768));
+  for (int radius : {4, 7, 10, kMaxFusedBlur}) {
+    EXPECT_FALSE(FusedFilterPass::stages_evsm4_warps(radius, 32768));
+  }
+  EXPECT_TRUE(FusedFilterPass::stages_evsm4_warps(10, 48 * 1024));
+  EXPECT_FALSE(FusedFilterPass::stages_evsm4_warps(kMaxFusedBlur, 48 * 1024));
+  EXPECT_EQ(FusedFilterPass::tile_rows(2, 4, 32768, 2), FusedFilterPass::tile_rows(2, 4, 32768));
+  EXPECT_EQ(FusedFilterPass::tile_rows(kMaxFusedBlur, 4, 32768, 2), 0);
+}
+
 // The renderer with --fused on and off: the same shadow factors, for a
 // spot light with a directional light's cascades (four layers) and for a
 // point light (six).

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "gpu_fixture.hpp"
+#include "render/camera_depth.hpp"
 #include "render/renderer.hpp"
 #include "test_scene.hpp"
 
@@ -26,12 +27,12 @@ Scene box_above_plane(const Light& light) {
 // it before the box.
 std::optional<glm::vec3> plane_point(const Renderer& r, int width, int height, int x, int y,
                                      float box_bottom = kBoxBottom) {
-  glm::mat4 inverse = glm::inverse(r.camera_projection(width, height) * r.camera_view());
-  glm::vec2 ndc{(x + 0.5f) / width * 2.0f - 1.0f, 1.0f - (y + 0.5f) / height * 2.0f};
-  glm::vec4 a = inverse * glm::vec4(ndc, -1.0f, 1.0f);
-  glm::vec4 b = inverse * glm::vec4(ndc, 1.0f, 1.0f);
-  glm::vec3 origin = glm::vec3(a) / a.w;
-  glm::vec3 dir = glm::normalize(glm::vec3(b) / b.w - origin);
+  const glm::dmat4 inverse =
+      glm::inverse(glm::dmat4(r.camera_projection(width, height) * r.camera_view()));
+  const glm::dvec2 ndc{(x + 0.5) / width * 2.0 - 1.0, 1.0 - (y + 0.5) / height * 2.0};
+  glm::vec3 origin(position_from_depth(inverse, ndc, CAMERA_NEAR_DEPTH));
+  glm::vec3 dir =
+      glm::normalize(glm::vec3(position_from_depth(inverse, ndc, CAMERA_FAR_DEPTH)) - origin);
   if (dir.y >= 0.0f) return std::nullopt;
   // Slab test against the box.
   glm::vec3 lo{-kBoxHalf, box_bottom, -kBoxHalf}, hi{kBoxHalf, box_bottom + 2 * kBoxHalf, kBoxHalf};

@@ -10,6 +10,7 @@
 
 #include "gpu_fixture.hpp"
 #include "model_files.hpp"
+#include "render/camera_depth.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin_scenes.hpp"
 
@@ -59,8 +60,8 @@ Shot shoot(const std::string& name, const std::string& obj) {
   renderer.render(rs, shadow);
   const Image albedo = renderer.read_view();
 
-  const glm::mat4 inverse =
-      glm::inverse(renderer.camera_projection(rs.width, rs.height) * renderer.camera_view());
+  const glm::dmat4 inverse = glm::inverse(
+      glm::dmat4(renderer.camera_projection(rs.width, rs.height) * renderer.camera_view()));
   const glm::vec2 to_camera =
       glm::normalize(glm::vec2(scene.camera.position.x, scene.camera.position.z));
   Shot shot;
@@ -80,12 +81,9 @@ Shot shoot(const std::string& name, const std::string& obj) {
       ++shot.ground_shadowed;
       // Where the pixel's ray meets the ground (y = 0); the model stands
       // centred on the origin.
-      const glm::vec2 ndc{(x + 0.5f) / rs.width * 2.0f - 1.0f,
-                          1.0f - (y + 0.5f) / rs.height * 2.0f};
-      const glm::vec4 n = inverse * glm::vec4(ndc, -1.0f, 1.0f);
-      const glm::vec4 m = inverse * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 origin = glm::vec3(n) / n.w;
-      const glm::vec3 dir = glm::vec3(m) / m.w - origin;
+      const glm::dvec2 ndc{(x + 0.5) / rs.width * 2.0 - 1.0, 1.0 - (y + 0.5) / rs.height * 2.0};
+      const glm::vec3 origin(position_from_depth(inverse, ndc, CAMERA_NEAR_DEPTH));
+      const glm::vec3 dir = glm::vec3(position_from_depth(inverse, ndc, CAMERA_FAR_DEPTH)) - origin;
       const glm::vec3 p = origin + dir * (-origin.y / dir.y);
       shot.towards_camera += glm::dot(glm::vec2(p.x, p.z), to_camera);
     }

@@ -7,6 +7,7 @@
 
 #include "gpu_fixture.hpp"
 #include "model_files.hpp"
+#include "render/camera_depth.hpp"
 #include "render/renderer.hpp"
 #include "scene/model.hpp"
 #include "test_scene.hpp"
@@ -51,12 +52,12 @@ Scene cube_model_above_plane() {
 // Where the camera ray through a pixel meets the plane y = 0, unless the
 // cube is in the way.
 std::optional<glm::vec3> plane_point(const Renderer& r, int width, int height, int x, int y) {
-  const glm::mat4 inverse = glm::inverse(r.camera_projection(width, height) * r.camera_view());
-  const glm::vec2 ndc{(x + 0.5f) / width * 2.0f - 1.0f, 1.0f - (y + 0.5f) / height * 2.0f};
-  const glm::vec4 a = inverse * glm::vec4(ndc, -1.0f, 1.0f);
-  const glm::vec4 b = inverse * glm::vec4(ndc, 1.0f, 1.0f);
-  const glm::vec3 origin = glm::vec3(a) / a.w;
-  const glm::vec3 dir = glm::normalize(glm::vec3(b) / b.w - origin);
+  const glm::dmat4 inverse =
+      glm::inverse(glm::dmat4(r.camera_projection(width, height) * r.camera_view()));
+  const glm::dvec2 ndc{(x + 0.5) / width * 2.0 - 1.0, 1.0 - (y + 0.5) / height * 2.0};
+  const glm::vec3 origin(position_from_depth(inverse, ndc, CAMERA_NEAR_DEPTH));
+  const glm::vec3 dir =
+      glm::normalize(glm::vec3(position_from_depth(inverse, ndc, CAMERA_FAR_DEPTH)) - origin);
   if (dir.y >= 0.0f) return std::nullopt;
   const glm::vec3 lo{-kHalf, kBottom, -kHalf}, hi{kHalf, kBottom + 2 * kHalf, kHalf};
   const glm::vec3 t0 = (lo - origin) / dir, t1 = (hi - origin) / dir;

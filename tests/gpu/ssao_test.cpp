@@ -11,6 +11,7 @@
 
 #include "gpu_fixture.hpp"
 #include "io/image.hpp"
+#include "render/camera_depth.hpp"
 #include "render/renderer.hpp"
 #include "render/ssao_kernel.hpp"
 #include "scene/builtin_scenes.hpp"
@@ -80,12 +81,12 @@ struct Ray {
 
 // The camera ray through the centre of image pixel (x, y), rows top to bottom.
 Ray pixel_ray(const Renderer& r, int width, int height, int x, int y) {
-  glm::mat4 inverse = glm::inverse(r.camera_projection(width, height) * r.camera_view());
-  glm::vec2 ndc{(x + 0.5f) / width * 2.0f - 1.0f, 1.0f - (y + 0.5f) / height * 2.0f};
-  glm::vec4 a = inverse * glm::vec4(ndc, -1.0f, 1.0f);
-  glm::vec4 b = inverse * glm::vec4(ndc, 1.0f, 1.0f);
-  glm::vec3 origin = glm::vec3(a) / a.w;
-  return {origin, glm::normalize(glm::vec3(b) / b.w - origin)};
+  const glm::dmat4 inverse =
+      glm::inverse(glm::dmat4(r.camera_projection(width, height) * r.camera_view()));
+  const glm::dvec2 ndc{(x + 0.5) / width * 2.0 - 1.0, 1.0 - (y + 0.5) / height * 2.0};
+  const glm::vec3 origin(position_from_depth(inverse, ndc, CAMERA_NEAR_DEPTH));
+  const glm::vec3 far_point(position_from_depth(inverse, ndc, CAMERA_FAR_DEPTH));
+  return {origin, glm::normalize(far_point - origin)};
 }
 
 std::optional<float> hit_sphere(const Ray& ray, glm::vec3 center, float radius) {
@@ -583,8 +584,7 @@ class CpuSsao {
     const glm::vec4 ns = g_.normal[i];
     if (ns.w == 0.0f) return false;
     glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(g_.width, g_.height) * 2.0 - 1.0;
-    glm::dvec4 h = inverse_projection_ * glm::dvec4(ndc, 2.0 * g_.depth[i] - 1.0, 1.0);
-    position = glm::dvec3(h) / h.w;
+    position = position_from_depth(inverse_projection_, ndc, g_.depth[i]);
     normal = glm::normalize(glm::dmat3(view_) * glm::dvec3(ns));
     return true;
   }

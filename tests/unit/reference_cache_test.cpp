@@ -124,6 +124,9 @@ TEST(ReferenceCache, KeyFollowsEveryInput) {
   TriangleMesh other = mesh;
   other.vertices[0].position.y += 1e-3f;
   EXPECT_NE(key, reference_key(other, surfaces, light, 256));
+  TriangleMesh bent = mesh;  // the rays' smooth surface follows the vertex normals
+  bent.vertices[0].normal = glm::normalize(bent.vertices[0].normal + glm::vec3(0.1f, 0.0f, 0.0f));
+  EXPECT_NE(key, reference_key(bent, surfaces, light, 256));
 }
 
 }  // namespace

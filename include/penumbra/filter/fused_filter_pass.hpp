@@ -32,15 +32,20 @@ class FusedFilterPass {
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
   // Rows of the tile each workgroup filters (32 wide) for a radius and a
-  // representation of `channels` floats, with `staged_channels` floats
-  // staged per texel (staged_channels()): the tallest of 32, 16 and 8 whose
-  // shared memory fits `shared_bytes`; 0 if none does.
-  static int tile_rows(int radius, int channels, int shared_bytes, int staged_channels = 1);
+  // representation of `channels` floats (`staged_floats` staged per texel:
+  // staged_channels(), or evsm4's two warps): the tallest of 32, 16 and 8
+  // whose shared memory fits `shared_bytes`; 0 if none does.
+  static int tile_rows(int radius, int channels, int shared_bytes, int staged_floats = 1);
 
   // Floats staged per texel: one (the value the moments are expanded
   // from), or with `samples` > 1 the representation's channels (the mean
   // of the samples' moments).
   static int staged_channels(GLenum format, int samples);
+
+  // Whether evsm4 stages its two warps per texel (computed once a texel
+  // instead of once a tap): where they fit in a tile as tall as the one
+  // float staged would give, so the tile and its traffic stay the same.
+  static bool stages_evsm4_warps(int radius, int shared_bytes);
 
   // Bytes per texel of a width x height map: each 32 x tile_rows() tile
   // reads the depth (R32F, `samples` per texel) under it and its apron of
