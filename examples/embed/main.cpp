@@ -32,7 +32,7 @@ struct Options {
   bool headless = false;
   std::string output;
   std::vector<penumbra::Technique> techniques{penumbra::Technique::Pcf};
-  penumbra::Filter filter = penumbra::ShadowSettings{}.filter;
+  penumbra::Filter filter = penumbra::ShadowMapSettings{}.filter;
   bool soft = false;  // moment soft shadows (vsm, msm, msm16 with --filter sat)
   bool spot = true, sun = true;
   bool shadow_view = false;
@@ -168,7 +168,7 @@ int main(int argc, char** argv) {
         .far_plane = embed::kCameraFar};
 
     penumbra::ShadowMaps shadows;
-    penumbra::ShadowSettings settings;
+    penumbra::ShadowMapSettings settings;
     settings.map_size = options.map_size;
     settings.filter = options.filter;
     settings.soft = options.soft;

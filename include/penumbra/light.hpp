@@ -27,6 +27,15 @@ struct Light {
   float intensity = 1.0f;
   float cone_degrees = 35.0f;        // spot: half-angle where the light ends
   float inner_cone_degrees = 28.0f;  // spot: half-angle where the fall-off starts
+  // The source's size, which sets the penumbra's width (pcss,
+  // backprojection, --soft, accumulation and the traced reference): a spot
+  // light's source is a square this wide facing its direction, a point
+  // light's a sphere of this diameter, in world units (0: a point, hard
+  // shadows).
+  float light_size = 0.5f;
+  // A directional light's source: the disc of directions this many degrees
+  // across (the sun's is about 0.53; 0: one direction, hard shadows).
+  float sun_angle = 1.0f;
   bool operator==(const Light&) const = default;
 };
 

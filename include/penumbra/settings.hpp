@@ -1,22 +1,23 @@
 #pragma once
-// The shadow core's settings: ShadowSettings (technique, map size, biases,
-// filter, cascades; every field documented with its default), the
-// technique and filter enums with their names, and the parameter tables
-// that give each parameter its flag name, help text and range, so an
-// engine's UI can offer them exactly as penumbra's own command line does.
-// validate(const ShadowSettings&) throws UsageError naming the parameter
-// out of range.
+// The shadow core's settings: ShadowMapSettings (technique, map size,
+// biases, filter, cascades; every field documented with its default: what
+// ShadowMaps takes), the technique and filter enums with their names, and
+// the parameter tables that give each parameter its flag name, help text
+// and range, so an engine's UI can offer them exactly as penumbra's own
+// command line does. validate(const ShadowMapSettings&) throws UsageError
+// naming the parameter out of range.
 //
 // The same tables are the one source of every front end's parameters
 // (penumbra's CLI, viewer, scene files and report): each has its name,
 // help, range and default here and nowhere else; the renderer's own
-// settings (SSAO, the reference, the image) live here beside them for that
-// reason.
+// settings (ShadowSettings' accumulation and source sizes, SSAO, the
+// reference, the image) live here beside them for that reason.
 #include <array>
 #include <string_view>
 #include <utility>
 
 #include "penumbra/enum_names.hpp"
+#include "penumbra/light.hpp"
 #include "penumbra/shared/bindings.h"
 
 namespace penumbra {
@@ -101,7 +102,10 @@ constexpr bool is_map_view(View v) {
   return v == View::ShadowMap || v == View::Moments || v == View::MomentsFiltered;
 }
 
-struct ShadowSettings {
+// What the shadow core (ShadowMaps, its passes and its lookup) reads: shadow
+// parameters only. A light's source size is the light's own
+// (Light::light_size, Light::sun_angle).
+struct ShadowMapSettings {
   Technique technique = Technique::Hard;
   // Shadow-map width and height in texels.
   int map_size = 2048;
@@ -120,13 +124,6 @@ struct ShadowSettings {
   float filter_slope_bias = 0.25f;
   // Normal offset: the lookup moves this many texels along the surface normal.
   float normal_offset = 0.5f;
-  // Width of a spot light's source in world units (0: a point, hard
-  // shadows), for pcss, backprojection, --soft and the area-light reference; the diameter
-  // of a point light's spherical source.
-  float light_size = 0.5f;
-  // Angular diameter of a directional light's source in degrees (the sun
-  // is about 0.53), for the same.
-  float sun_angle = 1.0f;
 
   // PCF: width of the square window in texels (0: the plain hard test),
   // sampled with the first pcf_samples points of the Poisson set (1: the
@@ -208,9 +205,59 @@ struct ShadowSettings {
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
 
+  // Directional lights: shadow cascades along the camera's view (1-4).
+  int cascades = 3;
+  // Split scheme of the cascades: the blend lambda log + (1 - lambda)
+  // uniform of Zhang et al.'s practical split scheme (2006).
+  float cascade_lambda = 0.75f;
+  // Fraction of each cascade, at its far end, over which it blends into the
+  // next one.
+  float cascade_blend = 0.1f;
+  // Point lights: widen each cube face's frustum beyond 90 degrees by the
+  // filter's reach plus a margin, in texels, so a filter near a face's edge
+  // reads the scene from its own face (no seams between faces).
+  bool guard_band = true;
+  bool operator==(const ShadowMapSettings&) const = default;
+};
+
+// --light-size or --sun-angle: one source size for every light of a kind,
+// once a front end sets it (the command line when the flag is given, the
+// viewer, the report's sweeps); until then each light keeps its own
+// (Light::light_size, Light::sun_angle: a scene file's, or their default,
+// which this reads as while unset).
+class SourceSizeOverride {
+ public:
+  explicit constexpr SourceSizeOverride(float light_default) : size_(light_default) {}
+  constexpr SourceSizeOverride& operator=(float size) {
+    size_ = size;
+    set_ = true;
+    return *this;
+  }
+  // The size given, or, unset, the lights' default.
+  constexpr operator float() const { return size_; }
+  [[nodiscard]] constexpr bool is_set() const { return set_; }
+  // A light's size under the override: the size given, or its own.
+  [[nodiscard]] constexpr float of(float own) const { return set_ ? size_ : own; }
+  constexpr bool operator==(const SourceSizeOverride&) const = default;
+
+ private:
+  float size_;
+  bool set_ = false;
+};
+
+// What penumbra's renderer reads: the shadow core's settings, and what
+// only the renderer does with them (accumulated soft shadows, source
+// sizes set for every light at once).
+struct ShadowSettings : ShadowMapSettings {
+  // Spot lights' square width and point lights' sphere diameter in world
+  // units (--light-size), and directional lights' angular diameter in
+  // degrees (--sun-angle), for every light of the kind once set.
+  SourceSizeOverride light_size{Light{}.light_size};
+  SourceSizeOverride sun_angle{Light{}.sun_angle};
+
   // Accumulated soft shadows (render, compare, view): this many sub-frames, each
   // with the shadow maps rendered from another point of the light's source
-  // (light_size, sun_angle), averaged. 1: one frame from the light's centre.
+  // (its light_size or sun_angle), averaged. 1: one frame from the light's centre.
   int accumulate = 1;
   // Set for each sub-frame by render_subframe, not by the user: the
   // sub-frame's index; its point of a spot light's square, in [0, 1]^2;
@@ -227,20 +274,16 @@ struct ShadowSettings {
   std::array<int, 4> subframe_cell_index{0, 1, 0, 1};          // column, columns, row, rows
   std::array<float, 3> subframe_normal{0.0f, 0.0f, 0.0f};
 
-  // Directional lights: shadow cascades along the camera's view (1-4).
-  int cascades = 3;
-  // Split scheme of the cascades: the blend lambda log + (1 - lambda)
-  // uniform of Zhang et al.'s practical split scheme (2006).
-  float cascade_lambda = 0.75f;
-  // Fraction of each cascade, at its far end, over which it blends into the
-  // next one.
-  float cascade_blend = 0.1f;
-  // Point lights: widen each cube face's frustum beyond 90 degrees by the
-  // filter's reach plus a margin, in texels, so a filter near a face's edge
-  // reads the scene from its own face (no seams between faces).
-  bool guard_band = true;
   bool operator==(const ShadowSettings&) const = default;
 };
+
+// The light with the settings' source sizes (light_size, sun_angle) where
+// they are set.
+constexpr Light with_source_size(Light light, const ShadowSettings& settings) {
+  light.light_size = settings.light_size.of(light.light_size);
+  light.sun_angle = settings.sun_angle.of(light.sun_angle);
+  return light;
+}
 
 // Screen-space ambient obscurance (seed 003, Task 6) over the G-buffer: k
 // points in the hemisphere of radius r around the normal, each counted as
@@ -282,8 +325,8 @@ struct SsaoSettings {
 };
 
 // The ray-traced reference (src/reference/): how it samples. The light's
-// size is the techniques' own: ShadowSettings::light_size (spot) or
-// sun_angle (directional).
+// size is the techniques' own: Light::light_size (spot, point) or
+// sun_angle (directional), under ShadowSettings' overrides.
 struct ReferenceSettings {
   // Shadow rays per pixel towards an area light (a source size > 0), spread
   // over the light by correlated multi-jittered sampling; a point light
@@ -376,83 +419,73 @@ inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
 // each device's own limit is checked where the maps are made).
 inline constexpr int kMaxShadowMsaa = 8;
 
-inline constexpr std::array<NumericParam<ShadowSettings, float>, 17> kShadowFloatParams{{
+inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowFloatParams{{
     {"constant-bias",
      "constant depth bias, in shadow-map texels (a texel's world size at the receiver)", 0.0f,
-     64.0f, &ShadowSettings::constant_bias, OptionGroup::Bias},
+     64.0f, &ShadowMapSettings::constant_bias, OptionGroup::Bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
-     &ShadowSettings::slope_bias, OptionGroup::Bias},
+     &ShadowMapSettings::slope_bias, OptionGroup::Bias},
     {"max-slope", "largest slope tan(theta) the slope-scaled bias follows", 0.0f, 1000.0f,
-     &ShadowSettings::max_slope, OptionGroup::Bias},
+     &ShadowMapSettings::max_slope, OptionGroup::Bias},
     {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
-     0.0f, 4.0f, &ShadowSettings::filter_slope_bias, OptionGroup::Bias},
+     0.0f, 4.0f, &ShadowMapSettings::filter_slope_bias, OptionGroup::Bias},
     {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
-     &ShadowSettings::normal_offset, OptionGroup::Bias},
-    {"light-size",
-     "width of a spot light's source in world units (0: a point), for pcss, backprojection, "
-     "--soft and "
-     "the area-light reference (a square facing the light's direction); a point light's "
-     "source is a sphere of this diameter",
-     0.0f, 100.0f, &ShadowSettings::light_size, OptionGroup::Lights},
-    {"sun-angle",
-     "angular diameter of a directional light's source in degrees (0: a point); the reference "
-     "traces the disc of directions this wide",
-     0.0f, 45.0f, &ShadowSettings::sun_angle, OptionGroup::Lights},
+     &ShadowMapSettings::normal_offset, OptionGroup::Bias},
     {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
-     &ShadowSettings::pcf_width, OptionGroup::Technique},
+     &ShadowMapSettings::pcf_width, OptionGroup::Technique},
     {"esm-c", "ESM exponent c, per unit of the shadow view's relative depth z-bar", 1.0f, kEsmMaxC,
-     &ShadowSettings::esm_c, OptionGroup::Technique},
+     &ShadowMapSettings::esm_c, OptionGroup::Technique},
     {"evsm-positive", "EVSM positive exponent c+ of exp(c+ (2 z-bar - 1)) (evsm2, evsm4)", 1.0f,
-     kEvsmMaxExponent, &ShadowSettings::evsm_positive, OptionGroup::Technique},
+     kEvsmMaxExponent, &ShadowMapSettings::evsm_positive, OptionGroup::Technique},
     {"evsm-negative", "EVSM negative exponent c- of -exp(-c- (2 z-bar - 1)) (evsm4)", 1.0f,
-     kEvsmMaxExponent, &ShadowSettings::evsm_negative, OptionGroup::Technique},
+     kEvsmMaxExponent, &ShadowMapSettings::evsm_negative, OptionGroup::Technique},
     {"msm-alpha",
      "MSM moment bias alpha for msm's 32-bit float moments of 2 z-bar - 1, toward (0, 0.375, 0, "
      "0.375); below about 5e-7 float rounding shows near the far end of the depth range",
-     1e-8f, 0.5f, &ShadowSettings::msm_alpha, OptionGroup::Technique},
+     1e-8f, 0.5f, &ShadowMapSettings::msm_alpha, OptionGroup::Technique},
     {"msm16-alpha",
      "MSM moment bias alpha for msm16's 16-bit moments and for moments summed in the "
      "summed-area table (msm and msm16 with --filter sat), toward (0, 0.628, 0, 0.628)",
-     1e-8f, 0.5f, &ShadowSettings::msm16_alpha, OptionGroup::Technique},
+     1e-8f, 0.5f, &ShadowMapSettings::msm16_alpha, OptionGroup::Technique},
     {"vsm-min-variance",
      "VSM minimum variance, in squared shadow-map texels (EVSM: scaled by its warp's slope)", 0.0f,
-     4096.0f, &ShadowSettings::vsm_min_variance, OptionGroup::Technique},
+     4096.0f, &ShadowMapSettings::vsm_min_variance, OptionGroup::Technique},
     {"bleed-reduction", "light-bleeding reduction for vsm, msm and evsm (0: off)", 0.0f, 0.99f,
-     &ShadowSettings::bleed_reduction, OptionGroup::Technique},
+     &ShadowMapSettings::bleed_reduction, OptionGroup::Technique},
     {"cascade-lambda",
      "directional lights: cascade split scheme, lambda * logarithmic + (1 - lambda) * uniform "
      "(Zhang et al. 2006)",
-     0.0f, 1.0f, &ShadowSettings::cascade_lambda, OptionGroup::Lights},
+     0.0f, 1.0f, &ShadowMapSettings::cascade_lambda, OptionGroup::Lights},
     {"cascade-blend",
      "directional lights: fraction of each cascade, at its far end, blended into the next", 0.0f,
-     0.5f, &ShadowSettings::cascade_blend, OptionGroup::Lights},
+     0.5f, &ShadowMapSettings::cascade_blend, OptionGroup::Lights},
 }};
 
-inline constexpr std::array<NumericParam<ShadowSettings, int>, 8> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 8> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
-     &ShadowSettings::map_size, OptionGroup::Technique},
+     &ShadowMapSettings::map_size, OptionGroup::Technique},
     {"shadow-msaa",
      "samples per shadow-map texel of vsm, esm, evsm2, evsm4, msm and msm16, 1, 2, 4 or 8 (up "
      "to the GPU's limit): each sample's moments are averaged before the filter, so the maps' "
      "edges are antialiased (hard, pcf, pcss and backprojection draw one sample)",
-     1, kMaxShadowMsaa, &ShadowSettings::shadow_msaa, OptionGroup::Technique},
+     1, kMaxShadowMsaa, &ShadowMapSettings::shadow_msaa, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
-     kMaxBlur, &ShadowSettings::blur, OptionGroup::Filter},
+     kMaxBlur, &ShadowMapSettings::blur, OptionGroup::Filter},
     {"pcf-samples", "PCF samples from the Poisson set (1: hardware 2x2 compare)", 1,
-     kMaxShadowSamples, &ShadowSettings::pcf_samples, OptionGroup::Technique},
+     kMaxShadowSamples, &ShadowMapSettings::pcf_samples, OptionGroup::Technique},
     {"pcss-blocker-samples",
      "PCSS blocker-search samples at most, each gathering 2x2 texels (one per 4 texels of the "
      "search region)",
-     1, kMaxShadowSamples, &ShadowSettings::pcss_blocker_samples, OptionGroup::Technique},
+     1, kMaxShadowSamples, &ShadowMapSettings::pcss_blocker_samples, OptionGroup::Technique},
     {"pcss-filter-samples",
      "PCSS filter samples at most, each a 2x2 bilinear compare (one per texel of the penumbra)", 1,
-     kMaxShadowSamples, &ShadowSettings::pcss_filter_samples, OptionGroup::Technique},
+     kMaxShadowSamples, &ShadowMapSettings::pcss_filter_samples, OptionGroup::Technique},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
-     &ShadowSettings::cascades, OptionGroup::Lights},
+     &ShadowMapSettings::cascades, OptionGroup::Lights},
     {"shadow-anisotropy",
      "--shadow-mips: most anisotropic filtering along the pixel's footprint (up to the device's "
      "limit; llvmpipe: 1); 1: trilinear only",
-     1, 16, &ShadowSettings::shadow_anisotropy, OptionGroup::Filter},
+     1, 16, &ShadowMapSettings::shadow_anisotropy, OptionGroup::Filter},
 }};
 
 inline constexpr int kMaxAccumulate = 4096;
@@ -465,6 +498,33 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kAccumulatePar
      "the light's source (--light-size, --sun-angle; stratified, the same points every run); "
      "1: off",
      1, kMaxAccumulate, &ShadowSettings::accumulate, OptionGroup::SoftShadows},
+}};
+
+// A light's source size: its own (Light, scene files' "light_size" and
+// "sun_angle"), or, given on the command line, every light's of its kind
+// (ShadowSettings' overrides).
+struct SourceSizeParam {
+  std::string_view name;
+  std::string_view help;
+  float min;
+  float max;
+  float Light::*light_field;
+  SourceSizeOverride ShadowSettings::*override_field;
+  OptionGroup group = OptionGroup::Unset;
+};
+
+inline constexpr std::array<SourceSizeParam, 2> kSourceSizeParams{{
+    {"light-size",
+     "width of a spot light's source in world units (0: a point), for pcss, backprojection, "
+     "--soft and the area-light reference (a square facing the light's direction); a point "
+     "light's source is a sphere of this diameter. Sets every spot and point light's size; "
+     "without it each light keeps its own (a scene file's \"light_size\")",
+     0.0f, 100.0f, &Light::light_size, &ShadowSettings::light_size, OptionGroup::Lights},
+    {"sun-angle",
+     "angular diameter of a directional light's source in degrees (0: a point); the reference "
+     "traces the disc of directions this wide. Sets every directional light's; without it each "
+     "keeps its own (a scene file's \"sun_angle\")",
+     0.0f, 45.0f, &Light::sun_angle, &ShadowSettings::sun_angle, OptionGroup::Lights},
 }};
 
 inline constexpr int kMaxSsaoSamples = 64;  // SSAO_MAX_SAMPLES in shaders/shared/bindings.h
@@ -487,17 +547,17 @@ inline constexpr std::array<NumericParam<SsaoSettings, float>, 3> kSsaoFloatPara
      1000.0f, &SsaoSettings::range, OptionGroup::Ssao},
 }};
 
-inline constexpr std::array<FlagParam<ShadowSettings>, 2> kShadowFlagParams{{
+inline constexpr std::array<FlagParam<ShadowMapSettings>, 2> kShadowFlagParams{{
     {"soft",
      "vsm/msm/msm16 with --filter sat: filter width follows the estimated penumbra (blocker "
      "search from the moments), at least --blur",
-     &ShadowSettings::soft, OptionGroup::SoftShadows},
+     &ShadowMapSettings::soft, OptionGroup::SoftShadows},
     {"soft-two-moment-blockers",
      "msm/msm16 --soft: estimate the blockers' depth from the mean depth and the occluded "
      "fraction with the unoccluded texels at the receiver's depth (Yang et al. 2010, as vsm "
      "does) instead of the four-moment quadrature of Peters et al. 2016; closer at the "
      "bunny's foot, farther off in wide penumbrae",
-     &ShadowSettings::soft_two_moment_blockers, OptionGroup::SoftShadows},
+     &ShadowMapSettings::soft_two_moment_blockers, OptionGroup::SoftShadows},
 }};
 
 inline constexpr std::array<NumericParam<RenderSettings, int>, 3> kRenderIntParams{{
@@ -528,21 +588,21 @@ struct SwitchParam {
   OptionGroup group = OptionGroup::Unset;
 };
 
-inline constexpr std::array<SwitchParam<ShadowSettings>, 3> kShadowSwitchParams{{
+inline constexpr std::array<SwitchParam<ShadowMapSettings>, 3> kShadowSwitchParams{{
     {"guard-band",
      "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
      "filters near a face's edge read their own face (no seams)",
-     &ShadowSettings::guard_band, OptionGroup::Lights},
+     &ShadowMapSettings::guard_band, OptionGroup::Lights},
     {"fused",
      "filterable techniques with --filter gaussian and --blur 1..16: resolve and blur in one "
      "compute pass; off (or a wider blur) runs the resolve, then the horizontal and vertical "
      "blur passes",
-     &ShadowSettings::fused, OptionGroup::Filter},
+     &ShadowMapSettings::fused, OptionGroup::Filter},
     {"shadow-mips",
      "filterable techniques with --filter gaussian (or --blur 0): mip chain of the filtered map, "
      "read trilinearly and anisotropically over the pixel's footprint (distant receivers do not "
      "alias)",
-     &ShadowSettings::shadow_mips, OptionGroup::Filter},
+     &ShadowMapSettings::shadow_mips, OptionGroup::Filter},
 }};
 
 inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{
@@ -554,7 +614,10 @@ inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{
 }};
 
 // Throws UsageError naming the first parameter outside its range.
+void validate(const ShadowMapSettings& settings);
 void validate(const ShadowSettings& settings);
+// A light's source sizes (kSourceSizeParams).
+void validate(const Light& light);
 void validate(const RenderSettings& settings);
 void validate(const SsaoSettings& settings);
 void validate(const ReferenceSettings& settings);

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -38,11 +39,16 @@ namespace penumbra {
 // triangle list over the engine's vertex positions, indexed by 32-bit
 // vertex numbers (an engine with 16-bit indices widens them, or passes
 // boxes: the update() overload over CasterBounds). Coarse stand-ins fit
-// views as well as the real meshes. update() hashes them: when they change
-// it refits every light and draws every view again.
+// views as well as the real meshes. When they change, update() refits
+// every light and draws every view again. It tells a change by
+// `generation` when the engine gives one: a number the engine bumps
+// whenever it changes the positions or indices (O(1) per frame; the
+// engine's own dirty flag or frame counter). Without one it hashes every
+// vertex and index (O(n) per frame: safe whatever the engine does).
 struct CasterGeometry {
   PositionSpan positions;
   std::span<const std::uint32_t> indices;  // three per triangle
+  std::optional<std::uint64_t> generation = std::nullopt;
 };
 
 // One shadow view as the caster callback sees it.
@@ -69,6 +75,17 @@ struct CasterView {
 // static ones included.
 using DrawCasters = std::function<void(const CasterView&)>;
 
+// What render() and bind() do with the engine's GL state. Full (the
+// default): they read what they are about to change (only that: nothing on
+// a frame whose maps are cached) and put it back. None: for an engine
+// that sets all the state it draws with itself before each of its passes
+// (as most engines do); they read no state, and leave what they set
+// (docs/library.md, "GL state": framebuffers, viewport 0, program, vertex
+// array, depth, cull, scissor, clip distances, compute units and images,
+// the generic and indexed buffer bindings they use). Queries cost nothing
+// on llvmpipe but can stall a driver that runs ahead of the application.
+enum class StateRestore { Full, None };
+
 class ShadowMaps {
  public:
   // Needs a current OpenGL 4.5 core context (the one the engine renders
@@ -77,7 +94,9 @@ class ShadowMaps {
   // (and render() the block); the lookup must be generated with the same
   // (shadow_lookup_glsl(bindings)). Throws UsageError if two texture units
   // coincide or a binding is past the context's limit.
-  explicit ShadowMaps(const ShadowBindings& bindings = {});
+  // `restore`: see StateRestore.
+  explicit ShadowMaps(const ShadowBindings& bindings = {},
+                      StateRestore restore = StateRestore::Full);
   // Frees the GL objects if a context is current (it must be the one they
   // were made in); without a current context (the engine destroyed it
   // first) or after release() it calls no GL function and leaves the
@@ -92,17 +111,18 @@ class ShadowMaps {
   // lights; a directional light takes settings.cascades views, a point
   // light 6, a spot light 1; kMaxShadowViews in all) and fills the block.
   // A light is refitted only when its inputs change (a spot or point light
-  // not when the camera moves). Throws UsageError for settings out of
-  // range (validate()), too many lights or views, or accumulate (the
-  // renderer's: it renders the maps once per point of the light's source).
+  // not when the camera moves). Each light's own source size
+  // (Light::light_size, sun_angle) sets its penumbrae. Throws UsageError
+  // for settings or a light's source size out of range (validate()), or
+  // too many lights or views.
   void update(std::span<const Light> lights, const CameraFrustum& camera,
-              const CasterGeometry& casters, const ShadowSettings& settings);
+              const CasterGeometry& casters, const ShadowMapSettings& settings);
   // The same with the casters' world-space bounding boxes, one per object
   // (its index is the caster's id): the views are fitted to the boxes, and
   // a caster whose box changed since the last update() has the views that
   // see it (before or after) drawn again, and no other.
   void update(std::span<const Light> lights, const CameraFrustum& camera,
-              std::span<const CasterBounds> casters, const ShadowSettings& settings);
+              std::span<const CasterBounds> casters, const ShadowMapSettings& settings);
   // Caster `id` of the bounds form changed inside an unchanged box (it
   // turned, or its mesh changed): the views that see it are drawn again at
   // the next update() and render(). Throws UsageError for an id the last
@@ -117,12 +137,13 @@ class ShadowMaps {
   // moved, the map size or the view count changed; every view on the
   // first call), then, when a view was drawn or the settings changed, the
   // technique's resolve and filter passes (compute). A frame where nothing
-  // changed draws nothing (views_drawn() says how many it drew). Sets the
-  // state it needs (scissor and rasterizer discard off, fill, depth test
-  // LESS with writes, no culling, no polygon offset or depth clamp, clip
-  // control lower-left / -1..1, depth range 0..1, colour writes on) and
-  // leaves every piece of GL state it touches as it found it: the table in
-  // docs/library.md ("GL state") lists them.
+  // changed draws nothing and touches no GL state (views_drawn() says how
+  // many it drew). Sets the state it needs for viewport 0 (scissor and
+  // rasterizer discard off, fill, depth test LESS with writes, no culling,
+  // no polygon offset or depth clamp, clip distances 0-7 off, clip control
+  // lower-left / 0..1, depth range 0..1; the callback sees them so) and,
+  // with StateRestore::Full, leaves every piece of GL state it touches as
+  // it found it: the table in docs/library.md ("GL state") lists them.
   void render(const DrawCasters& draw);
 
   // Binds what penumbra_shadow() reads, at bindings(), and leaves it
@@ -151,6 +172,10 @@ class ShadowMaps {
   [[nodiscard]] int view_count() const;
   // The views the last render() drew (0: every map was cached).
   [[nodiscard]] int views_drawn() const;
+  // The glGet* and glIsEnabled* calls the last render() made to save the
+  // engine's state (0 when nothing was drawn or filtered, or with
+  // StateRestore::None).
+  [[nodiscard]] int state_queries() const;
   [[nodiscard]] std::uint32_t depth_maps() const;
   // The filtered maps, or with --filter sat the summed-area tables (an
   // unsigned-integer array); 0 for the techniques that read depth maps.

@@ -75,6 +75,8 @@ const float weights[2 * RADIUS + 1] = float[](GAUSSIAN_WEIGHTS);
 layout(location = 0) uniform float u_esm_c;
 layout(location = 1) uniform float u_evsm_positive;
 layout(location = 2) uniform float u_evsm_negative;
+// The first layer of the run this dispatch filters (filter/layer_runs.hpp).
+layout(location = 3) uniform int u_first_layer;
 
 #define SPAN_X (TILE_X + 2 * RADIUS)
 #define SPAN_Y (TILE_Y + 2 * RADIUS)
@@ -114,7 +116,7 @@ void main() {
 #else
   const ivec2 size = textureSize(depth_map, 0).xy;
 #endif
-  const int layer = int(gl_WorkGroupID.z);
+  const int layer = u_first_layer + int(gl_WorkGroupID.z);
   const ivec2 tile = ivec2(gl_WorkGroupID.xy) * ivec2(TILE_X, TILE_Y);
   const ivec2 local = ivec2(gl_LocalInvocationID.xy);
   const int thread = int(gl_LocalInvocationIndex);

@@ -23,6 +23,8 @@ layout(local_size_x = TILE_ACROSS, local_size_y = TILE_ALONG) in;
 
 layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray source;
 layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2DArray target;
+// The first layer of the run this dispatch blurs (filter/layer_runs.hpp).
+layout(location = 0) uniform int u_first_layer;
 layout(std430, binding = BINDING_FILTER_WEIGHTS_SSBO) readonly buffer Weights {
   float weights[];  // 2 RADIUS + 1 of them, summing to 1
 };
@@ -41,7 +43,7 @@ shared vec4 tile[TILE_ACROSS][LINE_STRIDE];
 
 void main() {
   const ivec2 size = textureSize(source, 0).xy;
-  const int layer = int(gl_WorkGroupID.z);
+  const int layer = u_first_layer + int(gl_WorkGroupID.z);
 #if AXIS == 0
   const ivec2 local = ivec2(gl_LocalInvocationID.xy);     // (along, across)
   const ivec2 group = ivec2(gl_WorkGroupID.xy) * ivec2(TILE_ALONG, TILE_ACROSS);

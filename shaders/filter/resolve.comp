@@ -29,11 +29,13 @@ layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2DArray repr
 layout(location = 0) uniform float u_esm_c;
 layout(location = 1) uniform float u_evsm_positive;
 layout(location = 2) uniform float u_evsm_negative;
+// The first layer of the run this dispatch resolves (filter/layer_runs.hpp).
+layout(location = 3) uniform int u_first_layer;
 
 void main() {
   const RepresentationConstants constants =
       RepresentationConstants(u_esm_c, u_evsm_positive, u_evsm_negative);
-  ivec3 p = ivec3(gl_GlobalInvocationID);
+  const ivec3 p = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, u_first_layer);
 #if SAMPLES > 1
   if (any(greaterThanEqual(p.xy, textureSize(depth_map).xy))) return;
   REPRESENTATION_TYPE sum = REPRESENTATION_TYPE(0.0);

@@ -17,10 +17,10 @@ std::string text(int value) {
   return std::to_string(value);
 }
 
-template <class Settings, class T, std::size_t N>
-void add_changed(std::vector<std::string>& args, const Settings& settings,
+template <class Owner, class Settings, class T, std::size_t N>
+void add_changed(std::vector<std::string>& args, const Owner& settings,
                  const std::array<NumericParam<Settings, T>, N>& params) {
-  const Settings defaults{};
+  const Owner defaults{};
   for (const auto& p : params) {
     if (settings.*(p.field) != defaults.*(p.field)) {
       args.push_back(flag(p.name) + "=" + text(settings.*(p.field)));
@@ -82,6 +82,10 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   add_changed(args, command.shadow, kShadowIntParams);
   add_changed(args, command.shadow, kAccumulateParams);
   add_changed(args, command.shadow, kShadowFloatParams);
+  for (const SourceSizeParam& p : kSourceSizeParams) {
+    const SourceSizeOverride& size = command.shadow.*(p.override_field);
+    if (size.is_set()) args.push_back(flag(p.name) + "=" + text(static_cast<float>(size)));
+  }
   add_changed_switches(args, command.ssao, kSsaoSwitchParams);
   add_changed(args, command.ssao, kSsaoIntParams);
   add_changed(args, command.ssao, kSsaoFloatParams);

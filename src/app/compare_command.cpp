@@ -339,8 +339,8 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
     std::printf("traced reference: spherical light %g in diameter, %d rays per pixel", light.size,
                 reference.rays);
   } else if (light.size > 0.0f) {
-    std::printf("traced reference: sun %g degrees wide, %d rays per pixel", args.shadow.sun_angle,
-                reference.rays);
+    std::printf("traced reference: sun %g degrees wide, %d rays per pixel",
+                static_cast<double>(glm::degrees(light.size)), reference.rays);
   } else {
     std::printf("traced reference: point light, 1 ray per pixel");
   }
@@ -413,8 +413,13 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"height", args.render.height},
       {"shadow_map_size", args.shadow.map_size},
       {"shadow_msaa", args.shadow.shadow_msaa},
-      {"light_size", args.shadow.light_size},
-      {"sun_angle", args.shadow.sun_angle},
+      // The judged light's own source size, under --light-size/--sun-angle.
+      {"light_size",
+       with_source_size(scene.lights[static_cast<std::size_t>(light_index)], args.shadow)
+           .light_size},
+      {"sun_angle",
+       with_source_size(scene.lights[static_cast<std::size_t>(light_index)], args.shadow)
+           .sun_angle},
       {"reference",
        {{"rays_per_pixel", reference.rays},
         {"pixels", reference.pixels},

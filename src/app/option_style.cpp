@@ -146,6 +146,19 @@ template CLI::Option* add_number<int>(CLI::App&, std::string_view, int&, std::st
 template CLI::Option* add_number<float>(CLI::App&, std::string_view, float&, std::string_view,
                                         float, float, OptionGroup);
 
+CLI::Option* add_number_setter(CLI::App& app, std::string_view name, float shown_default,
+                               std::function<void(float)> set, std::string_view help, float min,
+                               float max, OptionGroup group) {
+  CLI::Option* option =
+      app.add_option_function<float>(
+             flag(name), [set = std::move(set)](const float& value) { set(value); },
+             std::string(help))
+          ->default_str(number_text(shown_default))
+          ->transform(finite_range<float>(min, max))
+          ->type_name("X");
+  return in_group(option, group);
+}
+
 CLI::Validator index_number() {
   return finite_range<int>(0, std::numeric_limits<int>::max()).name("");
 }

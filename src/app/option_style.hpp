@@ -4,6 +4,7 @@
 // NAME, LIST, FILE), its description, its choices or range, its default,
 // and its --help section (OptionGroup, from penumbra/settings.hpp).
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,13 @@ std::string group_title(OptionGroup group);
 template <class T>
 CLI::Option* add_number(CLI::App& app, std::string_view name, T& value, std::string_view help,
                         T min, T max, OptionGroup group);
+
+// "--name X" as add_number<float>, the value handed to `set` only when
+// the option is given (a setting that records being set:
+// SourceSizeOverride); `shown_default` is the default --help shows.
+CLI::Option* add_number_setter(CLI::App& app, std::string_view name, float shown_default,
+                               std::function<void(float)> set, std::string_view help, float min,
+                               float max, OptionGroup group);
 
 // A whole number >= 0 in decimal digits (an index), with no range shown
 // in --help.

@@ -17,8 +17,8 @@ OptionGroup group_or(OptionGroup group, OptionGroup fallback) {
   return group == OptionGroup::Unset ? fallback : group;
 }
 
-template <class Settings, class T, std::size_t N>
-void add_params(CLI::App& app, Settings& settings,
+template <class Owner, class Settings, class T, std::size_t N>
+void add_params(CLI::App& app, Owner& settings,
                 const std::array<NumericParam<Settings, T>, N>& params, OptionGroup fallback) {
   for (const auto& p : params) {
     add_number<T>(app, p.name, settings.*(p.field), p.help, p.min, p.max,
@@ -121,6 +121,14 @@ void add_shadow_parameters(CLI::App& app, ShadowSettings& settings) {
   add_switches(app, settings, kShadowSwitchParams, OptionGroup::Technique);
   add_params(app, settings, kShadowIntParams, OptionGroup::Technique);
   add_params(app, settings, kShadowFloatParams, OptionGroup::Technique);
+  // Given, a source size applies to every light of its kind (the scene's
+  // own sizes otherwise): set through the override, which records that.
+  for (const SourceSizeParam& p : kSourceSizeParams) {
+    SourceSizeOverride& size = settings.*(p.override_field);
+    add_number_setter(
+        app, p.name, size, [&size](float value) { size = value; }, p.help, p.min, p.max,
+        group_or(p.group, OptionGroup::Lights));
+  }
 }
 
 void add_accumulate_option(CLI::App& app, ShadowSettings& settings) {

@@ -10,28 +10,41 @@ namespace penumbra {
 
 namespace {
 
-template <class Settings, class T, std::size_t N>
-void check_ranges(const Settings& settings,
-                  const std::array<NumericParam<Settings, T>, N>& params) {
-  for (const auto& p : params) {
-    const T value = settings.*(p.field);
-    bool ok = value >= p.min && value <= p.max;
-    if constexpr (std::is_floating_point_v<T>) ok = ok && std::isfinite(value);
-    if (!ok) {
-      std::ostringstream msg;
-      msg << "--" << p.name << " must be between " << p.min << " and " << p.max << " (got " << value
-          << ")";
-      throw UsageError(msg.str());
-    }
+template <class T>
+void check_range(std::string_view name, T value, T min, T max) {
+  bool ok = value >= min && value <= max;
+  if constexpr (std::is_floating_point_v<T>) ok = ok && std::isfinite(value);
+  if (!ok) {
+    std::ostringstream msg;
+    msg << "--" << name << " must be between " << min << " and " << max << " (got " << value << ")";
+    throw UsageError(msg.str());
   }
+}
+
+template <class Owner, class Settings, class T, std::size_t N>
+void check_ranges(const Owner& settings, const std::array<NumericParam<Settings, T>, N>& params) {
+  for (const auto& p : params) check_range<T>(p.name, settings.*(p.field), p.min, p.max);
 }
 
 }  // namespace
 
 void validate(const ShadowSettings& settings) {
+  validate(static_cast<const ShadowMapSettings&>(settings));
+  check_ranges(settings, kAccumulateParams);
+  for (const SourceSizeParam& p : kSourceSizeParams) {
+    check_range<float>(p.name, settings.*(p.override_field), p.min, p.max);
+  }
+}
+
+void validate(const Light& light) {
+  for (const SourceSizeParam& p : kSourceSizeParams) {
+    check_range<float>(p.name, light.*(p.light_field), p.min, p.max);
+  }
+}
+
+void validate(const ShadowMapSettings& settings) {
   check_ranges(settings, kShadowFloatParams);
   check_ranges(settings, kShadowIntParams);
-  check_ranges(settings, kAccumulateParams);
   if ((settings.shadow_msaa & (settings.shadow_msaa - 1)) != 0) {
     throw UsageError("--shadow-msaa must be 1, 2, 4 or 8 (got " +
                      std::to_string(settings.shadow_msaa) + ")");

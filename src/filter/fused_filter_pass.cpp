@@ -6,6 +6,7 @@
 
 #include "penumbra/error.hpp"
 #include "penumbra/filter/gaussian.hpp"
+#include "penumbra/filter/layer_runs.hpp"
 #include "penumbra/shadow/representation.hpp"
 #include "penumbra/shared/bindings.h"
 
@@ -56,7 +57,8 @@ TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width
           1.0 * bytes_per_texel(format)};
 }
 
-void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
+void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
+                              std::span<const std::uint8_t> layers) {
   const int radius = settings.blur;
   if (radius < 1 || radius > kMaxFusedBlur) {
     throw RuntimeError("the fused filter takes radii 1.." + std::to_string(kMaxFusedBlur));
@@ -90,9 +92,10 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
                            {"SAMPLES", std::to_string(samples)}};
     it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;
   }
-  gl::ensure_texture_array(output_, format, depth_maps.width(), depth_maps.height(),
-                           depth_maps.layers(), "fused filtered shadow maps",
-                           filtered_map_levels(settings, depth_maps.width(), depth_maps.height()));
+  const bool all = gl::ensure_texture_array(
+      output_, format, depth_maps.width(), depth_maps.height(), depth_maps.layers(),
+      "fused filtered shadow maps",
+      filtered_map_levels(settings, depth_maps.width(), depth_maps.height()));
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve+filter (fused)");
   it->second.use();
@@ -100,8 +103,11 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowSetting
   glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
   glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-  glDispatchCompute(groups(output_.width(), kTileX), groups(output_.height(), rows),
-                    static_cast<GLuint>(output_.layers()));
+  for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
+    glProgramUniform1i(it->second.id(), 3, first);
+    glDispatchCompute(groups(output_.width(), kTileX), groups(output_.height(), rows),
+                      static_cast<GLuint>(count));
+  });
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glPopDebugGroup();
 }

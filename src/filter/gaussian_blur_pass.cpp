@@ -3,6 +3,7 @@
 #include <string>
 
 #include "penumbra/filter/gaussian.hpp"
+#include "penumbra/filter/layer_runs.hpp"
 #include "penumbra/settings.hpp"
 #include "penumbra/shadow/representation.hpp"
 #include "penumbra/shared/bindings.h"
@@ -17,9 +18,9 @@ GLuint groups(int size, int tile) {
 }
 
 // `texture` as a 2D array shaped like `like`, with `levels` mip levels.
-void ensure_like(gl::Texture& texture, const gl::Texture& like, const char* label, int levels = 1) {
-  gl::ensure_texture_array(texture, like.format(), like.width(), like.height(), like.layers(),
-                           label, levels);
+bool ensure_like(gl::Texture& texture, const gl::Texture& like, const char* label, int levels = 1) {
+  return gl::ensure_texture_array(texture, like.format(), like.width(), like.height(),
+                                  like.layers(), label, levels);
 }
 
 }  // namespace
@@ -40,19 +41,22 @@ const gl::Program& GaussianBlurPass::program(GLenum format, int axis, int radius
 }
 
 void GaussianBlurPass::dispatch(const gl::Program& program, const gl::Texture& from,
-                                const gl::Texture& to, int axis) {
+                                const gl::Texture& to, int axis,
+                                std::span<const std::uint8_t> layers, bool all) {
   program.use();
   glBindTextureUnit(UNIT_COMPUTE_INPUT, from.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
   glBindImageTexture(IMAGE_OUTPUT, to.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, to.format());
-  const auto layers = static_cast<GLuint>(from.layers());
-  if (axis == 0) {
-    glDispatchCompute(groups(from.width(), GAUSSIAN_TILE_ALONG),
-                      groups(from.height(), GAUSSIAN_TILE_ACROSS), layers);
-  } else {
-    glDispatchCompute(groups(from.width(), GAUSSIAN_TILE_ACROSS),
-                      groups(from.height(), GAUSSIAN_TILE_ALONG), layers);
-  }
+  for_each_layer_run(layers, from.layers(), all, [&](int first, int count) {
+    glProgramUniform1i(program.id(), 0, first);
+    if (axis == 0) {
+      glDispatchCompute(groups(from.width(), GAUSSIAN_TILE_ALONG),
+                        groups(from.height(), GAUSSIAN_TILE_ACROSS), static_cast<GLuint>(count));
+    } else {
+      glDispatchCompute(groups(from.width(), GAUSSIAN_TILE_ACROSS),
+                        groups(from.height(), GAUSSIAN_TILE_ALONG), static_cast<GLuint>(count));
+    }
+  });
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
@@ -68,24 +72,24 @@ TexelTraffic GaussianBlurPass::texel_traffic(GLenum format, int radius, int axis
 }
 
 void GaussianBlurPass::execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler,
-                               int levels) {
+                               int levels, std::span<const std::uint8_t> layers) {
   if (radius != weights_radius_) {
     std::vector<float> weights = gaussian_weights(radius);
     weights_.update(weights.data(), weights.size() * sizeof(float));
     weights_radius_ = radius;
   }
   ensure_like(intermediate_, source, "blur intermediate");
-  ensure_like(output_, source, "blurred shadow maps", levels);
+  const bool all = ensure_like(output_, source, "blurred shadow maps", levels);
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "gaussian blur");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, weights_.id());
   {
     gl::GpuPassScope timed(profiler, gl::GpuPass::FilterHorizontal);
-    dispatch(program(source.format(), 0, radius), source, intermediate_, 0);
+    dispatch(program(source.format(), 0, radius), source, intermediate_, 0, layers, all);
   }
   {
     gl::GpuPassScope timed(profiler, gl::GpuPass::FilterVertical);
-    dispatch(program(source.format(), 1, radius), intermediate_, output_, 1);
+    dispatch(program(source.format(), 1, radius), intermediate_, output_, 1, layers, all);
   }
   glPopDebugGroup();
 }

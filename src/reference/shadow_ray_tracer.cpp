@@ -282,8 +282,8 @@ ReferenceLight make_reference_light(const Light& light, const LightView& view,
   // space.
   r.axis_u = glm::normalize(glm::vec3(view.view[0][0], view.view[1][0], view.view[2][0]));
   r.axis_v = glm::normalize(glm::vec3(view.view[0][1], view.view[1][1], view.view[2][1]));
-  r.size =
-      light.type != LightType::Directional ? settings.light_size : glm::radians(settings.sun_angle);
+  const Light sized = with_source_size(light, settings);
+  r.size = light.type != LightType::Directional ? sized.light_size : glm::radians(sized.sun_angle);
   r.cos_cone = light.type == LightType::Spot ? std::cos(glm::radians(light.cone_degrees)) : -1.0f;
   return r;
 }

@@ -53,10 +53,11 @@ struct ReferenceLight {
   float cos_cone = -1.0f;
 };
 
-// The scene's light with the source size the techniques give it: a spot
-// light's square is `light_size` wide, a point light's sphere
-// `light_size` in diameter, a directional light's disc of directions
-// `sun_angle` degrees across. The square is oriented like the light's
+// The scene's light with the source size the techniques give it (its own,
+// or the settings' where they set one: with_source_size): a spot light's
+// square is `light_size` wide, a point light's sphere `light_size` in
+// diameter, a directional light's disc of directions `sun_angle` degrees
+// across. The square is oriented like the light's
 // fitted shadow map.
 ReferenceLight make_reference_light(const Light& light, const LightView& view,
                                     const ShadowSettings& settings);

@@ -12,7 +12,7 @@ namespace penumbra {
 SourceSample source_sample(const Light& light, const ShadowSettings& shadow, int k, int n,
                            int pattern) {
   SourceSample s;
-  s.light = light;
+  s.light = with_source_size(light, shadow);
   const glm::vec2 u =
       stratified_sample(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n),
                         static_cast<std::uint32_t>(pattern))
@@ -24,7 +24,7 @@ SourceSample source_sample(const Light& light, const ShadowSettings& shadow, int
   const glm::vec3 axis_v = glm::cross(axis_u, direction);
   switch (light.type) {
     case LightType::Spot: {
-      const glm::vec2 offset = (u - 0.5f) * shadow.light_size;
+      const glm::vec2 offset = (u - 0.5f) * s.light.light_size;
       s.light.position += offset.x * axis_u + offset.y * axis_v;
       s.normal = direction;
       break;
@@ -35,11 +35,11 @@ SourceSample source_sample(const Light& light, const ShadowSettings& shadow, int
       const float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z));
       const float phi = 6.28318531f * u.y;
       s.normal = glm::vec3(r * std::cos(phi), r * std::sin(phi), z);
-      s.light.position += 0.5f * shadow.light_size * s.normal;
+      s.light.position += 0.5f * s.light.light_size * s.normal;
       break;
     }
     case LightType::Directional: {
-      const float half_angle = 0.5f * glm::radians(shadow.sun_angle);
+      const float half_angle = 0.5f * glm::radians(s.light.sun_angle);
       const float sine = std::sin(0.5f * half_angle);
       const glm::vec3 c = uniform_cone(u, 2.0f * sine * sine);
       s.light.direction = -glm::normalize(c.x * axis_u + c.y * axis_v - c.z * direction);

@@ -28,6 +28,26 @@ static_assert(sizeof(gpu::GpuShadow) == 144, "GpuShadow must match std140");
 
 namespace {
 
+// The shadow block's fields for --accumulate's sub-frame (the renderer's
+// own: ShadowMaps leaves them 0).
+void set_subframe_params(gpu::GpuShadow& block, const ShadowSettings& shadow) {
+  block.accumulate_u = shadow.subframe_u;
+  block.accumulate_v = shadow.subframe_v;
+  block.accumulate_count = shadow.accumulate > 1 ? shadow.accumulate : 0;
+  block.accumulate_normal_x = shadow.subframe_normal[0];
+  block.accumulate_normal_y = shadow.subframe_normal[1];
+  block.accumulate_normal_z = shadow.subframe_normal[2];
+  block.accumulate_frame = shadow.subframe;
+  block.accumulate_cell_x = shadow.subframe_cell[0];
+  block.accumulate_cell_y = shadow.subframe_cell[1];
+  block.accumulate_cell_width = shadow.subframe_cell[2];
+  block.accumulate_cell_height = shadow.subframe_cell[3];
+  block.accumulate_column = shadow.subframe_cell_index[0];
+  block.accumulate_columns = shadow.subframe_cell_index[1];
+  block.accumulate_row = shadow.subframe_cell_index[2];
+  block.accumulate_rows = shadow.subframe_cell_index[3];
+}
+
 // One layer (0 for a 2D texture) of a texture as an image.
 Image read_texture(GLuint texture, int width, int height, GLenum format, int layer = 0) {
   Image image(width, height);
@@ -242,7 +262,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   view_count_ = 0;
   for (int i = 0; i < light_count; ++i) {
     const auto index = static_cast<std::size_t>(i);
-    const Light& light = scene_.lights[index];
+    const Light light = with_source_size(scene_.lights[index], shadow);
     ShadowViewInputs inputs = shadow_view_inputs(light, camera, shadow);
     if (fit_inputs_[index] != inputs) {
       light_views_[index] =
@@ -276,6 +296,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   frame_ubo_.update(&frame, sizeof frame);
 
   gpu::GpuShadow shadow_block = gpu_shadow_params(shadow);
+  set_subframe_params(shadow_block, shadow);
   shadow_block.accumulate_weighted = shadow.accumulate > 1 && render.view == View::Shadow ? 1 : 0;
   shadow_ubo_.update(&shadow_block, sizeof shadow_block);
 
@@ -283,9 +304,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
 
   const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
   shadow_views_drawn_ = 0;
+  std::span<const std::uint8_t> stale;
   if (shadows) {
     // Only the views whose depths changed (view_cache.hpp).
-    const std::span<const std::uint8_t> stale = shadow_cache_.stale_views(
+    stale = shadow_cache_.stale_views(
         std::span<const gpu::GpuShadowView>(views, static_cast<std::size_t>(view_count_)),
         shadow.map_size);
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
@@ -297,16 +319,21 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
         },
         drawn, shadow.map_size, stale, depth_samples(shadow));
   }
-  // The resolve and the filters read every layer: they run again when a
-  // view was drawn or the settings changed, else their output is current.
-  const bool filter_maps = shadow_views_drawn_ > 0 || filtered_for_ != shadow;
+  // The resolve and the filters run again when a view was drawn (over the
+  // drawn views' layers; filter/layer_runs.hpp) or the settings changed
+  // (over every layer), else their output is current. The summed-area
+  // tables, the depth hierarchy and the mip chains take every layer.
+  const bool settings_changed = filtered_for_ != shadow;
+  const bool filter_maps = shadow_views_drawn_ > 0 || settings_changed;
+  const std::span<const std::uint8_t> filter_layers =
+      settings_changed ? std::span<const std::uint8_t>() : stale;
   filtered_for_ = shadow;
   const gl::Texture* filtered = nullptr;
   const bool fused = is_filterable(shadow.technique) && uses_fused_filter(shadow);
   if (fused) {
     if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::FusedFilter);
-      fused_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow);
+      fused_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow, filter_layers);
     }
     filtered = &fused_pass_.output();
     // The moments view shows the unfiltered representation, which the
@@ -316,7 +343,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   } else if (is_filterable(shadow.technique)) {
     if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
-      resolve_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow);
+      resolve_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow, filter_layers);
     }
     const gl::Texture& representation = resolve_pass_.representation();
     filtered = &representation;
@@ -325,7 +352,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       if (filter_maps) {
         blur_pass_.execute(
             representation, shadow.blur, profiler,
-            filtered_map_levels(shadow, representation.width(), representation.height()));
+            filtered_map_levels(shadow, representation.width(), representation.height()),
+            filter_layers);
       }
       filtered = &blur_pass_.output();
     } else if (filter == FILTER_SAT) {

@@ -1,5 +1,6 @@
 #include "scene/scene_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -10,6 +11,7 @@
 #include "core/display_name.hpp"
 #include "io/bounded_read.hpp"
 #include "penumbra/error.hpp"
+#include "penumbra/settings.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/gltf_scene.hpp"
 #include "scene/model.hpp"
@@ -162,6 +164,22 @@ Light read_light(Reader r) {
     l.cone_degrees = r.number("cone", l.cone_degrees, 1.0f, 80.0f);
     l.inner_cone_degrees = r.number("inner_cone", std::min(l.inner_cone_degrees, l.cone_degrees),
                                     0.0f, l.cone_degrees);
+  }
+  // The source's size (kSourceSizeParams: "light_size" for spot and point
+  // lights, "sun_angle" for directional ones), each light its own.
+  for (const SourceSizeParam& p : kSourceSizeParams) {
+    const bool sun = p.light_field == &Light::sun_angle;
+    std::string key(p.name);
+    std::replace(key.begin(), key.end(), '-', '_');
+    if (sun != (l.type == LightType::Directional)) {
+      if (r.has(key)) {
+        r.fail(r.child(key), sun ? "only directional lights have a sun_angle (spot and point "
+                                   "lights: light_size)"
+                                 : "directional lights have a sun_angle, not a light_size");
+      }
+      continue;
+    }
+    l.*(p.light_field) = r.number(key, l.*(p.light_field), p.min, p.max);
   }
   r.reject_unknown_keys();
   return l;

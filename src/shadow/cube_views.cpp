@@ -65,7 +65,7 @@ float guard_band_fov(int map_size, float guard_texels) {
   return 2.0f * std::atan(guard_band_half_width(map_size, guard_texels));
 }
 
-float guard_band_texels(const ShadowSettings& settings, int map_size) {
+float guard_band_texels(const ShadowMapSettings& settings, int map_size) {
   if (!settings.guard_band) return 0.0f;
   // Texels the technique reads on either side of the lookup texel.
   float reach = 0.0f;

@@ -43,7 +43,7 @@ float guard_band_fov(int map_size, float guard_texels);
 // filter reaches from the lookup texel, plus a margin for the normal
 // offset and bilinear taps; 0 with --guard-band off. At most map_size / 8
 // texels (a quarter of the face's resolution spent on the band).
-float guard_band_texels(const ShadowSettings& settings, int map_size);
+float guard_band_texels(const ShadowMapSettings& settings, int map_size);
 
 // Nearest and farthest distance from `center` to the triangles (the
 // nearest point may lie inside a triangle, the farthest is a vertex).

@@ -4,21 +4,6 @@ namespace penumbra {
 
 namespace {
 
-// Every target a texture unit has a binding for (OpenGL 4.5, table 8.2).
-constexpr std::array<std::pair<GLenum, GLenum>, 11> kTextureTargets{{
-    {GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D},
-    {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D},
-    {GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D},
-    {GL_TEXTURE_1D_ARRAY, GL_TEXTURE_BINDING_1D_ARRAY},
-    {GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BINDING_2D_ARRAY},
-    {GL_TEXTURE_RECTANGLE, GL_TEXTURE_BINDING_RECTANGLE},
-    {GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP},
-    {GL_TEXTURE_CUBE_MAP_ARRAY, GL_TEXTURE_BINDING_CUBE_MAP_ARRAY},
-    {GL_TEXTURE_BUFFER, GL_TEXTURE_BINDING_BUFFER},
-    {GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BINDING_2D_MULTISAMPLE},
-    {GL_TEXTURE_2D_MULTISAMPLE_ARRAY, GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY},
-}};
-
 void set_enabled(GLenum capability, GLboolean enabled) {
   if (enabled) {
     glEnable(capability);
@@ -27,43 +12,63 @@ void set_enabled(GLenum capability, GLboolean enabled) {
   }
 }
 
+// The first clip distances: every GL 4.5 device has at least 8
+// (GL_MAX_CLIP_DISTANCES, OpenGL 4.5 table 23.59).
+constexpr int kClipDistances = 8;
+
 }  // namespace
 
-GlStateGuard::GlStateGuard(const GlBindingPoints& points) {
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer_);
-  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_framebuffer_);
-  glGetIntegerv(GL_VIEWPORT, viewport_.data());
-  glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
-  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array_);
-  glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
-  glGetIntegerv(GL_UNIFORM_BUFFER_BINDING, &uniform_buffer_);
-  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storage_buffer_);
-  depth_test_ = glIsEnabled(GL_DEPTH_TEST);
-  cull_face_ = glIsEnabled(GL_CULL_FACE);
-  scissor_test_ = glIsEnabled(GL_SCISSOR_TEST);
-  rasterizer_discard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
-  polygon_offset_fill_ = glIsEnabled(GL_POLYGON_OFFSET_FILL);
-  depth_clamp_ = glIsEnabled(GL_DEPTH_CLAMP);
-  glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
-  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
-  glGetBooleanv(GL_COLOR_WRITEMASK, color_mask_.data());
-  glGetIntegerv(GL_POLYGON_MODE, polygon_mode_.data());
-  glGetIntegerv(GL_CLIP_ORIGIN, &clip_origin_);
-  glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth_mode_);
-  glGetDoublev(GL_DEPTH_RANGE, depth_range_.data());
+GlStateGuard::GlStateGuard(const GlStateScope& scope)
+    : any_(scope.caster_pass || !scope.texture_units.empty() || !scope.image_units.empty() ||
+           !scope.uniform_buffers.empty() || !scope.storage_buffers.empty()),
+      caster_pass_(scope.caster_pass) {
+  if (!any_) return;
+  const auto get = [this](GLenum pname, GLint* value) {
+    glGetIntegerv(pname, value);
+    ++queries_;
+  };
+  const auto enabled = [this](GLenum capability) {
+    ++queries_;
+    return glIsEnabled(capability);
+  };
+  get(GL_CURRENT_PROGRAM, &program_);
+  get(GL_ACTIVE_TEXTURE, &active_texture_);
+  get(GL_UNIFORM_BUFFER_BINDING, &uniform_buffer_);
+  get(GL_SHADER_STORAGE_BUFFER_BINDING, &storage_buffer_);
+  if (caster_pass_) {
+    CasterPass& c = caster_;
+    get(GL_DRAW_FRAMEBUFFER_BINDING, &c.draw_framebuffer);
+    get(GL_READ_FRAMEBUFFER_BINDING, &c.read_framebuffer);
+    get(GL_VERTEX_ARRAY_BINDING, &c.vertex_array);
+    glGetFloati_v(GL_VIEWPORT, 0, c.viewport.data());
+    ++queries_;
+    c.depth_test = enabled(GL_DEPTH_TEST);
+    c.cull_face = enabled(GL_CULL_FACE);
+    c.scissor_test = glIsEnabledi(GL_SCISSOR_TEST, 0);
+    ++queries_;
+    c.rasterizer_discard = enabled(GL_RASTERIZER_DISCARD);
+    c.polygon_offset_fill = enabled(GL_POLYGON_OFFSET_FILL);
+    c.depth_clamp = enabled(GL_DEPTH_CLAMP);
+    get(GL_DEPTH_FUNC, &c.depth_func);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &c.depth_mask);
+    ++queries_;
+    get(GL_POLYGON_MODE, c.polygon_mode.data());
+    for (int i = 0; i < kClipDistances; ++i) {
+      c.clip_distances[static_cast<std::size_t>(i)] =
+          enabled(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
+    }
+  }
 
   // Per-unit texture bindings are read through the active unit.
-  for (GLuint unit : points.texture_units) {
+  for (GLuint unit : scope.texture_units) {
     TextureUnit& saved = texture_units_.emplace_back();
     saved.unit = unit;
     glActiveTexture(GL_TEXTURE0 + unit);
-    for (std::size_t t = 0; t < kTextureTargets.size(); ++t) {
-      glGetIntegerv(kTextureTargets[t].second, &saved.textures[t]);
-    }
-    glGetIntegerv(GL_SAMPLER_BINDING, &saved.sampler);
+    get(GL_TEXTURE_BINDING_2D_ARRAY, &saved.texture);
+    get(GL_SAMPLER_BINDING, &saved.sampler);
   }
-  glActiveTexture(static_cast<GLenum>(active_texture_));
-  for (GLuint unit : points.image_units) {
+  if (!scope.texture_units.empty()) glActiveTexture(static_cast<GLenum>(active_texture_));
+  for (GLuint unit : scope.image_units) {
     ImageUnit& saved = image_units_.emplace_back();
     saved.unit = unit;
     glGetIntegeri_v(GL_IMAGE_BINDING_NAME, unit, &saved.texture);
@@ -72,6 +77,7 @@ GlStateGuard::GlStateGuard(const GlBindingPoints& points) {
     glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, unit, &saved.layer);
     glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, unit, &saved.access);
     glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, unit, &saved.format);
+    queries_ += 6;
   }
   const auto save_buffers = [&](GLenum target, GLenum binding, GLenum start, GLenum size,
                                 std::span<const GLuint> indices) {
@@ -82,16 +88,18 @@ GlStateGuard::GlStateGuard(const GlBindingPoints& points) {
       glGetIntegeri_v(binding, index, &saved.buffer);
       glGetInteger64i_v(start, index, &saved.start);
       glGetInteger64i_v(size, index, &saved.size);
+      queries_ += 3;
     }
   };
   save_buffers(GL_UNIFORM_BUFFER, GL_UNIFORM_BUFFER_BINDING, GL_UNIFORM_BUFFER_START,
-               GL_UNIFORM_BUFFER_SIZE, points.uniform_buffers);
+               GL_UNIFORM_BUFFER_SIZE, scope.uniform_buffers);
   save_buffers(GL_SHADER_STORAGE_BUFFER, GL_SHADER_STORAGE_BUFFER_BINDING,
                GL_SHADER_STORAGE_BUFFER_START, GL_SHADER_STORAGE_BUFFER_SIZE,
-               points.storage_buffers);
+               scope.storage_buffers);
 }
 
 GlStateGuard::~GlStateGuard() {
+  if (!any_) return;
   // Indexed buffer bindings first: binding one also sets the generic
   // binding, restored after them.
   for (const BufferBinding& b : buffers_) {
@@ -112,34 +120,40 @@ GlStateGuard::~GlStateGuard() {
   }
   for (const TextureUnit& u : texture_units_) {
     glActiveTexture(GL_TEXTURE0 + u.unit);
-    for (std::size_t t = 0; t < kTextureTargets.size(); ++t) {
-      glBindTexture(kTextureTargets[t].first, static_cast<GLuint>(u.textures[t]));
-    }
+    glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(u.texture));
     glBindSampler(u.unit, static_cast<GLuint>(u.sampler));
   }
   glActiveTexture(static_cast<GLenum>(active_texture_));
-
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_framebuffer_));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_framebuffer_));
-  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-  // A program deleted while it was current is freed once another one is
-  // used (OpenGL 4.5, 7.3): there is none to restore then.
+  // A program the engine deleted while it was current lived on only as
+  // long as it stayed current: gone once the passes used theirs, it
+  // leaves none to restore.
   const auto program = static_cast<GLuint>(program_);
   glUseProgram(program != 0 && glIsProgram(program) ? program : 0);
-  glBindVertexArray(static_cast<GLuint>(vertex_array_));
-  set_enabled(GL_DEPTH_TEST, depth_test_);
-  set_enabled(GL_CULL_FACE, cull_face_);
-  set_enabled(GL_SCISSOR_TEST, scissor_test_);
-  set_enabled(GL_RASTERIZER_DISCARD, rasterizer_discard_);
-  set_enabled(GL_POLYGON_OFFSET_FILL, polygon_offset_fill_);
-  set_enabled(GL_DEPTH_CLAMP, depth_clamp_);
-  glDepthFunc(static_cast<GLenum>(depth_func_));
-  glDepthMask(depth_mask_);
-  glColorMask(color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
+  if (!caster_pass_) return;
+
+  const CasterPass& c = caster_;
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(c.draw_framebuffer));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(c.read_framebuffer));
+  glBindVertexArray(static_cast<GLuint>(c.vertex_array));
+  glViewportIndexedfv(0, c.viewport.data());
+  set_enabled(GL_DEPTH_TEST, c.depth_test);
+  set_enabled(GL_CULL_FACE, c.cull_face);
+  if (c.scissor_test) {
+    glEnablei(GL_SCISSOR_TEST, 0);
+  } else {
+    glDisablei(GL_SCISSOR_TEST, 0);
+  }
+  set_enabled(GL_RASTERIZER_DISCARD, c.rasterizer_discard);
+  set_enabled(GL_POLYGON_OFFSET_FILL, c.polygon_offset_fill);
+  set_enabled(GL_DEPTH_CLAMP, c.depth_clamp);
+  glDepthFunc(static_cast<GLenum>(c.depth_func));
+  glDepthMask(c.depth_mask);
   // Core profile: one mode for both faces (GL_POLYGON_MODE reports it twice).
-  glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
-  glClipControl(static_cast<GLenum>(clip_origin_), static_cast<GLenum>(clip_depth_mode_));
-  glDepthRange(depth_range_[0], depth_range_[1]);
+  glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(c.polygon_mode[0]));
+  for (int i = 0; i < kClipDistances; ++i) {
+    set_enabled(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i),
+                c.clip_distances[static_cast<std::size_t>(i)]);
+  }
 }
 
 GenericBufferBindingsGuard::GenericBufferBindingsGuard() {
@@ -153,15 +167,13 @@ GenericBufferBindingsGuard::~GenericBufferBindingsGuard() {
 }
 
 void set_caster_pass_state() {
-  glDisable(GL_SCISSOR_TEST);
+  glDisablei(GL_SCISSOR_TEST, 0);
   glDisable(GL_RASTERIZER_DISCARD);
   glDisable(GL_CULL_FACE);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_DEPTH_CLAMP);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-  glDepthRange(0.0, 1.0);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  for (int i = 0; i < kClipDistances; ++i) glDisable(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
 }
 
 }  // namespace penumbra

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "penumbra/filter/layer_runs.hpp"
 #include "penumbra/shadow/representation.hpp"
 #include "penumbra/shared/bindings.h"
 
@@ -19,7 +20,8 @@ TexelTraffic MomentResolvePass::texel_traffic(GLenum depth_format, Technique tec
           static_cast<double>(bytes_per_texel(representation_format(technique)))};
 }
 
-void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSettings& settings) {
+void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
+                                std::span<const std::uint8_t> layers) {
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);
   const int samples = depth_maps.samples();
@@ -37,8 +39,8 @@ void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSetti
   const int levels = filter_define(settings) == FILTER_NONE
                          ? filtered_map_levels(settings, depth_maps.width(), depth_maps.height())
                          : 1;
-  gl::ensure_texture_array(maps_, format, depth_maps.width(), depth_maps.height(),
-                           depth_maps.layers(), "shadow representations", levels);
+  const bool all = gl::ensure_texture_array(maps_, format, depth_maps.width(), depth_maps.height(),
+                                            depth_maps.layers(), "shadow representations", levels);
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve");
   it->second.use();
@@ -46,8 +48,11 @@ void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowSetti
   glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
   glBindImageTexture(IMAGE_OUTPUT, maps_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-  glDispatchCompute(groups(maps_.width(), 16), groups(maps_.height(), 16),
-                    static_cast<GLuint>(maps_.layers()));
+  for_each_layer_run(layers, maps_.layers(), all, [&](int first, int count) {
+    glProgramUniform1i(it->second.id(), 3, first);
+    glDispatchCompute(groups(maps_.width(), 16), groups(maps_.height(), 16),
+                      static_cast<GLuint>(count));
+  });
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glPopDebugGroup();
 }

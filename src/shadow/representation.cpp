@@ -36,16 +36,16 @@ int technique_define(Technique technique) {
   return TECHNIQUE_NONE;
 }
 
-int filter_define(const ShadowSettings& settings) {
+int filter_define(const ShadowMapSettings& settings) {
   if (!is_filterable(settings.technique) || settings.blur == 0) return FILTER_NONE;
   return settings.filter == Filter::Sat ? FILTER_SAT : FILTER_GAUSSIAN;
 }
 
-int depth_samples(const ShadowSettings& settings) {
+int depth_samples(const ShadowMapSettings& settings) {
   return is_filterable(settings.technique) ? settings.shadow_msaa : 1;
 }
 
-int max_fused_blur(const ShadowSettings& settings) {
+int max_fused_blur(const ShadowMapSettings& settings) {
   if (depth_samples(settings) <= 1) return kMaxFusedBlur;
   // The widest radius whose tile, staging the representation's channels,
   // fits the 32 KiB of shared memory every GL 4.5 device has, so the plan
@@ -61,24 +61,24 @@ int max_fused_blur(const ShadowSettings& settings) {
   return radius;
 }
 
-bool uses_fused_filter(const ShadowSettings& settings) {
+bool uses_fused_filter(const ShadowMapSettings& settings) {
   return settings.fused && filter_define(settings) == FILTER_GAUSSIAN &&
          settings.blur <= max_fused_blur(settings);
 }
 
-bool uses_shadow_mips(const ShadowSettings& settings) {
+bool uses_shadow_mips(const ShadowMapSettings& settings) {
   return settings.shadow_mips && is_filterable(settings.technique) &&
          filter_define(settings) != FILTER_SAT;
 }
 
-int filtered_map_levels(const ShadowSettings& settings, int width, int height) {
+int filtered_map_levels(const ShadowMapSettings& settings, int width, int height) {
   if (!uses_shadow_mips(settings)) return 1;
   int levels = 1;
   for (int size = std::max(width, height); size > 1; size /= 2) ++levels;
   return levels;
 }
 
-bool uses_quantized_moments(const ShadowSettings& settings) {
+bool uses_quantized_moments(const ShadowMapSettings& settings) {
   return settings.technique == Technique::Msm16 ||
          (settings.technique == Technique::Msm && filter_define(settings) == FILTER_SAT);
 }
@@ -102,7 +102,7 @@ GLenum representation_format(Technique technique) {
   }
 }
 
-void set_representation_constants(GLuint program, const ShadowSettings& settings) {
+void set_representation_constants(GLuint program, const ShadowMapSettings& settings) {
   glProgramUniform1f(program, 0, settings.esm_c);
   glProgramUniform1f(program, 1, settings.evsm_positive);
   glProgramUniform1f(program, 2, settings.evsm_negative);

@@ -22,7 +22,7 @@ int light_type_define(LightType type) {
 }
 
 gpu::GpuLight gpu_light(const Light& light, const LightShadowViews& views, int first_view,
-                        const ShadowSettings& shadow) {
+                        const ShadowMapSettings& shadow) {
   gpu::GpuLight g{};
   g.position_type = glm::vec4(light.position, light_type_define(light.type));
   g.direction_cos_outer =
@@ -38,7 +38,7 @@ gpu::GpuLight gpu_light(const Light& light, const LightShadowViews& views, int f
 }
 
 gpu::GpuShadowView gpu_shadow_view(const Light& light, const LightView& view,
-                                   const ShadowSettings& shadow) {
+                                   const ShadowMapSettings& shadow) {
   gpu::GpuShadowView g{};
   g.view = view.view;
   g.view_projection = view.view_projection;
@@ -46,14 +46,14 @@ gpu::GpuShadowView gpu_shadow_view(const Light& light, const LightView& view,
   g.depth_range =
       glm::vec4(view.z0, view.z1, view.texel_world, static_cast<float>(shadow.map_size));
   g.source_width = light.type == LightType::Directional
-                       ? 2.0f * std::tan(glm::radians(0.5f * shadow.sun_angle))
-                       : shadow.light_size;
+                       ? 2.0f * std::tan(glm::radians(0.5f * light.sun_angle))
+                       : light.light_size;
   g.perspective = view.perspective ? 1 : 0;
   g.radial_depth = view.radial ? 1 : 0;
   return g;
 }
 
-gpu::GpuShadow gpu_shadow_params(const ShadowSettings& shadow) {
+gpu::GpuShadow gpu_shadow_params(const ShadowMapSettings& shadow) {
   gpu::GpuShadow block{};
   block.constant_bias = shadow.constant_bias;
   block.slope_bias = shadow.slope_bias;
@@ -76,21 +76,6 @@ gpu::GpuShadow gpu_shadow_params(const ShadowSettings& shadow) {
   block.pcss_blocker_samples = shadow.pcss_blocker_samples;
   block.pcss_filter_samples = shadow.pcss_filter_samples;
   block.two_moment_blockers = shadow.soft_two_moment_blockers ? 1 : 0;
-  block.accumulate_u = shadow.subframe_u;
-  block.accumulate_v = shadow.subframe_v;
-  block.accumulate_count = shadow.accumulate > 1 ? shadow.accumulate : 0;
-  block.accumulate_normal_x = shadow.subframe_normal[0];
-  block.accumulate_normal_y = shadow.subframe_normal[1];
-  block.accumulate_normal_z = shadow.subframe_normal[2];
-  block.accumulate_frame = shadow.subframe;
-  block.accumulate_cell_x = shadow.subframe_cell[0];
-  block.accumulate_cell_y = shadow.subframe_cell[1];
-  block.accumulate_cell_width = shadow.subframe_cell[2];
-  block.accumulate_cell_height = shadow.subframe_cell[3];
-  block.accumulate_column = shadow.subframe_cell_index[0];
-  block.accumulate_columns = shadow.subframe_cell_index[1];
-  block.accumulate_row = shadow.subframe_cell_index[2];
-  block.accumulate_rows = shadow.subframe_cell_index[3];
   block.evsm_positive = shadow.evsm_positive;
   block.evsm_negative = shadow.evsm_negative;
   return block;

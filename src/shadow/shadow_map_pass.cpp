@@ -101,21 +101,23 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "shadow maps");
   GLint clip_origin = GL_LOWER_LEFT, clip_depth = GL_NEGATIVE_ONE_TO_ONE;
-  GLfloat depth_range[2] = {0.0f, 1.0f};
+  GLdouble depth_range[2] = {0.0, 1.0};
   glGetIntegerv(GL_CLIP_ORIGIN, &clip_origin);
   glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth);
-  glGetFloatv(GL_DEPTH_RANGE, depth_range);
+  glGetDoublei_v(GL_DEPTH_RANGE, 0, depth_range);
   const GLboolean was_multisampling = glIsEnabled(GL_MULTISAMPLE);
   // Window depth = clip z / clip w exactly: z-bar for the orthographic
   // views (no remapping from [-1, 1], which would round near 0).
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  glDepthRangef(0.0f, 1.0f);
+  // Viewport 0's range and rectangle only: the casters write no
+  // gl_ViewportIndex, and an engine's other viewports stay as they were.
+  glDepthRangeIndexed(0, 0.0, 1.0);
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   // Multisampled rasterization is on by default; an engine may have turned it off.
   if (multisample) glEnable(GL_MULTISAMPLE);
-  glViewport(0, 0, map_size, map_size);
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(map_size), static_cast<float>(map_size));
   const float far_depth = 1.0f, reversed_far_depth = 0.0f;
   const std::vector<gl::Framebuffer>& targets =
       multisample ? multisample_framebuffers_ : framebuffers_;
@@ -144,7 +146,7 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
   glDepthFunc(GL_LESS);
   if (!was_multisampling) glDisable(GL_MULTISAMPLE);
   glClipControl(static_cast<GLenum>(clip_origin), static_cast<GLenum>(clip_depth));
-  glDepthRangef(depth_range[0], depth_range[1]);
+  glDepthRangeIndexed(0, depth_range[0], depth_range[1]);
   glPopDebugGroup();
   return drawn;
 }

@@ -43,9 +43,10 @@ gl::Program caster_depth_program(const ShadowBindings& bindings, bool radial) {
 }  // namespace
 
 struct ShadowMaps::Impl {
-  explicit Impl(const ShadowBindings& b) : bindings(b) {}
+  Impl(const ShadowBindings& b, StateRestore r) : bindings(b), restore(r) {}
 
   ShadowBindings bindings;
+  StateRestore restore;
   // The caster programs declare the block at the engine's binding. Early
   // depth for every view but a point light's faces, which write their
   // radial depth (shadow/shadow_map_pass.hpp).
@@ -66,7 +67,7 @@ struct ShadowMaps::Impl {
   gl::Sampler compare{gl::SamplerInfo{.compare_mode = GL_COMPARE_REF_TO_TEXTURE,
                                       .label = "penumbra depth compare"}};
 
-  ShadowSettings settings;
+  ShadowMapSettings settings;
   ShadowBlock block{};
   std::vector<int> view_light;  // the light of each view
   std::vector<LightShadowViews> fitted;
@@ -79,19 +80,24 @@ struct ShadowMaps::Impl {
   // What the maps hold, for caching them across frames (view_cache.hpp).
   ViewCache view_cache;
   std::optional<std::uint64_t> casters_hash;  // of the geometry last fitted to
+  // The engine's generation of the geometry last fitted to, when it gave one
+  // (casters_hash then unset).
+  std::optional<std::uint64_t> casters_generation;
   std::vector<CasterBounds> bounds;           // the bounds form's boxes, by id
   std::vector<int> moved;                     // ids marked by moved()
   std::vector<glm::vec3> box_corners;         // the boxes as triangles, for the fit
   std::vector<std::uint32_t> box_indices;
-  std::optional<ShadowSettings> filtered_for;  // the settings the filtered maps hold
+  std::optional<ShadowMapSettings> filtered_for;  // the settings the filtered maps hold
   int views_drawn = 0;
+  int state_queries = 0;  // the GL state the last render() read
 
   bool bounds_form = false;  // the last update() had caster bounds
 
   void update(std::span<const Light> lights, const CameraFrustum& camera, PositionSpan positions,
-              std::span<const std::uint32_t> indices, const ShadowSettings& settings);
-  // The technique's resolve and filter passes over every layer.
-  void filter(const ShadowSettings& s);
+              std::span<const std::uint32_t> indices, const ShadowMapSettings& settings);
+  // The technique's resolve and filter passes over the flagged layers
+  // (filter/layer_runs.hpp; every layer without flags).
+  void filter(const ShadowMapSettings& s, std::span<const std::uint8_t> layers);
 };
 
 namespace {
@@ -109,9 +115,9 @@ auto& live(ImplPtr& impl, const char* call) {
 }
 
 // What update() refuses, checked before it changes anything.
-void check_update(std::span<const Light> lights, const ShadowSettings& settings) {
+void check_update(std::span<const Light> lights, const ShadowMapSettings& settings) {
   validate(settings);
-  if (settings.accumulate > 1) throw UsageError("ShadowMaps: accumulate is the renderer's");
+  for (const Light& light : lights) validate(light);
   if (lights.size() > static_cast<std::size_t>(kMaxLights)) {
     throw UsageError("ShadowMaps: " + std::to_string(lights.size()) + " lights; at most " +
                      std::to_string(kMaxLights) + " are supported");
@@ -166,8 +172,8 @@ void CasterView::set_model(const glm::mat4& model) const {
   glProgramUniformMatrix4fv(program, kModelLocation, 1, GL_FALSE, &model[0][0]);
 }
 
-ShadowMaps::ShadowMaps(const ShadowBindings& bindings)
-    : impl_(std::make_unique<Impl>(checked_bindings(bindings))) {}
+ShadowMaps::ShadowMaps(const ShadowBindings& bindings, StateRestore restore)
+    : impl_(std::make_unique<Impl>(checked_bindings(bindings), restore)) {}
 // The GL objects' handles delete them only while a context is current
 // (gl::Handle::reset): destroyed without one, they are forgotten.
 ShadowMaps::~ShadowMaps() = default;
@@ -175,17 +181,21 @@ ShadowMaps::ShadowMaps(ShadowMaps&&) noexcept = default;
 ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
 
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
-                        const CasterGeometry& casters, const ShadowSettings& settings) {
+                        const CasterGeometry& casters, const ShadowMapSettings& settings) {
   check_update(lights, settings);
   Impl& m = live(impl_, "update");
-  const std::uint64_t hash = hash_casters(casters.positions, casters.indices);
-  if (m.casters_hash != hash || m.bounds_form) {
+  // The engine's generation when it gives one, else a hash of every vertex.
+  std::optional<std::uint64_t> hash, generation = casters.generation;
+  if (!generation) hash = hash_casters(casters.positions, casters.indices);
+  const bool same = generation ? m.casters_generation == generation : m.casters_hash == hash;
+  if (!same || m.bounds_form) {
     // No objects to tell apart: every view may see the change.
     m.view_cache.invalidate();
     m.fit_inputs.clear();
     m.caster_bounds.clear();
-    m.casters_hash = hash;
   }
+  m.casters_hash = hash;
+  m.casters_generation = generation;
   m.bounds_form = false;
   m.bounds.clear();
   m.moved.clear();
@@ -193,7 +203,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
 }
 
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
-                        std::span<const CasterBounds> casters, const ShadowSettings& settings) {
+                        std::span<const CasterBounds> casters, const ShadowMapSettings& settings) {
   check_update(lights, settings);
   Impl& m = live(impl_, "update");
   const bool same_objects = m.bounds_form && m.casters_hash && casters.size() == m.bounds.size();
@@ -221,6 +231,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
   m.moved.clear();
   box_triangles(casters, m.box_corners, m.box_indices);
   m.casters_hash = hash_casters(PositionSpan(m.box_corners), m.box_indices);
+  m.casters_generation.reset();
   m.update(lights, camera, PositionSpan(m.box_corners), m.box_indices, settings);
 }
 
@@ -239,12 +250,13 @@ void ShadowMaps::invalidate() {
   m.fit_inputs.clear();
   m.caster_bounds.clear();
   m.casters_hash.reset();
+  m.casters_generation.reset();
   m.filtered_for.reset();
 }
 
 void ShadowMaps::Impl::update(std::span<const Light> lights, const CameraFrustum& camera,
                               PositionSpan positions, std::span<const std::uint32_t> indices,
-                              const ShadowSettings& settings) {
+                              const ShadowMapSettings& settings) {
   Impl& m = *this;
   m.settings = settings;
   m.fitted.resize(lights.size());
@@ -282,50 +294,75 @@ void ShadowMaps::Impl::update(std::span<const Light> lights, const CameraFrustum
 void ShadowMaps::render(const DrawCasters& draw) {
   Impl& m = live(impl_, "render");
   if (!m.updated) throw std::logic_error("ShadowMaps::render() before update()");
-  // Saved besides the fixed state GlStateGuard always saves: the compute
-  // passes' input unit and output images, the block, the Gaussian's weights.
-  const std::array<GLuint, 1> texture_units{UNIT_COMPUTE_INPUT};
-  const std::array<GLuint, 2> image_units{IMAGE_OUTPUT, IMAGE_OUTPUT_2};
-  const std::array<GLuint, 1> uniform_buffers{m.bindings.block};
-  const std::array<GLuint, 1> storage_buffers{BINDING_FILTER_WEIGHTS_SSBO};
-  const GlStateGuard saved({texture_units, image_units, uniform_buffers, storage_buffers});
-  set_caster_pass_state();
-  glBindBufferBase(GL_UNIFORM_BUFFER, m.bindings.block, m.block_buffer.id());
-
-  const ShadowSettings& s = m.settings;
+  const ShadowMapSettings& s = m.settings;
   const int view_count = m.block.counts.y;
   // An array needs at least one layer: with no lights the lookup reads none.
   const std::span<const gpu::GpuShadowView> views(m.block.views,
                                                   static_cast<std::size_t>(view_count));
   const std::span<const std::uint8_t> stale = m.view_cache.stale_views(views, s.map_size);
-  m.views_drawn = m.map_pass.execute(
-      [&](int view) {
-        const gl::Program& caster =
-            caster_depth(views[static_cast<std::size_t>(view)]) == CasterDepth::Written
-                ? m.radial_caster_program
-                : m.caster_program;
-        const GLuint program = caster.id();
-        const glm::mat4 identity(1.0f);
-        glProgramUniform1i(program, 0, view);
-        glProgramUniformMatrix4fv(program, CasterView::kModelLocation, 1, GL_FALSE,
-                                  &identity[0][0]);
-        caster.use();
-        draw(CasterView{.index = view,
-                        .light = m.view_light[static_cast<std::size_t>(view)],
-                        .view_projection = m.block.views[view].view_projection,
-                        .program = program});
-      },
-      views, s.map_size, stale, depth_samples(s));
+  // ShadowMapPass draws (and sets state) for a stale view, or for every
+  // layer when there is no view (the cache flags every view of a new array).
+  const bool draws = stale.empty() || std::find(stale.begin(), stale.end(), 1) != stale.end();
+  // The resolve and the filter run again when a view is drawn (over the
+  // drawn views' layers: the others' output is still current) or the
+  // settings changed (over every layer).
+  const bool settings_changed = m.filtered_for != s;
+  const bool filters = draws || settings_changed;
+  // Whether the technique has compute passes (filter()).
+  const bool computes =
+      filters && (is_filterable(s.technique) || s.technique == Technique::Backprojection);
 
-  // The resolve and the filter read every layer: run again when a view was
-  // drawn or the settings changed, else their output is still current.
-  const bool filters_current = m.views_drawn == 0 && m.filtered_for == s;
+  // What this frame's passes change, saved for the engine (GlStateGuard):
+  // the caster pass's state, the block; the compute passes' input unit,
+  // output images and the Gaussian's weights; nothing on a cached frame.
+  const bool restore = m.restore == StateRestore::Full;
+  static constexpr std::array<GLuint, 1> kComputeUnits{UNIT_COMPUTE_INPUT};
+  static constexpr std::array<GLuint, 2> kImageUnits{IMAGE_OUTPUT, IMAGE_OUTPUT_2};
+  static constexpr std::array<GLuint, 1> kStorageBuffers{BINDING_FILTER_WEIGHTS_SSBO};
+  const std::array<GLuint, 1> uniform_buffers{m.bindings.block};
+  GlStateScope scope;
+  if (restore && draws) {
+    scope.caster_pass = true;
+    scope.uniform_buffers = uniform_buffers;
+  }
+  // The caster pass binds unit 0 too (ShadowMapPass's linearize pass).
+  if (restore && (draws || computes)) scope.texture_units = kComputeUnits;
+  if (restore && computes) {
+    scope.image_units = kImageUnits;
+    scope.storage_buffers = kStorageBuffers;
+  }
+  const GlStateGuard saved(scope);
+  m.state_queries = saved.queries();
+
+  m.views_drawn = 0;
+  if (draws) {
+    set_caster_pass_state();
+    glBindBufferBase(GL_UNIFORM_BUFFER, m.bindings.block, m.block_buffer.id());
+    m.views_drawn = m.map_pass.execute(
+        [&](int view) {
+          const gl::Program& caster =
+              caster_depth(views[static_cast<std::size_t>(view)]) == CasterDepth::Written
+                  ? m.radial_caster_program
+                  : m.caster_program;
+          const GLuint program = caster.id();
+          const glm::mat4 identity(1.0f);
+          glProgramUniform1i(program, 0, view);
+          glProgramUniformMatrix4fv(program, CasterView::kModelLocation, 1, GL_FALSE,
+                                    &identity[0][0]);
+          caster.use();
+          draw(CasterView{.index = view,
+                          .light = m.view_light[static_cast<std::size_t>(view)],
+                          .view_projection = m.block.views[view].view_projection,
+                          .program = program});
+        },
+        views, s.map_size, stale, depth_samples(s));
+  }
   m.filtered_for = s;
-  if (!filters_current) m.filter(s);
+  if (filters) m.filter(s, settings_changed ? std::span<const std::uint8_t>() : stale);
   m.rendered = true;
 }
 
-void ShadowMaps::Impl::filter(const ShadowSettings& s) {
+void ShadowMaps::Impl::filter(const ShadowMapSettings& s, std::span<const std::uint8_t> layers) {
   filtered = 0;
   if (s.technique == Technique::Backprojection) {
     // Backprojection's blocker regions, read in the filtered maps' place
@@ -336,14 +373,14 @@ void ShadowMaps::Impl::filter(const ShadowSettings& s) {
   }
   if (!is_filterable(s.technique)) return;
   if (uses_fused_filter(s)) {
-    fused_pass.execute(map_pass.sampled_depth_maps(), s);
+    fused_pass.execute(map_pass.sampled_depth_maps(), s, layers);
     filtered = fused_pass.output().id();
     return;
   }
-  resolve_pass.execute(map_pass.sampled_depth_maps(), s);
+  resolve_pass.execute(map_pass.sampled_depth_maps(), s, layers);
   filtered = resolve_pass.representation().id();
   if (filter_define(s) == FILTER_GAUSSIAN) {
-    blur_pass.execute(resolve_pass.representation(), s.blur);
+    blur_pass.execute(resolve_pass.representation(), s.blur, nullptr, 1, layers);
     filtered = blur_pass.output().id();
   } else if (filter_define(s) == FILTER_SAT) {
     sat_pass.execute(resolve_pass.representation());
@@ -356,7 +393,8 @@ void ShadowMaps::bind() const {
   if (!m.rendered) throw std::logic_error("ShadowMaps::bind() before render()");
   // The indexed bindings and units below stay bound; glBindBufferBase
   // also moves the generic bindings, which the guard puts back.
-  const GenericBufferBindingsGuard saved;
+  std::optional<GenericBufferBindingsGuard> saved;
+  if (m.restore == StateRestore::Full) saved.emplace();
   const ShadowBindings& b = m.bindings;
   glBindBufferBase(GL_UNIFORM_BUFFER, b.block, m.block_buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b.poisson_buffer, m.poisson.id());
@@ -395,6 +433,9 @@ int ShadowMaps::view_count() const {
 }
 int ShadowMaps::views_drawn() const {
   return live(impl_, "views_drawn").views_drawn;
+}
+int ShadowMaps::state_queries() const {
+  return live(impl_, "state_queries").state_queries;
 }
 std::uint32_t ShadowMaps::depth_maps() const {
   return live(impl_, "depth_maps").map_pass.depth_maps().id();

@@ -5,9 +5,12 @@
 namespace penumbra {
 
 ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& camera,
-                                    const ShadowSettings& settings) {
+                                    const ShadowMapSettings& settings) {
   ShadowViewInputs inputs;
   inputs.light = light;
+  // The source's size widens penumbrae, not views: a new size refits nothing.
+  inputs.light.light_size = Light{}.light_size;
+  inputs.light.sun_angle = Light{}.sun_angle;
   inputs.map_size = settings.map_size;
   switch (light.type) {
     case LightType::Spot:

@@ -52,8 +52,8 @@ bool logarithmic(const NumericParam<Settings, T>& p) {
 // Whether the panel offers a parameter this frame (and notes that it did).
 using Offer = std::function<bool(std::string_view)>;
 
-template <class Settings, std::size_t N>
-void float_sliders(ViewerState& state, const Settings& settings,
+template <class Owner, class Settings, std::size_t N>
+void float_sliders(ViewerState& state, const Owner& settings,
                    const std::array<NumericParam<Settings, float>, N>& params, const Offer& offer) {
   for (const auto& p : params) {
     if (!offer(p.name)) continue;
@@ -68,8 +68,8 @@ void float_sliders(ViewerState& state, const Settings& settings,
   }
 }
 
-template <class Settings, std::size_t N>
-void int_sliders(ViewerState& state, const Settings& settings,
+template <class Owner, class Settings, std::size_t N>
+void int_sliders(ViewerState& state, const Owner& settings,
                  const std::array<NumericParam<Settings, int>, N>& params, int limit,
                  bool skip_window_owned, const Offer& offer) {
   for (const auto& p : params) {
@@ -288,6 +288,17 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
     int_sliders(state, state.shadow, kAccumulateParams, std::numeric_limits<int>::max(), false,
                 offer);
     float_sliders(state, state.shadow, kShadowFloatParams, offer);
+    // Every light of the kind at once, as --light-size and --sun-angle.
+    for (const SourceSizeParam& p : kSourceSizeParams) {
+      if (!offer(p.name)) continue;
+      float value = state.shadow.*(p.override_field);
+      const std::string label(p.name);
+      if (ImGui::SliderFloat(label.c_str(), &value, p.min, p.max, "%.6g",
+                             ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoRoundToFormat)) {
+        set_number(state, p.name, value);
+      }
+      tooltip(p.help);
+    }
   }
   if (ImGui::CollapsingHeader("Ambient occlusion")) {
     for (const auto& p : kSsaoSwitchParams) {

@@ -11,8 +11,8 @@ namespace penumbra {
 
 namespace {
 
-template <class Settings, class T, std::size_t N>
-bool set_in_table(Settings& settings, const std::array<NumericParam<Settings, T>, N>& params,
+template <class Owner, class Settings, class T, std::size_t N>
+bool set_in_table(Owner& settings, const std::array<NumericParam<Settings, T>, N>& params,
                   std::string_view name, double value, T upper_limit) {
   for (const auto& p : params) {
     if (p.name != name) continue;
@@ -78,6 +78,12 @@ bool set_number(ViewerState& state, std::string_view name, double value) {
   if (name == "shadow-msaa") value = std::exp2(std::round(std::log2(std::max(value, 1.0))));
   if (name == "light-index") {
     return set_in_table(state.render, kRenderIntParams, name, value, last_light);
+  }
+  for (const SourceSizeParam& p : kSourceSizeParams) {
+    if (p.name != name) continue;
+    state.shadow.*(p.override_field) = static_cast<float>(
+        std::clamp(value, static_cast<double>(p.min), static_cast<double>(p.max)));
+    return true;
   }
   return set_in_table(state.shadow, kShadowFloatParams, name, value,
                       std::numeric_limits<float>::max()) ||

@@ -94,6 +94,7 @@ TEST(Help, EveryTableParameterNamesItsSection) {
   collect_ungrouped(kShadowFloatParams, ungrouped);
   collect_ungrouped(kShadowIntParams, ungrouped);
   collect_ungrouped(kAccumulateParams, ungrouped);
+  collect_ungrouped(kSourceSizeParams, ungrouped);
   collect_ungrouped(kSsaoIntParams, ungrouped);
   collect_ungrouped(kSsaoFloatParams, ungrouped);
   collect_ungrouped(kShadowFlagParams, ungrouped);

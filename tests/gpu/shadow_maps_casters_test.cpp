@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "gpu_fixture.hpp"
@@ -213,6 +214,55 @@ TEST_F(GpuTest, UpdateRefitsWhenTheCastersChange) {
   EXPECT_NEAR(maps.block().views[0].depth_range.y, fresh.block().views[0].depth_range.y, 1e-4f);
 }
 
+// With a generation the engine bumps, update() refits when the generation
+// changes and only then: it reads no vertex (an engine that changes its
+// arrays without bumping it keeps the old fit), and a bumped generation
+// refits as a fresh ShadowMaps fits.
+TEST_F(GpuTest, UpdateRefitsWhenTheEngineBumpsTheGeneration) {
+  Scene scene;
+  std::vector<glm::vec3> positions = box_triangles({-10.0f, 0.0f, -10.0f}, {30.0f, 2.0f, 10.0f});
+  std::vector<std::uint32_t> indices(positions.size());
+  for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i);
+  const auto geometry = [&](std::uint64_t generation) {
+    return CasterGeometry{.positions = positions, .indices = indices, .generation = generation};
+  };
+  const auto draw = [](const CasterView&) {};
+  ShadowMaps maps;
+  maps.update(scene.lights, scene.camera, geometry(1), scene.settings);
+  maps.render(draw);
+  const glm::vec4 low = maps.block().views[0].depth_range;
+  maps.update(scene.lights, scene.camera, geometry(1), scene.settings);
+  maps.render(draw);
+  EXPECT_EQ(maps.views_drawn(), 0);
+
+  for (glm::vec3& p : positions) p.y = p.y > 1.0f ? 8.0f : p.y;
+  // Not bumped: the arrays are not read, the fit stays.
+  maps.update(scene.lights, scene.camera, geometry(1), scene.settings);
+  maps.render(draw);
+  EXPECT_EQ(maps.views_drawn(), 0);
+  EXPECT_EQ(maps.block().views[0].depth_range, low);
+  // Bumped: refitted as anew, every view drawn.
+  maps.update(scene.lights, scene.camera, geometry(2), scene.settings);
+  maps.render(draw);
+  EXPECT_EQ(maps.views_drawn(), 2);
+  ShadowMaps fresh;
+  fresh.update(scene.lights, scene.camera, {positions, indices}, scene.settings);
+  EXPECT_NE(fresh.block().views[0].depth_range, low)
+      << "the test's casters no longer change the fit";
+  EXPECT_EQ(maps.block().views[0].depth_range, fresh.block().views[0].depth_range);
+  // From a generation to the hash (none given) and back: each switch
+  // refits and draws anew; the hash then keeps the maps while nothing moves.
+  maps.update(scene.lights, scene.camera, {positions, indices}, scene.settings);
+  maps.render(draw);
+  EXPECT_EQ(maps.views_drawn(), 2);
+  maps.update(scene.lights, scene.camera, {positions, indices}, scene.settings);
+  maps.render(draw);
+  EXPECT_EQ(maps.views_drawn(), 0);
+  maps.update(scene.lights, scene.camera, geometry(2), scene.settings);
+  maps.render(draw);
+  EXPECT_EQ(maps.views_drawn(), 2);
+}
+
 TEST_F(GpuTest, StaticFrameDrawsNoViewAndInvalidateDrawsThemAll) {
   Scene scene;
   ShadowMaps maps;
@@ -235,13 +285,18 @@ TEST_F(GpuTest, StaticFrameDrawsNoViewAndInvalidateDrawsThemAll) {
 }
 
 // One box moves: the views that see it before or after are drawn again,
-// no other, and the maps (depths and filtered moments) equal maps drawn
-// anew by a fresh ShadowMaps.
-TEST_F(GpuTest, MovingOneCasterDrawsOnlyTheViewsThatSeeIt) {
+// no other, and the maps (depths and filtered moments, which the resolve
+// and the filters redo for the drawn views' layers only) equal maps drawn
+// anew by a fresh ShadowMaps: with the fused resolve + filter and with the
+// resolve and two blur passes.
+class MovingCasterTest : public GpuTest, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(MovingCasterTest, MovingOneCasterDrawsOnlyTheViewsThatSeeIt) {
   Scene scene;
   scene.settings.technique = Technique::Vsm;
   scene.settings.filter = Filter::Gaussian;
   scene.settings.blur = 2;
+  scene.settings.fused = GetParam();
   ShadowMaps maps;
   Engine engine;
   engine.frame(maps, scene);
@@ -274,6 +329,11 @@ TEST_F(GpuTest, MovingOneCasterDrawsOnlyTheViewsThatSeeIt) {
   EXPECT_EQ(read_layers(maps.filtered_maps(), GL_RGBA, 4),
             read_layers(fresh.filtered_maps(), GL_RGBA, 4));
 }
+
+INSTANTIATE_TEST_SUITE_P(Filters, MovingCasterTest, ::testing::Values(true, false),
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                           return info.param ? std::string("Fused") : std::string("TwoPass");
+                         });
 
 }  // namespace
 }  // namespace penumbra

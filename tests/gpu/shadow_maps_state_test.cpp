@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <glm/glm.hpp>
 #include <memory>
@@ -33,6 +34,10 @@ constexpr int kUnits = 16;
 constexpr int kImageUnits = 4;
 constexpr int kUniformBuffers = 10;
 constexpr int kStorageBuffers = 6;
+// Clip distances, viewports and draw buffers every GL 4.5 device has.
+constexpr GLenum kClipDistances = 8;
+constexpr GLuint kViewports = 2;
+constexpr GLuint kDrawBuffers = 8;
 
 constexpr std::array<std::pair<GLenum, const char*>, 11> kTextureBindings{{
     {GL_TEXTURE_BINDING_1D, "1D"},
@@ -76,6 +81,7 @@ Snapshot snapshot() {
   integer("GL_CLIP_ORIGIN", GL_CLIP_ORIGIN);
   integer("GL_CLIP_DEPTH_MODE", GL_CLIP_DEPTH_MODE);
   integer("GL_CULL_FACE_MODE", GL_CULL_FACE_MODE);
+  integer("GL_PRIMITIVE_RESTART_INDEX", GL_PRIMITIVE_RESTART_INDEX);
   integer("GL_FRONT_FACE", GL_FRONT_FACE);
   enabled("GL_DEPTH_TEST", GL_DEPTH_TEST);
   enabled("GL_CULL_FACE", GL_CULL_FACE);
@@ -86,6 +92,40 @@ Snapshot snapshot() {
   enabled("GL_MULTISAMPLE", GL_MULTISAMPLE);
   enabled("GL_BLEND", GL_BLEND);
   enabled("GL_STENCIL_TEST", GL_STENCIL_TEST);
+  enabled("GL_PRIMITIVE_RESTART", GL_PRIMITIVE_RESTART);
+  enabled("GL_MULTISAMPLE", GL_MULTISAMPLE);
+  enabled("GL_SAMPLE_ALPHA_TO_COVERAGE", GL_SAMPLE_ALPHA_TO_COVERAGE);
+  enabled("GL_FRAMEBUFFER_SRGB", GL_FRAMEBUFFER_SRGB);
+  for (GLenum i = 0; i < kClipDistances; ++i) {
+    s.emplace_back("GL_CLIP_DISTANCE" + std::to_string(i), glIsEnabled(GL_CLIP_DISTANCE0 + i));
+  }
+  // Indexed state: viewports, their scissor tests and depth ranges, the
+  // colour mask of each draw buffer.
+  for (GLuint index = 0; index < kViewports; ++index) {
+    const std::string suffix = "[" + std::to_string(index) + "]";
+    std::array<GLfloat, 4> viewport{};
+    glGetFloati_v(GL_VIEWPORT, index, viewport.data());
+    for (int i = 0; i < 4; ++i) {
+      s.emplace_back("GL_VIEWPORT" + suffix + "[" + std::to_string(i) + "]",
+                     static_cast<std::int64_t>(viewport[i]));
+    }
+    s.emplace_back("GL_SCISSOR_TEST" + suffix, glIsEnabledi(GL_SCISSOR_TEST, index));
+    std::array<GLdouble, 2> range{};
+    glGetDoublei_v(GL_DEPTH_RANGE, index, range.data());
+    for (int i = 0; i < 2; ++i) {
+      s.emplace_back("GL_DEPTH_RANGE" + suffix + "[" + std::to_string(i) + "]",
+                     static_cast<std::int64_t>(range[i] * 1e6));
+    }
+  }
+  for (GLuint buffer = 0; buffer < kDrawBuffers; ++buffer) {
+    std::array<GLboolean, 4> mask{};
+    glGetBooleani_v(GL_COLOR_WRITEMASK, buffer, mask.data());
+    for (int i = 0; i < 4; ++i) {
+      s.emplace_back("GL_COLOR_WRITEMASK draw buffer " + std::to_string(buffer) + "[" +
+                         std::to_string(i) + "]",
+                     mask[i]);
+    }
+  }
   GLboolean depth_mask = GL_FALSE;
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask);
   s.emplace_back("GL_DEPTH_WRITEMASK", depth_mask);
@@ -284,9 +324,28 @@ struct EngineState {
     glEnable(GL_DEPTH_CLAMP);
     glDisable(GL_MULTISAMPLE);
     glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    glColorMaski(1, GL_FALSE, GL_TRUE, GL_FALSE, GL_TRUE);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
     glDepthRange(0.25, 0.75);
+    // A second viewport of its own (a split screen's), its scissor off.
+    glViewportIndexedf(1, 7.0f, 11.0f, 13.0f, 23.0f);
+    glDepthRangeIndexed(1, 0.125, 0.5);
+    glDisablei(GL_SCISSOR_TEST, 1);
+    // Clip planes left on: the casters' vertex shader writes no
+    // gl_ClipDistance, so with them on what it draws is undefined.
+    for (GLenum i = 0; i < kClipDistances; ++i) glEnable(GL_CLIP_DISTANCE0 + i);
+    // The engine's own draws (the callback's) keep their restart index:
+    // one its casters' indices do not use.
+    glEnable(GL_PRIMITIVE_RESTART);
+    glPrimitiveRestartIndex(0xfffffffeu);
+    glDisable(GL_MULTISAMPLE);
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ZERO, GL_ZERO);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_NEVER, 0, 0xff);
     for (int unit = 0; unit < kUnits; ++unit) {
       glBindTextureUnit(unit, color.id());
       glBindTextureUnit(unit, array.id());
@@ -327,6 +386,16 @@ void apply_default_state() {
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
   glDepthRange(0.0, 1.0);
+  for (GLenum i = 0; i < kClipDistances; ++i) glDisable(GL_CLIP_DISTANCE0 + i);
+  glDisable(GL_PRIMITIVE_RESTART);
+  glPrimitiveRestartIndex(0u);
+  glEnable(GL_MULTISAMPLE);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glDisable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ZERO);
+  glDisable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0, 0xff);
   for (GLuint unit = 0; unit < kUnits; ++unit) {
     glBindTextureUnit(unit, 0);
     glBindSampler(unit, 0);
@@ -464,6 +533,47 @@ TEST_F(GpuTest, ScissorLeftOnDoesNotConfineTheMapsClear) {
   const auto not_far =
       std::count_if(cleared.begin(), cleared.end(), [](float z) { return z != 1.0f; });
   EXPECT_EQ(not_far, 0) << "of " << cleared.size() << " texels";
+}
+
+// Saving the engine's state costs queries, which can stall a driver that
+// runs ahead: render() reads only what the frame's passes change (nothing
+// on a cached frame, the compute passes' bindings alone when only the
+// filter runs again), and with StateRestore::None nothing at all, the
+// maps the same.
+TEST_F(GpuTest, RenderReadsOnlyTheStateItChanges) {
+  const Casters casters;
+  const std::vector<Light> lights = test_lights();
+  ShadowSettings settings = settings_for(Technique::Vsm, Filter::Gaussian, false);
+  apply_default_state();
+  ShadowMaps maps;
+  maps.update(lights, test_camera(), casters.geometry(), settings);
+  maps.render(casters.draw());
+  const int drawn = maps.state_queries();
+  maps.update(lights, test_camera(), casters.geometry(), settings);
+  maps.render(casters.draw());
+  ASSERT_EQ(maps.views_drawn(), 0);
+  const int cached = maps.state_queries();
+  settings.blur = 3;  // filtered again, nothing drawn
+  maps.update(lights, test_camera(), casters.geometry(), settings);
+  maps.render(casters.draw());
+  ASSERT_EQ(maps.views_drawn(), 0);
+  const int filtered = maps.state_queries();
+  std::printf("state queries per render(): views drawn %d, filter only %d, cached %d\n", drawn,
+              filtered, cached);
+  EXPECT_EQ(cached, 0);
+  EXPECT_GT(filtered, 0);
+  EXPECT_LT(filtered, drawn);
+
+  ShadowMaps promised({}, StateRestore::None);
+  promised.update(lights, test_camera(), casters.geometry(), settings);
+  promised.render(casters.draw());
+  EXPECT_EQ(promised.state_queries(), 0);
+  EXPECT_EQ(promised.views_drawn(), maps.view_count());
+  EXPECT_EQ(read_texels(promised.depth_maps(), GL_DEPTH_COMPONENT, 1),
+            read_texels(maps.depth_maps(), GL_DEPTH_COMPONENT, 1));
+  EXPECT_EQ(read_texels(promised.filtered_maps(), GL_RGBA, 4),
+            read_texels(maps.filtered_maps(), GL_RGBA, 4));
+  apply_default_state();
 }
 
 // release() frees every GL object while the context is current; the

@@ -49,4 +49,27 @@ endforeach()
 if(EXISTS "${WORK_DIR}/bin/penumbra")
   message(FATAL_ERROR "the shadows component installed the tool")
 endif()
+# A client asking for the renderer of a shadows-only install is told why
+# it cannot have it; one asking for the shadows finds them.
+set(client "${WORK_DIR}/client")
+file(MAKE_DIRECTORY "${client}")
+foreach(case shadows renderer)
+  file(WRITE "${client}/CMakeLists.txt"
+       "cmake_minimum_required(VERSION 3.20)\nproject(client NONE)\n"
+       "find_package(penumbra REQUIRED COMPONENTS ${case})\n")
+  execute_process(COMMAND ${CMAKE_COMMAND} -S "${client}" -B "${client}/build-${case}"
+                          "-DCMAKE_PREFIX_PATH=${WORK_DIR}"
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(case STREQUAL "shadows" AND NOT status EQUAL 0)
+    message(FATAL_ERROR "find_package(penumbra COMPONENTS shadows) failed:\n${err}")
+  endif()
+  if(case STREQUAL "renderer")
+    string(REPLACE "\n" " " err_line "${err}")
+    if(status EQUAL 0 OR NOT err_line MATCHES "installed without the renderer[ ]+component")
+      message(FATAL_ERROR "find_package(penumbra COMPONENTS renderer) on a shadows-only install: "
+                          "expected a failure that names the missing component, got "
+                          "status ${status}:\n${err}")
+    endif()
+  endif()
+endforeach()
 message(STATUS "penumbra::shadows links: ${link}")

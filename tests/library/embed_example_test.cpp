@@ -154,7 +154,7 @@ TEST(EmbedExample, SunCascadeShadowWhereComputed) {
   }
 }
 
-// The soft-shadow techniques see the spot light's source (ShadowSettings::
+// The soft-shadow techniques see the spot light's source (its Light::
 // light_size): the box's shadow on the ground has a penumbra, points that
 // are neither lit nor shadowed; hard shadows have none.
 TEST(EmbedExample, SoftTechniquesDrawAPenumbra) {

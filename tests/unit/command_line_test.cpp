@@ -134,6 +134,10 @@ TEST(CommandLine, ReadsBackAsTheSameSettingsCameraAndLights) {
   for (const auto& p : kShadowIntParams) {
     EXPECT_EQ(parsed.shadow.*(p.field), shadow.*(p.field)) << p.name;
   }
+  // Given, --light-size is set for every light; --sun-angle, not given, is not.
+  EXPECT_TRUE(parsed.shadow.light_size.is_set());
+  EXPECT_EQ(parsed.shadow.light_size, shadow.light_size);
+  EXPECT_FALSE(parsed.shadow.sun_angle.is_set());
   for (const auto& p : kShadowFlagParams) {
     EXPECT_EQ(parsed.shadow.*(p.field), shadow.*(p.field)) << p.name;
   }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "penumbra/error.hpp"
 
 namespace penumbra {
@@ -30,6 +32,35 @@ TEST(SceneFile, ParsesAPointLight) {
                                     "objects": []})",
                                 "point.json"),
                RuntimeError);
+}
+
+// Each light its own source: light_size for spot and point lights,
+// sun_angle for directional ones, in their ranges; the other key refused.
+TEST(SceneFile, ReadsEachLightsSourceSize) {
+  const std::string plane = R"("objects": [{"shape": "plane", "size": [4, 0, 4]}]})";
+  Scene s = parse_scene_json(R"({"lights": [{"type": "spot", "light_size": 0.1},
+                                            {"type": "spot", "light_size": 2.5},
+                                            {"type": "directional", "sun_angle": 0.53},
+                                            {"type": "point"}], )" +
+                                 plane,
+                             "sizes.json");
+  ASSERT_EQ(s.lights.size(), 4u);
+  EXPECT_FLOAT_EQ(s.lights[0].light_size, 0.1f);
+  EXPECT_FLOAT_EQ(s.lights[1].light_size, 2.5f);
+  EXPECT_FLOAT_EQ(s.lights[2].sun_angle, 0.53f);
+  EXPECT_FLOAT_EQ(s.lights[3].light_size, Light{}.light_size);
+  for (const char* bad : {R"({"type": "spot", "light_size": -1})",
+                          R"({"type": "spot", "sun_angle": 1})",
+                          R"({"type": "directional", "light_size": 1})",
+                          R"({"type": "directional", "sun_angle": 90})"}) {
+    const std::string json = std::string(R"({"lights": [)") + bad + "], " + plane;
+    try {
+      (void)parse_scene_json(json, "bad.json");
+      ADD_FAILURE() << bad << " was read";
+    } catch (const RuntimeError& e) {
+      EXPECT_NE(std::string(e.what()).find("/lights/0/"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(SceneFile, ParsesEveryKind) {

@@ -7,7 +7,9 @@
 // it with uses_fused_filter().
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <map>
+#include <span>
 #include <tuple>
 
 #include "penumbra/gl/program.hpp"
@@ -24,8 +26,11 @@ class FusedFilterPass {
   // Filters every layer of `depth_maps` with the settings' technique and
   // radius (settings.blur in 1..max_fused_blur()) into output(); a
   // multisampled array (ShadowMapPass::sampled_depth_maps()) has the mean
-  // of each texel's samples' representations filtered.
-  void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
+  // of each texel's samples' representations filtered; or, given `layers`
+  // (a flag per layer), only the flagged ones, the others kept (all of them
+  // when output() is allocated anew).
+  void execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
+               std::span<const std::uint8_t> layers = {});
 
   // Same size, layers and format as the resolve's representation. Valid
   // after execute().

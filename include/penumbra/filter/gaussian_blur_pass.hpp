@@ -3,7 +3,9 @@
 // texture, then vertical into the output, each pass staging its tile in
 // shared memory (shaders/filter/gaussian_blur.comp). Works on 2D array
 // textures: each layer (one shadow view) is filtered on its own.
+#include <cstdint>
 #include <map>
+#include <span>
 #include <tuple>
 
 #include "penumbra/gl/gpu_profiler.hpp"
@@ -20,9 +22,10 @@ class GaussianBlurPass {
   // Blurs every layer of the 2D array `source` with 2 radius + 1 taps per
   // direction into output() (same size, layers and format). radius >= 1.
   // `levels`: mip levels of output() (MipChainPass fills levels 1..; this
-  // pass writes level 0).
+  // pass writes level 0). `layers`: a flag per layer to blur only those
+  // (FusedFilterPass).
   void execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler = nullptr,
-               int levels = 1);
+               int levels = 1, std::span<const std::uint8_t> layers = {});
 
   // Valid after execute().
   [[nodiscard]] const gl::Texture& output() const { return output_; }
@@ -38,7 +41,7 @@ class GaussianBlurPass {
  private:
   const gl::Program& program(GLenum format, int axis, int radius);
   void dispatch(const gl::Program& program, const gl::Texture& from, const gl::Texture& to,
-                int axis);
+                int axis, std::span<const std::uint8_t> layers, bool all);
 
   std::map<std::tuple<GLenum, int, int>, gl::Program> programs_;
   gl::Buffer weights_;

@@ -1,7 +1,9 @@
 #pragma once
 // Resolve (compute): the z-bar depth-map array -> the technique's filterable
 // representation (see representation.hpp), every layer (shadow view) at once.
+#include <cstdint>
 #include <map>
+#include <span>
 #include <tuple>
 
 #include "penumbra/gl/program.hpp"
@@ -17,7 +19,9 @@ class MomentResolvePass {
   // than one sample per texel (ShadowMapPass::sampled_depth_maps()), the
   // mean of its samples' representations. The array is reallocated only
   // when its size, layer count or format changes.
-  void execute(const gl::Texture& depth_maps, const ShadowSettings& settings);
+  // `layers`: a flag per layer to resolve only those (FusedFilterPass).
+  void execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
+               std::span<const std::uint8_t> layers = {});
 
   // Per texel: one depth read (of `depth_format`) per sample, one texel of
   // the technique's representation written.

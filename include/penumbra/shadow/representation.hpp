@@ -13,7 +13,7 @@ namespace penumbra {
 int technique_define(Technique technique);
 
 // The value of the SHADOW_FILTER define (FILTER_*) for the shadow settings.
-int filter_define(const ShadowSettings& settings);
+int filter_define(const ShadowMapSettings& settings);
 
 // Samples per texel of the depth maps the casters are drawn into:
 // --shadow-msaa for the filterable techniques, whose resolve averages the
@@ -22,35 +22,35 @@ int filter_define(const ShadowSettings& settings);
 // samples can give it (the nearest, what --soft's blocker search reads)
 // measured worse against the traced reference than the texel centre's
 // (docs/rendering.md), so their maps are drawn as at 1.
-int depth_samples(const ShadowSettings& settings);
+int depth_samples(const ShadowMapSettings& settings);
 
 // The widest radius the fused resolve + Gaussian takes: kMaxFusedBlur, or
 // with --shadow-msaa above 1, where each staged texel holds the mean of its
 // samples' moments, the widest whose tile still fits 32 KiB of shared
 // memory (8 for msm, msm16 and evsm4; 16 for the others).
-int max_fused_blur(const ShadowSettings& settings);
+int max_fused_blur(const ShadowMapSettings& settings);
 
 // Whether the renderer filters with the fused resolve + Gaussian pass
 // (FusedFilterPass): --fused on, the Gaussian filter, radius
 // 1..max_fused_blur(). Otherwise a filterable technique runs the resolve,
 // then the two blur passes or the summed-area table.
-bool uses_fused_filter(const ShadowSettings& settings);
+bool uses_fused_filter(const ShadowMapSettings& settings);
 
 // Whether the filtered maps carry a mip chain (--shadow-mips) that the
 // lighting pass reads trilinearly: a filterable technique filtered by the
 // Gaussian (fused or not) or not at all. The summed-area table is a
 // table of sums, which no mip of it would average.
-bool uses_shadow_mips(const ShadowSettings& settings);
+bool uses_shadow_mips(const ShadowMapSettings& settings);
 
 // Mip levels of a width x height filtered map: the full chain down to 1x1
 // with uses_shadow_mips(), else 1.
-int filtered_map_levels(const ShadowSettings& settings, int width, int height);
+int filtered_map_levels(const ShadowMapSettings& settings, int width, int height);
 
 // Whether the map holds the moments in the optimized quantization basis of
 // Peters & Klein 2015 (msm_quantize): always for msm16, and for msm summed
 // in the fixed-point summed-area table, where the basis spreads the
 // moments over [0, 1] and so keeps more of their bits.
-bool uses_quantized_moments(const ShadowSettings& settings);
+bool uses_quantized_moments(const ShadowMapSettings& settings);
 
 // Sized internal format of the technique's map: vsm RG32F (z, z^2),
 // esm R32F exp(c (z - 1)), msm RGBA32F (z, z^2, z^3, z^4), msm16 RGBA16
@@ -62,7 +62,7 @@ GLenum representation_format(Technique technique);
 // Sets the uniforms u_esm_c, u_evsm_positive, u_evsm_negative (locations
 // 0-2) of a program that makes representations (representation.glsl's
 // RepresentationConstants).
-void set_representation_constants(GLuint program, const ShadowSettings& settings);
+void set_representation_constants(GLuint program, const ShadowMapSettings& settings);
 
 // The name of a sized internal format used here, for reports ("RGBA16").
 std::string format_name(GLenum format);

@@ -17,15 +17,14 @@ int light_type_define(LightType type);
 // Light i's entry of the lights block; its views are first_view.. of the
 // views block.
 gpu::GpuLight gpu_light(const Light& light, const LightShadowViews& views, int first_view,
-                        const ShadowSettings& shadow);
+                        const ShadowMapSettings& shadow);
 
 // One view's entry of the shadow-views block.
 gpu::GpuShadowView gpu_shadow_view(const Light& light, const LightView& view,
-                                   const ShadowSettings& shadow);
+                                   const ShadowMapSettings& shadow);
 
 // The shadow parameters block for the settings. The fields a renderer sets
-// per sub-frame and per view (accumulate_*) are left for it: 0, or from
-// the settings' sub-frame fields.
-gpu::GpuShadow gpu_shadow_params(const ShadowSettings& shadow);
+// per sub-frame (accumulate_*) are left for it: 0.
+gpu::GpuShadow gpu_shadow_params(const ShadowMapSettings& shadow);
 
 }  // namespace penumbra

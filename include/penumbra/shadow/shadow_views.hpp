@@ -40,7 +40,7 @@ struct ShadowViewInputs {
   bool operator==(const ShadowViewInputs&) const = default;
 };
 ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& camera,
-                                    const ShadowSettings& settings);
+                                    const ShadowMapSettings& settings);
 
 // Fits the light's views to the scene (and, for a directional light's
 // cascades, to the camera).
