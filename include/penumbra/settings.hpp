@@ -165,6 +165,19 @@ struct ShadowMapSettings {
   // fraction, as vsm estimates it, instead of Peters' quadrature.
   bool soft_two_moment_blockers = false;
 
+  // Samples per shadow-map texel (1, 2, 4 or 8): the casters are drawn
+  // into a multisampled depth target (seed 002: "render the scene from the
+  // light's view to a multisampled depth buffer"). The filterable
+  // techniques (vsm, esm, evsm2/4, msm, msm16) average every sample's
+  // moments (or exponentials) in the resolve, so a texel a caster's edge
+  // crosses holds the mean of what it covers, antialiased before the
+  // filter; their depth maps (--soft's blocker search, the shadow-map
+  // view) hold the nearest of each texel's samples. The techniques that
+  // read depth (hard, pcf, pcss, backprojection) draw their maps with one
+  // sample whatever this says (depth_samples()). 1: one sample at the
+  // texel's centre.
+  int shadow_msaa = 1;
+
   // Filtering of the vsm, esm, msm and msm16 maps.
   Filter filter = Filter::Gaussian;
   // Filter radius W in texels: a Gaussian of 2W+1 taps (s = W/2), or a
@@ -445,6 +458,10 @@ inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
 inline constexpr int kMaxFusedBlur = 16;
 inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
 inline constexpr int kMaxContactShadowSteps = 64;
+// --shadow-msaa takes the sample counts every GL 4.5 device can offer for a
+// depth texture, powers of two (GL_MAX_DEPTH_TEXTURE_SAMPLES is at least 1;
+// each device's own limit is checked where the maps are made).
+inline constexpr int kMaxShadowMsaa = 8;
 
 inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 17> kShadowFloatParams{{
     {"constant-bias",
@@ -499,9 +516,14 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 17> kShadowF
 // GL 4.5 device allows an array texture.
 inline constexpr int kMaxPagePoolMib = 128;
 
-inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 9> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 10> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowMapSettings::map_size, OptionGroup::Technique},
+    {"shadow-msaa",
+     "samples per shadow-map texel of vsm, esm, evsm2, evsm4, msm and msm16, 1, 2, 4 or 8 (up "
+     "to the GPU's limit): each sample's moments are averaged before the filter, so the maps' "
+     "edges are antialiased (hard, pcf, pcss and backprojection draw one sample)",
+     1, kMaxShadowMsaa, &ShadowMapSettings::shadow_msaa, OptionGroup::Technique},
     {"blur", "filter radius W in texels (Gaussian of 2W+1 taps, or (2W+1)^2 SAT box); 0: none", 0,
      kMaxBlur, &ShadowMapSettings::blur, OptionGroup::Filter},
     {"pcf-samples", "PCF samples from the Poisson set (1: hardware 2x2 compare)", 1,

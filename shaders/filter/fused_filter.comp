@@ -35,12 +35,24 @@
 // rows do not start at a multiple of 32, never maps two lanes onto one bank
 // either.
 //
+// SAMPLES above 1 (--shadow-msaa): the depth maps are multisampled, and
+// step 1 stages each texel's mean of its samples' expanded representation
+// (as filter/resolve.comp stores it) instead of one value to expand: the
+// moments of different depths do not combine into one staged value. The
+// staged rows then take the representation's channels, which is why the
+// host allows four-moment techniques a narrower radius here
+// (max_fused_blur()).
+//
 // Defines: REPRESENTATION, MSM_QUANTIZED, EVSM4_STAGE_WARPS (shadow/
 // representation.glsl), IMAGE_FORMAT, RADIUS (W, 1..16), GAUSSIAN_WEIGHTS
 // (the weights, comma-separated), TILE_Y (a multiple of GROUP_Y, chosen by the host so that the
-// shared memory fits the device's limit).
+// shared memory fits the device's limit), SAMPLES (1, 2, 4, 8).
 #include "../shared/bindings.h"
 #include "../shadow/representation.glsl"
+
+#ifndef SAMPLES
+#define SAMPLES 1
+#endif
 
 #define TILE_X 32
 #define GROUP_Y 8
@@ -48,7 +60,13 @@
 
 layout(local_size_x = TILE_X, local_size_y = GROUP_Y) in;
 
+#if SAMPLES > 1
+layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DMSArray depth_map;
+#define STAGED_TYPE REPRESENTATION_TYPE
+#else
 layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray depth_map;
+#define STAGED_TYPE STAGE_TYPE
+#endif
 layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2DArray target;
 // The 2 RADIUS + 1 weights, summing to 1, as compile-time constants (printed
 // exactly by the host): the tap loops unroll with them folded in, and the
@@ -63,13 +81,41 @@ layout(location = 3) uniform int u_first_layer;
 #define SPAN_X (TILE_X + 2 * RADIUS)
 #define SPAN_Y (TILE_Y + 2 * RADIUS)
 #define STAGED_STRIDE (SPAN_X + 1 - SPAN_X % 2)  // odd: see above
-shared STAGE_TYPE staged[SPAN_Y * STAGED_STRIDE];
+shared STAGED_TYPE staged[SPAN_Y * STAGED_STRIDE];
 shared REPRESENTATION_TYPE rows[SPAN_Y * TILE_X];
+
+// What step 1 keeps of texel p: its stage value, or with several samples
+// the mean of their expanded representations.
+STAGED_TYPE staged_texel(ivec3 p, RepresentationConstants constants) {
+#if SAMPLES > 1
+  REPRESENTATION_TYPE sum = REPRESENTATION_TYPE(0.0);
+  for (int i = 0; i < SAMPLES; ++i) {
+    sum += representation_expand(representation_stage(texelFetch(depth_map, p, i).r, constants),
+                                 constants);
+  }
+  return sum * (1.0 / float(SAMPLES));
+#else
+  return representation_stage(texelFetch(depth_map, p, 0).r, constants);
+#endif
+}
+
+// The values step 2 filters from a staged texel.
+REPRESENTATION_TYPE staged_expand(STAGED_TYPE s, RepresentationConstants constants) {
+#if SAMPLES > 1
+  return s;
+#else
+  return representation_expand(s, constants);
+#endif
+}
 
 void main() {
   const RepresentationConstants constants =
       RepresentationConstants(u_esm_c, u_evsm_positive, u_evsm_negative);
+#if SAMPLES > 1
+  const ivec2 size = textureSize(depth_map).xy;
+#else
   const ivec2 size = textureSize(depth_map, 0).xy;
+#endif
   const int layer = u_first_layer + int(gl_WorkGroupID.z);
   const ivec2 tile = ivec2(gl_WorkGroupID.xy) * ivec2(TILE_X, TILE_Y);
   const ivec2 local = ivec2(gl_LocalInvocationID.xy);
@@ -79,18 +125,17 @@ void main() {
   for (int i = thread; i < SPAN_X * SPAN_Y; i += TILE_X * GROUP_Y) {
     const ivec2 s = ivec2(i % SPAN_X, i / SPAN_X);
     const ivec2 p = clamp(tile + s - RADIUS, ivec2(0), size - 1);
-    staged[s.y * STAGED_STRIDE + s.x] =
-        representation_stage(texelFetch(depth_map, ivec3(p, layer), 0).r, constants);
+    staged[s.y * STAGED_STRIDE + s.x] = staged_texel(ivec3(p, layer), constants);
   }
   barrier();
 
   // 2. Horizontal: every staged row, the tile's columns.
   for (int y = local.y; y < SPAN_Y; y += GROUP_Y) {
     const int c = y * STAGED_STRIDE + local.x + RADIUS;  // the centre tap
-    REPRESENTATION_TYPE sum = weights[RADIUS] * representation_expand(staged[c], constants);
+    REPRESENTATION_TYPE sum = weights[RADIUS] * staged_expand(staged[c], constants);
     for (int k = 1; k <= RADIUS; ++k) {
-      sum += weights[RADIUS + k] * (representation_expand(staged[c - k], constants) +
-                                    representation_expand(staged[c + k], constants));
+      sum += weights[RADIUS + k] *
+             (staged_expand(staged[c - k], constants) + staged_expand(staged[c + k], constants));
     }
     rows[y * TILE_X + local.x] = sum;
   }

@@ -45,6 +45,7 @@ std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
   if (args.sweep == "map-size") values = {512, 1024, 2048, 4096};
   if (args.sweep == "blur") values = {0, 1, 2, 4, 8, 16, 32};
   if (args.sweep == "fused") values = {1, 0};
+  if (args.sweep == "msaa") values = {1, 2, 4, 8};
   for (Technique t : techniques) {
     for (int v : values) {
       ShadowSettings s = args.shadow;
@@ -52,6 +53,9 @@ std::vector<ShadowSettings> plan_runs(const BenchArgs& args,
       if (args.sweep == "map-size") s.map_size = v;
       if (args.sweep == "blur") s.blur = v;
       if (args.sweep == "fused") s.fused = v == 1;
+      if (args.sweep == "msaa") s.shadow_msaa = v;
+      // Maps of depth are drawn with one sample whatever --shadow-msaa says.
+      if (depth_samples(s) != s.shadow_msaa && v > 1) continue;
       if (is_filterable(t) && !supports_sat(t) && s.filter == Filter::Sat) continue;  // refused
       // Soft only for the techniques that can be; a wrong filter is still refused.
       if (s.soft && !supports_soft_shadows(t, Filter::Sat)) s.soft = false;
@@ -77,6 +81,7 @@ std::string describe(const ShadowSettings& s) {
   if (s.shadow_maps == ShadowMapKind::Virtual) {
     out << ", virtual maps for the sun (pool " << s.page_pool_mib << " MiB)";
   }
+  if (depth_samples(s) > 1) out << ", msaa " << depth_samples(s);
   if (s.accumulate > 1) out << ", accumulate " << s.accumulate << " (a frame is one sub-frame)";
   return out.str();
 }
@@ -156,6 +161,7 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
   j["shadow_map_size"] = s.map_size;
   j["shadow_maps"] = std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, s.shadow_maps));
   j["page_pool_mib"] = s.page_pool_mib;
+  j["shadow_msaa"] = depth_samples(s);  // the samples drawn per texel
   j["fused"] = is_filterable(s.technique) && uses_fused_filter(s);
   j["shadow_mips"] = uses_shadow_mips(s);
   if (is_filterable(s.technique)) {
@@ -305,8 +311,9 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
              OptionGroup::Measurement);
   add_choice(command, "sweep", args.sweep,
              "measure each technique at several values: map-size (512, 1024, 2048, 4096), blur "
-             "(W = 0, 1, 2, 4, 8, 16, 32) or fused (--fused, then --no-fused)",
-             {"none", "map-size", "blur", "fused"}, OptionGroup::Measurement);
+             "(W = 0, 1, 2, 4, 8, 16, 32), fused (--fused, then --no-fused) or msaa "
+             "(--shadow-msaa 1, 2, 4, 8, up to the GPU's limit)",
+             {"none", "map-size", "blur", "fused", "msaa"}, OptionGroup::Measurement);
   add_number(command, "bandwidth", args.bandwidth,
              "the GPU's memory bandwidth in GB/s, for each pass's floor (0: from a table of NVIDIA "
              "GPUs; none for others)",
@@ -338,6 +345,8 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
        "penumbra bench --technique vsm --sweep blur --filter sat"},
       {"one sub-frame of accumulated soft shadows, and what 64 of them cost",
        "penumbra bench --technique hard --accumulate 64"},
+      {"the depth and resolve passes' cost per sample count of multisampled maps",
+       "penumbra bench --technique vsm,msm --sweep msaa"},
   }));
 }
 
@@ -346,7 +355,7 @@ int run_bench_command(BenchArgs& args) {
   args.named.technique = "hard";  // the list is parsed above; the rest as usual
   parse_named_options(args.named, args.shadow, args.render);
   if (!args.json.empty()) check_output_path(args.json);
-  const std::vector<ShadowSettings> plan = plan_runs(args, techniques);
+  std::vector<ShadowSettings> plan = plan_runs(args, techniques);
   for (const ShadowSettings& s : plan) validate(s);
   validate(args.render);
   Scene scene = resolve_scene_source(args.scene, args.model, args.camera_index, args.ground);
@@ -361,6 +370,15 @@ int run_bench_command(BenchArgs& args) {
   const bool timer_clock = !timers_miss_compute(context->renderer());
   if (!timer_clock) {
     std::printf("(timer queries miss compute work on this renderer: ratios use the wall clock)\n");
+  }
+  if (args.sweep == "msaa") {
+    // The sweep stops at the device's limit (llvmpipe: 4); an explicit
+    // --shadow-msaa beyond it is refused by the first frame instead.
+    GLint max_samples = 1;
+    glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_samples);
+    std::erase_if(plan, [&](const ShadowSettings& s) { return depth_samples(s) > max_samples; });
+    std::printf("--sweep msaa: up to %d samples per texel, this GPU's limit for depth textures\n",
+                max_samples);
   }
   const Bandwidth bandwidth = device_bandwidth(args, context->renderer());
   const bool parallel_sat = preferred_sat_scan(context->renderer()) == SatScan::Parallel;

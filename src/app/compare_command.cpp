@@ -30,6 +30,7 @@
 #include "reference/traced_reference.hpp"
 #include "render/accumulation.hpp"
 #include "render/renderer.hpp"
+#include "report/edge_errors.hpp"
 #include "scene/scene_file.hpp"
 
 namespace penumbra {
@@ -46,6 +47,9 @@ struct Item {
   std::optional<ShadowMetrics> traced, filtered;
   // Against the traced reference on the near and far halves of the view.
   std::optional<ShadowMetrics> traced_near, traced_far;
+  // Against the traced reference within 2 pixels of its edges (where it
+  // steps by more than a half): where the maps' texels alias.
+  std::optional<ShadowMetrics> traced_edges;
   json images = json::object();
 };
 
@@ -305,6 +309,7 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
     item.traced = compare_shadow(shadow, traced);
     item.traced_near = compare_shadow(only_half(shadow, halves, false), traced);
     item.traced_far = compare_shadow(only_half(shadow, halves, true), traced);
+    item.traced_edges = compare_shadow(at_reference_edges(shadow, traced, 2), traced);
     write(shadow, stem, &item, "shadow", true);
     write(error_image(shadow, traced), stem + "-error-traced", &item, "error_traced", false);
     if (has_filtered_reference(item.settings)) {
@@ -450,6 +455,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
     } else {
       r["status"] = "ok";
       r["traced"] = metrics_json(*item.traced);
+      r["traced_edges"] = metrics_json(*item.traced_edges);
       r["filtered"] = item.filtered ? metrics_json(*item.filtered) : json(nullptr);
       r["traced_near"] = metrics_json(*item.traced_near);
       r["traced_far"] = metrics_json(*item.traced_far);
@@ -469,6 +475,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"width", args.render.width},
       {"height", args.render.height},
       {"shadow_map_size", args.shadow.map_size},
+      {"shadow_msaa", args.shadow.shadow_msaa},
       // The judged light's own source size, under --light-size/--sun-angle.
       {"light_size",
        with_source_size(scene.lights[static_cast<std::size_t>(light_index)], args.shadow)

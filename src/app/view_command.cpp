@@ -180,6 +180,8 @@ int run_view_command(ViewArgs& args) {
   if (args.verbose) std::fprintf(stderr, "penumbra: %s via GLFW\n", gpu_name.c_str());
   GLint max_texture = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  GLint max_shadow_samples = 1;
+  glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_shadow_samples);
 
   ImGuiLayer imgui(window);
   Renderer renderer(start);
@@ -272,7 +274,7 @@ int run_view_command(ViewArgs& args) {
     // frame's arguments hold still, shows the mean so far, and stops
     // rendering once it has all N; any change starts the sum again.
     if (view.x > 0 && view.y > 0) {
-      FrameInput frame = frame_input(state, view.x, view.y, max_texture);
+      FrameInput frame = frame_input(state, view.x, view.y, max_texture, max_shadow_samples);
       std::vector<std::string> args = render_command_for(state, frame, "");
       const bool changed = !have_image || args != shown_args;
       const bool accumulating = frame.shadow.accumulate > 1 && !is_map_view(frame.render.view);

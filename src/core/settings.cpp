@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 #include "penumbra/error.hpp"
 
@@ -44,6 +45,10 @@ void validate(const Light& light) {
 void validate(const ShadowMapSettings& settings) {
   check_ranges(settings, kShadowFloatParams);
   check_ranges(settings, kShadowIntParams);
+  if ((settings.shadow_msaa & (settings.shadow_msaa - 1)) != 0) {
+    throw UsageError("--shadow-msaa must be 1, 2, 4 or 8 (got " +
+                     std::to_string(settings.shadow_msaa) + ")");
+  }
   if (settings.soft && !supports_soft_shadows(settings.technique, settings.filter)) {
     throw UsageError(
         "--soft needs --technique vsm, msm or msm16 with --filter sat (the penumbra-sized "

@@ -37,18 +37,24 @@ int FusedFilterPass::tile_rows(int radius, int channels, int shared_bytes, int s
   return 0;
 }
 
+int FusedFilterPass::staged_channels(GLenum format, int samples) {
+  return samples > 1 ? channel_count(format) : 1;
+}
+
 bool FusedFilterPass::stages_evsm4_warps(int radius, int shared_bytes) {
   const int rows = tile_rows(radius, 4, shared_bytes);
   return rows > 0 && tile_rows(radius, 4, shared_bytes, 2) == rows;
 }
 
 TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width, int height,
-                                            int shared_bytes) {
-  const int rows = tile_rows(radius, channel_count(format), shared_bytes);
+                                            int shared_bytes, int samples) {
+  const int rows =
+      tile_rows(radius, channel_count(format), shared_bytes, staged_channels(format, samples));
   if (rows == 0 || width <= 0 || height <= 0) return {};
   const double tiles = static_cast<double>(groups(width, kTileX)) * groups(height, rows);
   const double texels_read = tiles * (kTileX + 2.0 * radius) * (rows + 2.0 * radius);
-  return {4.0 * texels_read / (static_cast<double>(width) * height), 1.0 * bytes_per_texel(format)};
+  return {4.0 * samples * texels_read / (static_cast<double>(width) * height),
+          1.0 * bytes_per_texel(format)};
 }
 
 void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
@@ -59,12 +65,15 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
   }
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);
-  const int rows = tile_rows(radius, channel_count(format), shared_bytes_);
+  const int samples = depth_maps.samples();
+  const int rows =
+      tile_rows(radius, channel_count(format), shared_bytes_, staged_channels(format, samples));
   if (rows == 0) throw RuntimeError("the fused filter's tile does not fit in shared memory");
   const bool quantized = uses_quantized_moments(settings);
+  // Several samples stage the mean of their moments, warps included.
   const bool stage_warps =
-      technique == Technique::Evsm4 && stages_evsm4_warps(radius, shared_bytes_);
-  const auto key = std::make_tuple(technique, quantized, radius, rows);
+      technique == Technique::Evsm4 && samples == 1 && stages_evsm4_warps(radius, shared_bytes_);
+  const auto key = std::make_tuple(technique, quantized, radius, rows, samples);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     std::string weight_list;
@@ -79,7 +88,8 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
                            {"RADIUS", std::to_string(radius)},
                            {"TILE_Y", std::to_string(rows)},
                            {"EVSM4_STAGE_WARPS", stage_warps ? "1" : "0"},
-                           {"GAUSSIAN_WEIGHTS", weight_list}};
+                           {"GAUSSIAN_WEIGHTS", weight_list},
+                           {"SAMPLES", std::to_string(samples)}};
     it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;
   }
   const bool all = gl::ensure_texture_array(

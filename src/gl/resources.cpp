@@ -46,12 +46,31 @@ bool ensure_texture_array(Texture& texture, GLenum format, int width, int height
   return true;
 }
 
+bool ensure_multisample_texture_array(Texture& texture, GLenum format, int width, int height,
+                                      int layers, int samples, std::string_view label) {
+  if (texture && texture.width() == width && texture.height() == height &&
+      texture.layers() == layers && texture.format() == format &&
+      texture.requested_samples() == samples) {
+    return false;
+  }
+  texture = Texture(TextureInfo{.target = GL_TEXTURE_2D_MULTISAMPLE_ARRAY,
+                                .format = format,
+                                .width = width,
+                                .height = height,
+                                .layers = layers,
+                                .samples = samples,
+                                .label = label});
+  return true;
+}
+
 Texture::Texture(const TextureInfo& info)
     : width_(info.width),
       height_(info.height),
       layers_(info.layers),
       levels_(info.levels),
-      format_(info.format) {
+      format_(info.format),
+      samples_(info.samples),
+      requested_samples_(info.samples) {
   GLuint id = 0;
   glCreateTextures(info.target, 1, &id);
   handle_ = Handle<detail::delete_texture>(id);
@@ -68,13 +87,24 @@ Texture::Texture(const TextureInfo& info)
       glTextureStorage2DMultisample(id, info.samples, info.format, info.width, info.height,
                                     GL_TRUE);
       break;
+    case GL_TEXTURE_2D_MULTISAMPLE_ARRAY:
+      glTextureStorage3DMultisample(id, info.samples, info.format, info.width, info.height,
+                                    info.layers, GL_TRUE);
+      break;
     default:
       throw RuntimeError("unsupported texture target");
+  }
+  if (info.target == GL_TEXTURE_2D_MULTISAMPLE || info.target == GL_TEXTURE_2D_MULTISAMPLE_ARRAY) {
+    // The count asked for is a minimum (the driver may give more: llvmpipe
+    // gives 4 for 2); shaders that loop over the samples use the real one.
+    GLint samples = info.samples;
+    glGetTextureLevelParameteriv(id, 0, GL_TEXTURE_SAMPLES, &samples);
+    samples_ = std::max(static_cast<int>(samples), 1);
   }
   // Filter with NEAREST unless a sampler says otherwise: the default
   // (NEAREST_MIPMAP_LINEAR) makes integer textures incomplete, and then even
   // texelFetch reads zeros.
-  if (info.target != GL_TEXTURE_2D_MULTISAMPLE) {
+  if (info.target != GL_TEXTURE_2D_MULTISAMPLE && info.target != GL_TEXTURE_2D_MULTISAMPLE_ARRAY) {
     glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }

@@ -41,11 +41,13 @@ std::array<std::optional<TexelTraffic>, kPassCount> shadow_map_traffic(const Sha
     maps = representation_format(shadow.technique);
     const int filter = filter_define(shadow);
     if (!uses_fused_filter(shadow)) {
-      set(GpuPass::Resolve, MomentResolvePass::texel_traffic(depth, shadow.technique));
+      set(GpuPass::Resolve,
+          MomentResolvePass::texel_traffic(depth, shadow.technique, depth_samples(shadow)));
     }
     if (uses_fused_filter(shadow)) {
       set(GpuPass::FusedFilter,
-          FusedFilterPass::texel_traffic(maps, shadow.blur, width, height, shared_bytes));
+          FusedFilterPass::texel_traffic(maps, shadow.blur, width, height, shared_bytes,
+                                         depth_samples(shadow)));
     } else if (filter == FILTER_GAUSSIAN) {
       set(GpuPass::FilterHorizontal,
           GaussianBlurPass::texel_traffic(maps, shadow.blur, 0, width, height));

@@ -374,9 +374,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     const std::span<const gpu::GpuShadowView> drawn(views, static_cast<std::size_t>(view_count_));
     shadow_views_drawn_ = shadow_pass_.execute(
         [&](int view) {
-          shadow_casters_.draw(gpu_scene_, view, caster_depth(views[view]) == CasterDepth::Written);
+          shadow_casters_.draw(gpu_scene_, view, caster_depth(views[view]) == CasterDepth::Written,
+                               depth_samples(shadow));
         },
-        drawn, shadow.map_size, stale);
+        drawn, shadow.map_size, stale, depth_samples(shadow));
   }
   // The resolve and the filters run again when a view was drawn (over the
   // drawn views' layers; filter/layer_runs.hpp) or the settings changed
@@ -392,16 +393,17 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if (fused) {
     if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::FusedFilter);
-      fused_pass_.execute(shadow_pass_.depth_maps(), shadow, filter_layers);
+      fused_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow, filter_layers);
     }
     filtered = &fused_pass_.output();
     // The moments view shows the unfiltered representation, which the
     // fused pass never writes.
-    if (render.view == View::Moments) resolve_pass_.execute(shadow_pass_.depth_maps(), shadow);
+    if (render.view == View::Moments)
+      resolve_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow);
   } else if (is_filterable(shadow.technique)) {
     if (filter_maps) {
       gl::GpuPassScope timed(profiler, gl::GpuPass::Resolve);
-      resolve_pass_.execute(shadow_pass_.depth_maps(), shadow, filter_layers);
+      resolve_pass_.execute(shadow_pass_.sampled_depth_maps(), shadow, filter_layers);
     }
     const gl::Texture& representation = resolve_pass_.representation();
     filtered = &representation;

@@ -16,7 +16,7 @@ SceneShadowCasters::SceneShadowCasters()
     : programs_{{caster_program(false, false), caster_program(false, true)},
                 {caster_program(true, false), caster_program(true, true)}} {}
 
-void SceneShadowCasters::draw(const GpuScene& scene, int view, bool radial) const {
+void SceneShadowCasters::draw(const GpuScene& scene, int view, bool radial, int samples) const {
   const gl::Program& opaque = programs_[radial ? 1 : 0][0];
   const gl::Program& cut_out = programs_[radial ? 1 : 0][1];
   glProgramUniform1i(opaque.id(), 0, view);
@@ -24,7 +24,17 @@ void SceneShadowCasters::draw(const GpuScene& scene, int view, bool radial) cons
   opaque.use();
   scene.draw(SurfaceSet::Opaque);
   cut_out.use();
+  // Multisampled maps: the cut-outs' alpha test runs once per sample, at
+  // the sample's own texture coordinate (sample shading, min rate 1), so
+  // a leaf's outline is resolved within the texel as a triangle's edge is.
+  // Alpha to coverage would do it once per texel, but it needs a colour
+  // buffer, which depth-only shadow passes do not have (GL 4.5, 17.3.3).
+  if (samples > 1) {
+    glEnable(GL_SAMPLE_SHADING);
+    glMinSampleShading(1.0f);
+  }
   scene.draw(SurfaceSet::CutOut);
+  if (samples > 1) glDisable(GL_SAMPLE_SHADING);
 }
 
 }  // namespace penumbra

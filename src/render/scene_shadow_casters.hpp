@@ -15,8 +15,9 @@ class SceneShadowCasters {
 
   // Draws the scene from shadow view `view` of the shadow-views block
   // (which must be bound); `radial`: the view's fragments write their
-  // depth (CasterDepth::Written).
-  void draw(const GpuScene& scene, int view, bool radial) const;
+  // depth (CasterDepth::Written); `samples`: the layer's samples per texel
+  // (ShadowSettings::shadow_msaa).
+  void draw(const GpuScene& scene, int view, bool radial, int samples = 1) const;
 
  private:
   // [radial][cut-outs]: opaque surfaces, then alpha-tested and

@@ -20,4 +20,10 @@ struct EdgeErrors {
 // the sizes differ.
 EdgeErrors edge_errors(const Image& technique, const Image& reference, int reach);
 
+// `technique` with only its pixels within `reach` pixels of a reference
+// edge compared (alpha 0 elsewhere), an edge as above: compare_shadow() of
+// it against the reference measures the error where shadows begin (where
+// a map's texels alias). Throws RuntimeError if the sizes differ.
+Image at_reference_edges(const Image& technique, const Image& reference, int reach);
+
 }  // namespace penumbra

@@ -14,8 +14,9 @@ GLuint groups(int size, int local) {
 }
 }  // namespace
 
-TexelTraffic MomentResolvePass::texel_traffic(GLenum depth_format, Technique technique) {
-  return {static_cast<double>(bytes_per_texel(depth_format)),
+TexelTraffic MomentResolvePass::texel_traffic(GLenum depth_format, Technique technique,
+                                              int samples) {
+  return {static_cast<double>(samples * bytes_per_texel(depth_format)),
           static_cast<double>(bytes_per_texel(representation_format(technique)))};
 }
 
@@ -23,12 +24,14 @@ void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowMapSe
                                 std::span<const std::uint8_t> layers) {
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);
-  const auto key = std::make_pair(technique, uses_quantized_moments(settings));
+  const int samples = depth_maps.samples();
+  const auto key = std::make_tuple(technique, uses_quantized_moments(settings), samples);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     gl::Defines defines = {{"REPRESENTATION", std::to_string(technique_define(technique))},
-                           {"MSM_QUANTIZED", key.second ? "1" : "0"},
-                           {"IMAGE_FORMAT", image_format_qualifier(format)}};
+                           {"MSM_QUANTIZED", std::get<1>(key) ? "1" : "0"},
+                           {"IMAGE_FORMAT", image_format_qualifier(format)},
+                           {"SAMPLES", std::to_string(samples)}};
     it = programs_.emplace(key, gl::Program::compute("filter/resolve.comp", defines)).first;
   }
   // Unfiltered (--blur 0), the representation is the map the lighting

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "penumbra/error.hpp"
+#include "penumbra/filter/fused_filter_pass.hpp"
 #include "penumbra/shared/bindings.h"
 
 namespace penumbra {
@@ -40,9 +41,29 @@ int filter_define(const ShadowMapSettings& settings) {
   return settings.filter == Filter::Sat ? FILTER_SAT : FILTER_GAUSSIAN;
 }
 
+int depth_samples(const ShadowMapSettings& settings) {
+  return is_filterable(settings.technique) ? settings.shadow_msaa : 1;
+}
+
+int max_fused_blur(const ShadowMapSettings& settings) {
+  if (depth_samples(settings) <= 1) return kMaxFusedBlur;
+  // The widest radius whose tile, staging the representation's channels,
+  // fits the 32 KiB of shared memory every GL 4.5 device has, so the plan
+  // is the same on every device.
+  constexpr int kMinSharedBytes = 32768;
+  const GLenum format = representation_format(settings.technique);
+  int radius = kMaxFusedBlur;
+  while (radius > 0 && FusedFilterPass::tile_rows(radius, channel_count(format), kMinSharedBytes,
+                                                  FusedFilterPass::staged_channels(
+                                                      format, depth_samples(settings))) == 0) {
+    --radius;
+  }
+  return radius;
+}
+
 bool uses_fused_filter(const ShadowMapSettings& settings) {
   return settings.fused && filter_define(settings) == FILTER_GAUSSIAN &&
-         settings.blur <= kMaxFusedBlur;
+         settings.blur <= max_fused_blur(settings);
 }
 
 bool uses_shadow_mips(const ShadowMapSettings& settings) {

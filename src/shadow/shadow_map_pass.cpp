@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "penumbra/error.hpp"
+
 namespace penumbra {
 
 CasterDepth caster_depth(const gpu::GpuShadowView& view) {
@@ -10,34 +12,82 @@ CasterDepth caster_depth(const gpu::GpuShadowView& view) {
   return view.perspective != 0 ? CasterDepth::Reciprocal : CasterDepth::Relative;
 }
 
+namespace {
+
+// One framebuffer per layer of `maps`, its depth attachment that layer.
+std::vector<gl::Framebuffer> layer_framebuffers(const gl::Texture& maps, const char* label) {
+  std::vector<gl::Framebuffer> framebuffers;
+  for (int i = 0; i < maps.layers(); ++i) {
+    gl::Framebuffer fb(std::string(label) + " " + std::to_string(i));
+    fb.attach_depth_layer(maps, i);
+    fb.set_draw_buffers(0);
+    fb.check_complete();
+    framebuffers.push_back(std::move(fb));
+  }
+  return framebuffers;
+}
+
+}  // namespace
+
 ShadowMapPass::ShadowMapPass()
     : linearize_program_(
           gl::Program::graphics("common/fullscreen.vert", "shadow/linearize_depth.frag")) {}
 
 int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShadowView> views,
-                           int map_size, std::span<const std::uint8_t> stale) {
+                           int map_size, std::span<const std::uint8_t> stale, int samples) {
   const int layers = std::max(static_cast<int>(views.size()), 1);
-  bool all = stale.empty();
-  if (gl::ensure_texture_array(maps_, kDepthFormat, map_size, map_size, layers, "shadow maps")) {
-    framebuffers_.clear();
-    for (int i = 0; i < layers; ++i) {
-      gl::Framebuffer fb("shadow view " + std::to_string(i));
-      fb.attach_depth_layer(maps_, i);
-      fb.set_draw_buffers(0);
-      fb.check_complete();
-      framebuffers_.push_back(std::move(fb));
+  const bool multisample = samples > 1;
+  if (multisample) {
+    GLint max_samples = 1;
+    glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_samples);
+    if (samples > max_samples) {
+      throw UsageError("--shadow-msaa " + std::to_string(samples) +
+                       " exceeds this GPU's limit of " + std::to_string(max_samples) +
+                       " samples per depth texel");
     }
+  }
+  // Other samples than the last frame's: every layer is drawn again (the
+  // nearest-sample maps of a multisampled frame are not a 1-sample frame's).
+  bool all = stale.empty() || samples != samples_;
+  samples_ = samples;
+  if (gl::ensure_texture_array(maps_, kDepthFormat, map_size, map_size, layers, "shadow maps")) {
+    framebuffers_ = layer_framebuffers(maps_, "shadow view");
     all = true;  // a new array holds nothing yet
+  }
+  if (!multisample && multisample_maps_) {
+    // Back to one sample: the multisampled layers (N times the maps'
+    // memory) are not kept for a later frame.
+    multisample_framebuffers_.clear();
+    multisample_maps_ = gl::Texture();
+    multisample_reciprocal_framebuffer_ = gl::Framebuffer();
+    multisample_reciprocal_ = gl::Texture();
+  }
+  if (multisample &&
+      gl::ensure_multisample_texture_array(multisample_maps_, kDepthFormat, map_size, map_size,
+                                           layers, samples, "multisampled shadow maps")) {
+    multisample_framebuffers_ = layer_framebuffers(multisample_maps_, "multisampled shadow view");
+    all = true;
   }
   const bool any_reciprocal = std::any_of(views.begin(), views.end(), [](const auto& v) {
     return caster_depth(v) == CasterDepth::Reciprocal;
   });
-  if (any_reciprocal && gl::ensure_texture_array(reciprocal_, kDepthFormat, map_size, map_size, 1,
-                                                 "shadow reciprocal depth")) {
-    reciprocal_framebuffer_ = gl::Framebuffer("shadow reciprocal depth");
-    reciprocal_framebuffer_.attach_depth_layer(reciprocal_, 0);
-    reciprocal_framebuffer_.set_draw_buffers(0);
-    reciprocal_framebuffer_.check_complete();
+  if (any_reciprocal && !multisample &&
+      gl::ensure_texture_array(reciprocal_, kDepthFormat, map_size, map_size, 1,
+                               "shadow reciprocal depth")) {
+    reciprocal_framebuffer_ = std::move(layer_framebuffers(reciprocal_, "shadow reciprocal")[0]);
+  }
+  if (any_reciprocal && multisample &&
+      gl::ensure_multisample_texture_array(multisample_reciprocal_, kDepthFormat, map_size,
+                                           map_size, 1, samples,
+                                           "multisampled shadow reciprocal depth")) {
+    multisample_reciprocal_framebuffer_ =
+        std::move(layer_framebuffers(multisample_reciprocal_, "multisampled shadow reciprocal")[0]);
+  }
+  if (multisample && !nearest_sample_program_) {
+    multisample_linearize_program_ = gl::Program::graphics(
+        "common/fullscreen.vert", "shadow/linearize_depth.frag", {{"MULTISAMPLE", "1"}});
+    nearest_sample_program_ =
+        gl::Program::graphics("common/fullscreen.vert", "shadow/nearest_sample_depth.frag");
   }
   // A layer is drawn when the cache flags its view (every layer without
   // flags, or in a new array, which holds nothing yet).
@@ -55,6 +105,7 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
   glGetIntegerv(GL_CLIP_ORIGIN, &clip_origin);
   glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth);
   glGetDoublei_v(GL_DEPTH_RANGE, 0, depth_range);
+  const GLboolean was_multisampling = glIsEnabled(GL_MULTISAMPLE);
   // Window depth = clip z / clip w exactly: z-bar for the orthographic
   // views (no remapping from [-1, 1], which would round near 0).
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -64,46 +115,65 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
+  // Multisampled rasterization is on by default; an engine may have turned it off.
+  if (multisample) glEnable(GL_MULTISAMPLE);
   glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(map_size), static_cast<float>(map_size));
   const float far_depth = 1.0f, reversed_far_depth = 0.0f;
+  const std::vector<gl::Framebuffer>& targets =
+      multisample ? multisample_framebuffers_ : framebuffers_;
   for (int i = 0; i < layers; ++i) {
     if (!is_stale(i)) continue;
-    const GLuint fb = framebuffers_[static_cast<std::size_t>(i)].id();
+    const GLuint fb = targets[static_cast<std::size_t>(i)].id();
     if (i >= static_cast<int>(views.size())) {  // no view: an empty layer
       glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
-      continue;
-    }
-    const gpu::GpuShadowView& view = views[static_cast<std::size_t>(i)];
-    if (caster_depth(view) == CasterDepth::Reciprocal) {
-      const GLuint scratch = reciprocal_framebuffer_.id();
+    } else if (const gpu::GpuShadowView& view = views[static_cast<std::size_t>(i)];
+               caster_depth(view) == CasterDepth::Reciprocal) {
+      const GLuint scratch =
+          multisample ? multisample_reciprocal_framebuffer_.id() : reciprocal_framebuffer_.id();
       glBindFramebuffer(GL_FRAMEBUFFER, scratch);
       glClearNamedFramebufferfv(scratch, GL_DEPTH, 0, &reversed_far_depth);
       glDepthFunc(GL_GREATER);
       draw(i);
-      linearize(view, fb);
+      linearize(view, fb, samples);
     } else {
       glBindFramebuffer(GL_FRAMEBUFFER, fb);
       glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
       glDepthFunc(GL_LESS);
       draw(i);
     }
+    if (multisample) resolve_nearest(i);
   }
   glDepthFunc(GL_LESS);
+  if (!was_multisampling) glDisable(GL_MULTISAMPLE);
   glClipControl(static_cast<GLenum>(clip_origin), static_cast<GLenum>(clip_depth));
   glDepthRangeIndexed(0, depth_range[0], depth_range[1]);
   glPopDebugGroup();
   return drawn;
 }
 
-void ShadowMapPass::linearize(const gpu::GpuShadowView& view, GLuint target) {
+void ShadowMapPass::linearize(const gpu::GpuShadowView& view, GLuint target, int samples) {
   GLint vertex_array = 0;
   glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
   glBindFramebuffer(GL_FRAMEBUFFER, target);
   glDepthFunc(GL_ALWAYS);
-  const GLuint program = linearize_program_.id();
-  glProgramUniform2f(program, 0, view.depth_range.x, view.depth_range.y);
-  linearize_program_.use();
-  glBindTextureUnit(0, reciprocal_.id());
+  const gl::Program& program = samples > 1 ? multisample_linearize_program_ : linearize_program_;
+  glProgramUniform2f(program.id(), 0, view.depth_range.x, view.depth_range.y);
+  program.use();
+  glBindTextureUnit(0, samples > 1 ? multisample_reciprocal_.id() : reciprocal_.id());
+  glBindSampler(0, 0);
+  glBindVertexArray(empty_vertex_array_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(static_cast<GLuint>(vertex_array));
+}
+
+void ShadowMapPass::resolve_nearest(int layer) {
+  GLint vertex_array = 0;
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[static_cast<std::size_t>(layer)].id());
+  glDepthFunc(GL_ALWAYS);
+  glProgramUniform1i(nearest_sample_program_.id(), 0, layer);
+  nearest_sample_program_.use();
+  glBindTextureUnit(0, multisample_maps_.id());
   glBindSampler(0, 0);
   glBindVertexArray(empty_vertex_array_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -355,7 +355,7 @@ void ShadowMaps::render(const DrawCasters& draw) {
                           .view_projection = m.block.views[view].view_projection,
                           .program = program});
         },
-        views, s.map_size, stale);
+        views, s.map_size, stale, depth_samples(s));
   }
   m.filtered_for = s;
   if (filters) m.filter(s, settings_changed ? std::span<const std::uint8_t>() : stale);
@@ -373,11 +373,11 @@ void ShadowMaps::Impl::filter(const ShadowMapSettings& s, std::span<const std::u
   }
   if (!is_filterable(s.technique)) return;
   if (uses_fused_filter(s)) {
-    fused_pass.execute(map_pass.depth_maps(), s, layers);
+    fused_pass.execute(map_pass.sampled_depth_maps(), s, layers);
     filtered = fused_pass.output().id();
     return;
   }
-  resolve_pass.execute(map_pass.depth_maps(), s, layers);
+  resolve_pass.execute(map_pass.sampled_depth_maps(), s, layers);
   filtered = resolve_pass.representation().id();
   if (filter_define(s) == FILTER_GAUSSIAN) {
     blur_pass.execute(resolve_pass.representation(), s.blur, nullptr, 1, layers);

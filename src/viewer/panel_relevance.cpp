@@ -27,7 +27,9 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
       name == "max-slope" || name == "normal-offset") {
     return shadowed;
   }
-  if (name == "filter" || name == "blur" || name == "filter-slope-bias") return is_filterable(t);
+  if (name == "filter" || name == "blur" || name == "filter-slope-bias" || name == "shadow-msaa") {
+    return is_filterable(t);
+  }
   if (name == "pcf-width" || name == "pcf-samples") return t == Technique::Pcf;
   if (name == "pcss-blocker-samples" || name == "pcss-filter-samples")
     return t == Technique::Pcss || t == Technique::Backprojection;

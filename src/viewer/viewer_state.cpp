@@ -74,6 +74,8 @@ bool set_number(ViewerState& state, std::string_view name, double value) {
     if (p.name == name && is_window_owned(p)) return false;
   }
   const int last_light = std::max(0, static_cast<int>(state.lights.size()) - 1);
+  // Sample counts are powers of two: a slider's 3 or 6 goes to the nearest.
+  if (name == "shadow-msaa") value = std::exp2(std::round(std::log2(std::max(value, 1.0))));
   if (name == "light-index") {
     return set_in_table(state.render, kRenderIntParams, name, value, last_light);
   }
@@ -148,7 +150,8 @@ void set_camera(ViewerState& state, const Camera& camera) {
   state.camera = camera;
 }
 
-FrameInput frame_input(const ViewerState& state, int width, int height, int max_texture_size) {
+FrameInput frame_input(const ViewerState& state, int width, int height, int max_texture_size,
+                       int max_shadow_samples) {
   FrameInput f{state.render, state.shadow, state.ssao, state.camera, state.lights, {}};
   const int max_image = std::min(kMaxImageSize, max_texture_size);
   f.render.width = std::clamp(width, 1, max_image);
@@ -157,6 +160,10 @@ FrameInput frame_input(const ViewerState& state, int width, int height, int max_
   if (s.map_size > max_texture_size) {
     s.map_size = max_texture_size;
     f.notes.push_back("shadow-map size: this GPU's limit is " + std::to_string(max_texture_size));
+  }
+  if (s.shadow_msaa > max_shadow_samples) {
+    s.shadow_msaa = max_shadow_samples;
+    f.notes.push_back("shadow-msaa: this GPU's limit is " + std::to_string(max_shadow_samples));
   }
   if (s.soft && !supports_soft_shadows(s.technique, s.filter)) {
     s.soft = false;

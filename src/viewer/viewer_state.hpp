@@ -69,7 +69,8 @@ struct FrameInput {
   std::vector<std::string> notes;
 };
 
-FrameInput frame_input(const ViewerState& state, int width, int height, int max_texture_size);
+FrameInput frame_input(const ViewerState& state, int width, int height, int max_texture_size,
+                       int max_shadow_samples = kMaxShadowMsaa);
 
 // Renders the frame (throws as Renderer::render does).
 void render_frame(Renderer& renderer, const FrameInput& frame, gl::GpuProfiler* profiler);

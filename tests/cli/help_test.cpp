@@ -410,7 +410,7 @@ TEST(Completion, CompletesCommandsOptionsAndNames) {
   EXPECT_EQ(complete("penumbra render --technique msm"), "msm\nmsm16\n");
   EXPECT_EQ(complete("penumbra compare --technique hard,v"), "hard,vsm\n");
   EXPECT_EQ(complete("penumbra render --no-ss"), "--no-ssao\n--no-ssao-half-resolution\n");
-  EXPECT_EQ(complete("penumbra bench --sweep m"), "map-size\n");
+  EXPECT_EQ(complete("penumbra bench --sweep m"), "map-size\nmsaa\n");
   EXPECT_EQ(complete("penumbra view --scene sp"), "spot\n");  // and files beginning "sp"
   EXPECT_EQ(complete("penumbra render --blur ''"), "\n");     // a number: nothing to offer
 }

@@ -89,6 +89,7 @@ Snapshot snapshot() {
   enabled("GL_RASTERIZER_DISCARD", GL_RASTERIZER_DISCARD);
   enabled("GL_POLYGON_OFFSET_FILL", GL_POLYGON_OFFSET_FILL);
   enabled("GL_DEPTH_CLAMP", GL_DEPTH_CLAMP);
+  enabled("GL_MULTISAMPLE", GL_MULTISAMPLE);
   enabled("GL_BLEND", GL_BLEND);
   enabled("GL_STENCIL_TEST", GL_STENCIL_TEST);
   enabled("GL_PRIMITIVE_RESTART", GL_PRIMITIVE_RESTART);
@@ -259,11 +260,12 @@ CameraFrustum test_camera() {
   return camera;
 }
 
-ShadowSettings settings_for(Technique technique, Filter filter, bool fused) {
+ShadowSettings settings_for(Technique technique, Filter filter, bool fused, int samples = 1) {
   ShadowSettings s;
   s.technique = technique;
   s.filter = filter;
   s.fused = fused;
+  s.shadow_msaa = samples;
   s.map_size = 64;
   s.cascades = 2;
   return s;
@@ -320,6 +322,7 @@ struct EngineState {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(4.0f, 16.0f);
     glEnable(GL_DEPTH_CLAMP);
+    glDisable(GL_MULTISAMPLE);
     glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
     glColorMaski(1, GL_FALSE, GL_TRUE, GL_FALSE, GL_TRUE);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
@@ -378,6 +381,7 @@ void apply_default_state() {
   glDisable(GL_RASTERIZER_DISCARD);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_DEPTH_CLAMP);
+  glEnable(GL_MULTISAMPLE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
@@ -426,13 +430,16 @@ struct Config {
   Filter filter;
   bool fused;
   const char* name;
+  int samples = 1;  // --shadow-msaa
 };
 // Depth maps alone; the resolve pass and a Gaussian (storage-buffer
-// weights, image units, the compute input unit); summed-area tables.
-constexpr std::array<Config, 3> kConfigs{{
+// weights, image units, the compute input unit); summed-area tables; the
+// multisampled layers (GL_MULTISAMPLE, which the engine turned off).
+constexpr std::array<Config, 4> kConfigs{{
     {Technique::Pcf, Filter::Gaussian, true, "pcf"},
     {Technique::Vsm, Filter::Gaussian, false, "vsm gaussian"},
     {Technique::Msm, Filter::Sat, true, "msm sat"},
+    {Technique::Vsm, Filter::Gaussian, true, "vsm fused, 4 samples", 4},
 }};
 
 // render() and bind() under an engine's state that differs from GL's
@@ -446,7 +453,8 @@ TEST_F(GpuTest, RenderAndBindLeaveTheEnginesStateAsTheyFoundIt) {
   const std::vector<Light> lights = test_lights();
   for (const Config& config : kConfigs) {
     SCOPED_TRACE(config.name);
-    const ShadowSettings settings = settings_for(config.technique, config.filter, config.fused);
+    const ShadowSettings settings =
+        settings_for(config.technique, config.filter, config.fused, config.samples);
     ShadowMaps maps;
     maps.update(lights, test_camera(), casters.geometry(), settings);
 

@@ -660,3 +660,32 @@ TEST(Hostile, MessagesAreOneCleanLine) {
 
 }  // namespace
 }  // namespace penumbra::hostile
+
+namespace penumbra::hostile {
+namespace {
+
+// 16. --shadow-msaa takes 1, 2, 4 or 8, and no more samples than the GPU
+// offers for a depth texture (llvmpipe: 4): each other value is one line
+// naming the flag, and no image appears.
+TEST(Hostile, ShadowMsaaValuesAreUsageErrors) {
+  const std::string dir = fresh_dir("shadow_msaa");
+  for (const std::string value : {"3", "0", "16", "-4", "2.5", "four"}) {
+    const Result r = shell("cd " + dir + " && timeout 60 PENUMBRA render --shadow-msaa " + value +
+                           kSmall + " -o x.png");
+    EXPECT_EQ(r.status, 2) << value << "\n" << r.err;
+    EXPECT_TRUE(one_error_line(r.err, "--shadow-msaa")) << value << "\n" << r.err;
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+  // Beyond the device's limit: refused when the maps are made, before any
+  // output (a GPU that offers 8 renders it).
+  const Result many = shell("cd " + dir + " && timeout 60 PENUMBRA render --shadow-msaa 8 " +
+                            "--technique vsm" + kSmall + " -o x.png");
+  if (many.status != 0) {
+    EXPECT_EQ(many.status, 2) << many.err;
+    EXPECT_TRUE(one_error_line(many.err, "--shadow-msaa 8 exceeds this GPU's limit")) << many.err;
+    EXPECT_TRUE(fs::is_empty(dir));
+  }
+}
+
+}  // namespace
+}  // namespace penumbra::hostile

@@ -39,6 +39,18 @@ TEST(EdgeErrors, CountsWrongPixelsAndThoseAtTheReferencesEdge) {
 
 TEST(EdgeErrors, ImagesOfDifferentSizesAreAnError) {
   EXPECT_THROW(penumbra::edge_errors(Image(4, 4), Image(4, 5), 1), penumbra::RuntimeError);
+  EXPECT_THROW(penumbra::at_reference_edges(Image(4, 4), Image(4, 5), 1), penumbra::RuntimeError);
+}
+
+// Only the columns within the reach of the reference's edge stay compared.
+TEST(EdgeErrors, AtReferenceEdgesKeepsThePixelsNearTheEdge) {
+  const Image reference = half_shadowed(10);
+  const Image edges = penumbra::at_reference_edges(half_shadowed(11), reference, 2);
+  for (int x = 0; x < 20; ++x) {
+    const bool near = x >= 8 && x <= 11;  // within 2 of the step between 9 and 10
+    EXPECT_EQ(edges.pixel(x, 3)[3], near ? 1.0f : 0.0f) << x;
+    EXPECT_EQ(edges.pixel(x, 3)[0], x < 11 ? 0.0f : 1.0f) << x;
+  }
 }
 
 }  // namespace

@@ -159,6 +159,14 @@ TEST_F(ViewerStateTest, NumbersAreClampedToTheirTables) {
   EXPECT_FALSE(set_number(state_, "no-such-parameter", 1));
   EXPECT_FALSE(set_number(state_, "blur", std::nan("")));
   EXPECT_FALSE(set_choice(state_, "technique", "blurry"));
+  // Sample counts snap to the nearest power of two, and to the GPU's limit.
+  EXPECT_TRUE(set_number(state_, "shadow-msaa", 3));
+  EXPECT_EQ(state_.shadow.shadow_msaa, 4);
+  EXPECT_TRUE(set_number(state_, "shadow-msaa", 6));
+  EXPECT_EQ(state_.shadow.shadow_msaa, 8);
+  const FrameInput input = frame_input(state_, kWidth, kHeight, 16384, 4);
+  EXPECT_EQ(input.shadow.shadow_msaa, 4);
+  EXPECT_EQ(input.notes.size(), 1u);
 }
 
 // "Copy as command": the command, run headless, makes the same image.

@@ -24,9 +24,11 @@ class FusedFilterPass {
   FusedFilterPass();
 
   // Filters every layer of `depth_maps` with the settings' technique and
-  // radius (settings.blur in 1..kMaxFusedBlur) into output(); or, given
-  // `layers` (a flag per layer), only the flagged ones, the others kept
-  // (all of them when output() is allocated anew).
+  // radius (settings.blur in 1..max_fused_blur()) into output(); a
+  // multisampled array (ShadowMapPass::sampled_depth_maps()) has the mean
+  // of each texel's samples' representations filtered; or, given `layers`
+  // (a flag per layer), only the flagged ones, the others kept (all of them
+  // when output() is allocated anew).
   void execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
                std::span<const std::uint8_t> layers = {});
 
@@ -35,10 +37,15 @@ class FusedFilterPass {
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
   // Rows of the tile each workgroup filters (32 wide) for a radius and a
-  // representation of `channels` floats (`staged_floats` staged per texel):
-  // the tallest of 32, 16 and 8 whose shared memory fits `shared_bytes`; 0
-  // if none does.
+  // representation of `channels` floats (`staged_floats` staged per texel:
+  // staged_channels(), or evsm4's two warps): the tallest of 32, 16 and 8
+  // whose shared memory fits `shared_bytes`; 0 if none does.
   static int tile_rows(int radius, int channels, int shared_bytes, int staged_floats = 1);
+
+  // Floats staged per texel: one (the value the moments are expanded
+  // from), or with `samples` > 1 the representation's channels (the mean
+  // of the samples' moments).
+  static int staged_channels(GLenum format, int samples);
 
   // Whether evsm4 stages its two warps per texel (computed once a texel
   // instead of once a tap): where they fit in a tile as tall as the one
@@ -46,13 +53,14 @@ class FusedFilterPass {
   static bool stages_evsm4_warps(int radius, int shared_bytes);
 
   // Bytes per texel of a width x height map: each 32 x tile_rows() tile
-  // reads the depth (R32F) under it and its apron of `radius` on every
-  // side, and writes the representation (`format`) once.
+  // reads the depth (R32F, `samples` per texel) under it and its apron of
+  // `radius` on every side, and writes the representation (`format`) once.
   static TexelTraffic texel_traffic(GLenum format, int radius, int width, int height,
-                                    int shared_bytes);
+                                    int shared_bytes, int samples = 1);
 
  private:
-  std::map<std::tuple<Technique, bool, int, int>, gl::Program> programs_;
+  // (technique, quantized, radius, tile rows, samples per depth texel)
+  std::map<std::tuple<Technique, bool, int, int, int>, gl::Program> programs_;
   int shared_bytes_ = 0;  // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE
   gl::Texture output_;
 };

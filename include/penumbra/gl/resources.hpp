@@ -59,7 +59,7 @@ struct TextureInfo {
   int height = 1;
   int layers = 1;   // array layers, or 6 faces for cube maps
   int levels = 1;   // mip levels
-  int samples = 1;  // > 1 for multisampled targets
+  int samples = 1;  // > 1 for multisampled targets: the least the texture gets
   std::string_view label;
 };
 
@@ -74,6 +74,10 @@ class Texture {
   [[nodiscard]] int layers() const { return layers_; }
   [[nodiscard]] int levels() const { return levels_; }
   [[nodiscard]] GLenum format() const { return format_; }
+  // Samples per texel: what the driver allocated, which may be more than
+  // TextureInfo::samples asked for (llvmpipe gives 4 for 2).
+  [[nodiscard]] int samples() const { return samples_; }
+  [[nodiscard]] int requested_samples() const { return requested_samples_; }
   [[nodiscard]] explicit operator bool() const { return static_cast<bool>(handle_); }
 
  private:
@@ -83,6 +87,8 @@ class Texture {
   int layers_ = 0;
   int levels_ = 0;
   GLenum format_ = 0;
+  int samples_ = 1;
+  int requested_samples_ = 1;
 };
 
 // Makes `texture` a 2D array texture of this format, size, layer count and
@@ -91,6 +97,12 @@ class Texture {
 // (re)allocated.
 bool ensure_texture_array(Texture& texture, GLenum format, int width, int height, int layers,
                           std::string_view label, int levels = 1);
+
+// The same for a multisampled 2D array texture of at least `samples`
+// samples per texel (fixed sample locations), reallocated when another
+// count is asked for.
+bool ensure_multisample_texture_array(Texture& texture, GLenum format, int width, int height,
+                                      int layers, int samples, std::string_view label);
 
 class Framebuffer {
  public:

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <span>
+#include <tuple>
 
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
@@ -14,21 +15,24 @@ namespace penumbra {
 
 class MomentResolvePass {
  public:
-  // Writes the representation of every layer of `depth_maps`. The array is
-  // reallocated only when its size, layer count or format changes.
+  // Writes the representation of every layer of `depth_maps`: with more
+  // than one sample per texel (ShadowMapPass::sampled_depth_maps()), the
+  // mean of its samples' representations. The array is reallocated only
+  // when its size, layer count or format changes.
   // `layers`: a flag per layer to resolve only those (FusedFilterPass).
   void execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
                std::span<const std::uint8_t> layers = {});
 
-  // Per texel: one depth read (of `depth_format`), one texel of the
-  // technique's representation written.
-  static TexelTraffic texel_traffic(GLenum depth_format, Technique technique);
+  // Per texel: one depth read (of `depth_format`) per sample, one texel of
+  // the technique's representation written.
+  static TexelTraffic texel_traffic(GLenum depth_format, Technique technique, int samples = 1);
 
   // A 2D array like the depth maps. Valid after execute().
   [[nodiscard]] const gl::Texture& representation() const { return maps_; }
 
  private:
-  std::map<std::pair<Technique, bool>, gl::Program> programs_;  // (technique, quantized)
+  // (technique, quantized, samples per depth texel)
+  std::map<std::tuple<Technique, bool, int>, gl::Program> programs_;
   gl::Texture maps_;
 };
 

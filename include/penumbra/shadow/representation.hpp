@@ -15,10 +15,25 @@ int technique_define(Technique technique);
 // The value of the SHADOW_FILTER define (FILTER_*) for the shadow settings.
 int filter_define(const ShadowMapSettings& settings);
 
+// Samples per texel of the depth maps the casters are drawn into:
+// --shadow-msaa for the filterable techniques, whose resolve averages the
+// samples' moments; 1 for those that read depth (hard, pcf, pcss,
+// backprojection): a binary test reads one depth per texel, and the one
+// samples can give it (the nearest, what --soft's blocker search reads)
+// measured worse against the traced reference than the texel centre's
+// (docs/rendering.md), so their maps are drawn as at 1.
+int depth_samples(const ShadowMapSettings& settings);
+
+// The widest radius the fused resolve + Gaussian takes: kMaxFusedBlur, or
+// with --shadow-msaa above 1, where each staged texel holds the mean of its
+// samples' moments, the widest whose tile still fits 32 KiB of shared
+// memory (8 for msm, msm16 and evsm4; 16 for the others).
+int max_fused_blur(const ShadowMapSettings& settings);
+
 // Whether the renderer filters with the fused resolve + Gaussian pass
-// (FusedFilterPass): --fused on, the Gaussian filter, radius 1..kMaxFusedBlur.
-// Otherwise a filterable technique runs the resolve, then the two blur
-// passes or the summed-area table.
+// (FusedFilterPass): --fused on, the Gaussian filter, radius
+// 1..max_fused_blur(). Otherwise a filterable technique runs the resolve,
+// then the two blur passes or the summed-area table.
 bool uses_fused_filter(const ShadowMapSettings& settings);
 
 // Whether the filtered maps carry a mip chain (--shadow-mips) that the

@@ -12,6 +12,12 @@
 // drawn into a scratch layer and linearized into the view's layer by one
 // full-screen pass; only a point light's faces (radial depth, RADIAL_DEPTH
 // 1 in the caster shaders) write it.
+//
+// With more than one sample per texel (depth_samples()), the views are drawn
+// into a multisampled array of the same layout (a spot view's scratch layer
+// is multisampled too, and linearized sample by sample), which the moment
+// resolves read (sampled_depth_maps()); depth_maps() then holds the nearest
+// of each texel's samples (shaders/shadow/nearest_sample_depth.frag).
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -51,16 +57,31 @@ class ShadowMapPass {
   // kept (cleared to 1) when there is no view. The array is reallocated
   // only when the view count or the size changes, and then every view is
   // drawn. Returns the number of views drawn.
+  //
+  // `samples` (1, 2, 4, 8: ShadowSettings::shadow_msaa) per texel; a
+  // change of it draws every view again. Throws UsageError when the device
+  // offers fewer (GL_MAX_DEPTH_TEXTURE_SAMPLES).
   int execute(const DrawCasters& draw, std::span<const gpu::GpuShadowView> views, int map_size,
-              std::span<const std::uint8_t> stale = {});
+              std::span<const std::uint8_t> stale = {}, int samples = 1);
 
-  // DEPTH_COMPONENT32F 2D array holding z-bar, one layer per view. Valid
-  // after execute().
+  // DEPTH_COMPONENT32F 2D array holding z-bar, one layer per view (with
+  // samples > 1, the nearest of each texel's samples). Valid after
+  // execute().
   [[nodiscard]] const gl::Texture& depth_maps() const { return maps_; }
+  // What the moment resolves average: the multisampled array (read as a
+  // sampler2DMSArray) when the last execute() had samples > 1, else
+  // depth_maps().
+  [[nodiscard]] const gl::Texture& sampled_depth_maps() const {
+    return samples_ > 1 ? multisample_maps_ : maps_;
+  }
 
  private:
-  // Writes z-bar into `target` from the scratch layer's z0 / z.
-  void linearize(const gpu::GpuShadowView& view, GLuint target);
+  // Writes z-bar into `target` from the scratch layer's z0 / z (every
+  // sample of it with samples > 1).
+  void linearize(const gpu::GpuShadowView& view, GLuint target, int samples);
+  // Writes the nearest sample of multisampled layer `layer` into the same
+  // layer of depth_maps().
+  void resolve_nearest(int layer);
 
   gl::Texture maps_;
   std::vector<gl::Framebuffer> framebuffers_;  // one per layer
@@ -68,6 +89,15 @@ class ShadowMapPass {
   gl::Framebuffer reciprocal_framebuffer_;
   gl::Program linearize_program_;
   gl::VertexArray empty_vertex_array_{"shadow linearize"};
+  // samples > 1: the multisampled layers, their scratch layer, and the
+  // programs that linearize and resolve them (made on first use).
+  int samples_ = 1;  // of the last execute()
+  gl::Texture multisample_maps_;
+  std::vector<gl::Framebuffer> multisample_framebuffers_;
+  gl::Texture multisample_reciprocal_;
+  gl::Framebuffer multisample_reciprocal_framebuffer_;
+  gl::Program multisample_linearize_program_;
+  gl::Program nearest_sample_program_;
 };
 
 }  // namespace penumbra
