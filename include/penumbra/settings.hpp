@@ -227,13 +227,6 @@ struct ShadowMapSettings {
   // amount become 0 and the rest is rescaled. 0: off.
   float bleed_reduction = 0.0f;
 
-  // Directional lights: cascades, or virtual shadow maps (a clipmap of
-  // 16,384^2-texel levels in 128^2 pages, resident in a page pool). Virtual
-  // maps are drawn by penumbra's renderer; ShadowMaps draws cascades.
-  ShadowMapKind shadow_maps = ShadowMapKind::Cascades;
-  // Virtual shadow maps: the physical page pool's size in MiB of 32-bit
-  // depth (64 KiB a page). 48: the memory of 3 cascades of 2048^2.
-  int page_pool_mib = 48;
   // Directional lights: shadow cascades along the camera's view (1-4).
   int cascades = 3;
   // Split scheme of the cascades: the blend lambda log + (1 - lambda)
@@ -247,19 +240,6 @@ struct ShadowMapSettings {
   // reads the scene from its own face (no seams between faces).
   bool guard_band = true;
 
-  // Screen-space contact shadows, with every technique, in penumbra's
-  // renderer (ShadowMaps' lookup has no camera depth buffer to march): from
-  // each lit pixel, contact_shadow_steps dithered steps through the
-  // camera's depth buffer towards the light, over contact_shadow_length
-  // world units; a step behind a surface seen in front of it by less than
-  // contact_shadow_thickness is occluded. They catch what the map's bias
-  // and resolution let light under (creases, the foot of a model); the
-  // light's factor is the smaller of the technique's and theirs
-  // (shaders/render/contact_shadow.glsl).
-  bool contact_shadows = false;
-  float contact_shadow_length = 0.3f;
-  float contact_shadow_thickness = 0.1f;
-  int contact_shadow_steps = 16;
   bool operator==(const ShadowMapSettings&) const = default;
 };
 
@@ -292,6 +272,28 @@ class SourceSizeOverride {
 // only the renderer does with them (accumulated soft shadows, source
 // sizes set for every light at once).
 struct ShadowSettings : ShadowMapSettings {
+  // Directional lights: cascades, or virtual shadow maps (a clipmap of
+  // 16,384^2-texel levels in 128^2 pages, resident in a page pool). Virtual
+  // maps are penumbra's renderer's; ShadowMaps draws cascades.
+  ShadowMapKind shadow_maps = ShadowMapKind::Cascades;
+  // Virtual shadow maps: the physical page pool's size in MiB of 32-bit
+  // depth (64 KiB a page). 48: the memory of 3 cascades of 2048^2.
+  int page_pool_mib = 48;
+
+  // Screen-space contact shadows, with every technique, in penumbra's
+  // renderer (ShadowMaps' lookup has no camera depth buffer to march): from
+  // each lit pixel, contact_shadow_steps dithered steps through the
+  // camera's depth buffer towards the light, over contact_shadow_length
+  // world units; a step behind a surface seen in front of it by less than
+  // contact_shadow_thickness is occluded. They catch what the map's bias
+  // and resolution let light under (creases, the foot of a model); the
+  // light's factor is the smaller of the technique's and theirs
+  // (shaders/render/contact_shadow.glsl).
+  bool contact_shadows = false;
+  float contact_shadow_length = 0.3f;
+  float contact_shadow_thickness = 0.1f;
+  int contact_shadow_steps = 16;
+
   // Spot lights' square width and point lights' sphere diameter in world
   // units (--light-size), and directional lights' angular diameter in
   // degrees (--sun-angle), for every light of the kind once set.
@@ -463,7 +465,7 @@ inline constexpr int kMaxContactShadowSteps = 64;
 // each device's own limit is checked where the maps are made).
 inline constexpr int kMaxShadowMsaa = 8;
 
-inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 17> kShadowFloatParams{{
+inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowFloatParams{{
     {"constant-bias",
      "constant depth bias, in shadow-map texels (a texel's world size at the receiver)", 0.0f,
      64.0f, &ShadowMapSettings::constant_bias, OptionGroup::Bias},
@@ -503,20 +505,13 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 17> kShadowF
     {"cascade-blend",
      "directional lights: fraction of each cascade, at its far end, blended into the next", 0.0f,
      0.5f, &ShadowMapSettings::cascade_blend, OptionGroup::Lights},
-    {"contact-shadow-length",
-     "--contact-shadows: how far each pixel's march towards the light reaches, in world units",
-     1e-4f, 1000.0f, &ShadowMapSettings::contact_shadow_length, OptionGroup::Technique},
-    {"contact-shadow-thickness",
-     "--contact-shadows: how far behind a surface seen in the depth buffer a step still counts "
-     "as occluded by it, in world units",
-     1e-4f, 1000.0f, &ShadowMapSettings::contact_shadow_thickness, OptionGroup::Technique},
 }};
 
 // The page pool's largest size: 2048 pages of 64 KiB, the layers every
 // GL 4.5 device allows an array texture.
 inline constexpr int kMaxPagePoolMib = 128;
 
-inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 10> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 8> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowMapSettings::map_size, OptionGroup::Technique},
     {"shadow-msaa",
@@ -537,16 +532,10 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 10> kShadowInt
      kMaxShadowSamples, &ShadowMapSettings::pcss_filter_samples, OptionGroup::Technique},
     {"cascades", "directional lights: shadow cascades along the camera's view", 1, MAX_CASCADES,
      &ShadowMapSettings::cascades, OptionGroup::Lights},
-    {"page-pool-mib",
-     "--shadow-maps virtual: the physical page pool in MiB (64 KiB of 32-bit depth a 128^2 "
-     "page; 48 is the memory of 3 cascades of 2048^2)",
-     1, kMaxPagePoolMib, &ShadowMapSettings::page_pool_mib, OptionGroup::Lights},
     {"shadow-anisotropy",
      "--shadow-mips: most anisotropic filtering along the pixel's footprint (up to the device's "
      "limit; llvmpipe: 1); 1: trilinear only",
      1, 16, &ShadowMapSettings::shadow_anisotropy, OptionGroup::Filter},
-    {"contact-shadow-steps", "--contact-shadows: steps of each pixel's march towards the light", 1,
-     kMaxContactShadowSteps, &ShadowMapSettings::contact_shadow_steps, OptionGroup::Technique},
 }};
 
 inline constexpr int kMaxAccumulate = 4096;
@@ -559,6 +548,27 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kAccumulatePar
      "the light's source (--light-size, --sun-angle; stratified, the same points every run); "
      "1: off",
      1, kMaxAccumulate, &ShadowSettings::accumulate, OptionGroup::SoftShadows},
+}};
+
+// The renderer's own shadow parameters, which ShadowMaps does not take:
+// virtual shadow maps and screen-space contact shadows.
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 2> kRendererShadowIntParams{{
+    {"page-pool-mib",
+     "--shadow-maps virtual: the physical page pool in MiB (64 KiB of 32-bit depth a 128^2 "
+     "page; 48 is the memory of 3 cascades of 2048^2)",
+     1, kMaxPagePoolMib, &ShadowSettings::page_pool_mib, OptionGroup::Lights},
+    {"contact-shadow-steps", "--contact-shadows: steps of each pixel's march towards the light", 1,
+     kMaxContactShadowSteps, &ShadowSettings::contact_shadow_steps, OptionGroup::Technique},
+}};
+
+inline constexpr std::array<NumericParam<ShadowSettings, float>, 2> kRendererShadowFloatParams{{
+    {"contact-shadow-length",
+     "--contact-shadows: how far each pixel's march towards the light reaches, in world units",
+     1e-4f, 1000.0f, &ShadowSettings::contact_shadow_length, OptionGroup::Technique},
+    {"contact-shadow-thickness",
+     "--contact-shadows: how far behind a surface seen in the depth buffer a step still counts "
+     "as occluded by it, in world units",
+     1e-4f, 1000.0f, &ShadowSettings::contact_shadow_thickness, OptionGroup::Technique},
 }};
 
 // A light's source size: its own (Light, scene files' "light_size" and
@@ -649,7 +659,7 @@ struct SwitchParam {
   OptionGroup group = OptionGroup::Unset;
 };
 
-inline constexpr std::array<SwitchParam<ShadowMapSettings>, 4> kShadowSwitchParams{{
+inline constexpr std::array<SwitchParam<ShadowMapSettings>, 3> kShadowSwitchParams{{
     {"guard-band",
      "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
      "filters near a face's edge read their own face (no seams)",
@@ -664,10 +674,14 @@ inline constexpr std::array<SwitchParam<ShadowMapSettings>, 4> kShadowSwitchPara
      "read trilinearly and anisotropically over the pixel's footprint (distant receivers do not "
      "alias)",
      &ShadowMapSettings::shadow_mips, OptionGroup::Filter},
+}};
+
+// The renderer's contact shadows (kRendererShadowIntParams' neighbours).
+inline constexpr std::array<SwitchParam<ShadowSettings>, 1> kRendererShadowSwitchParams{{
     {"contact-shadows",
      "with every technique: a short march through the camera's depth buffer from each lit pixel "
      "towards the light darkens what the shadow map misses (creases, the foot of a model)",
-     &ShadowMapSettings::contact_shadows, OptionGroup::Technique},
+     &ShadowSettings::contact_shadows, OptionGroup::Technique},
 }};
 
 inline constexpr std::array<SwitchParam<SsaoSettings>, 2> kSsaoSwitchParams{{

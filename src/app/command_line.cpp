@@ -84,6 +84,8 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   add_changed(args, command.shadow, kShadowIntParams);
   add_changed(args, command.shadow, kAccumulateParams);
   add_changed(args, command.shadow, kShadowFloatParams);
+  add_changed(args, command.shadow, kRendererShadowIntParams);
+  add_changed(args, command.shadow, kRendererShadowFloatParams);
   for (const SourceSizeParam& p : kSourceSizeParams) {
     const SourceSizeOverride& size = command.shadow.*(p.override_field);
     if (size.is_set()) args.push_back(flag(p.name) + "=" + text(static_cast<float>(size)));
@@ -92,6 +94,7 @@ std::vector<std::string> render_command_args(const RenderCommand& command) {
   add_changed(args, command.ssao, kSsaoIntParams);
   add_changed(args, command.ssao, kSsaoFloatParams);
   add_changed_switches(args, command.shadow, kShadowSwitchParams);
+  add_changed_switches(args, command.shadow, kRendererShadowSwitchParams);
   add_changed_switches(args, command.shadow, kShadowFlagParams);
   if (command.original != nullptr && command.edited != nullptr) {
     for (std::string& arg :

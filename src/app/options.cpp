@@ -132,6 +132,9 @@ void add_shadow_parameters(CLI::App& app, ShadowSettings& settings) {
   add_switches(app, settings, kShadowSwitchParams, OptionGroup::Technique);
   add_params(app, settings, kShadowIntParams, OptionGroup::Technique);
   add_params(app, settings, kShadowFloatParams, OptionGroup::Technique);
+  add_switches(app, settings, kRendererShadowSwitchParams, OptionGroup::Technique);
+  add_params(app, settings, kRendererShadowIntParams, OptionGroup::Technique);
+  add_params(app, settings, kRendererShadowFloatParams, OptionGroup::Technique);
   // Given, a source size applies to every light of its kind (the scene's
   // own sizes otherwise): set through the override, which records that.
   for (const SourceSizeParam& p : kSourceSizeParams) {

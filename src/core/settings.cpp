@@ -31,8 +31,17 @@ void check_ranges(const Owner& settings, const std::array<NumericParam<Settings,
 void validate(const ShadowSettings& settings) {
   validate(static_cast<const ShadowMapSettings&>(settings));
   check_ranges(settings, kAccumulateParams);
+  check_ranges(settings, kRendererShadowIntParams);
+  check_ranges(settings, kRendererShadowFloatParams);
   for (const SourceSizeParam& p : kSourceSizeParams) {
     check_range<float>(p.name, settings.*(p.override_field), p.min, p.max);
+  }
+  if (settings.shadow_maps == ShadowMapKind::Virtual &&
+      !supports_virtual_maps(settings.technique)) {
+    throw UsageError(
+        "--shadow-maps virtual needs --technique hard or pcf: the other techniques filter or "
+        "search their maps as whole textures (moments blurred or summed across page borders), "
+        "so they use --shadow-maps cascades");
   }
 }
 
@@ -66,13 +75,6 @@ void validate(const ShadowMapSettings& settings) {
         "--technique evsm2/evsm4 cannot use --filter sat: exp(c u)^2 spans exp(-2c) to exp(2c) "
         "(1e-35 to 1e35 at c = 40), far beyond the 17 bits per texel a 32-bit summed-area table "
         "keeps; use --filter gaussian, or vsm/msm/msm16 with sat");
-  }
-  if (settings.shadow_maps == ShadowMapKind::Virtual &&
-      !supports_virtual_maps(settings.technique)) {
-    throw UsageError(
-        "--shadow-maps virtual needs --technique hard or pcf: the other techniques filter or "
-        "search their maps as whole textures (moments blurred or summed across page borders), "
-        "so they use --shadow-maps cascades");
   }
 }
 

@@ -234,20 +234,25 @@ void GpuScene::update_vertices(std::size_t first, std::span<const Vertex> vertic
   vertices_.update(vertices.data(), vertices.size_bytes(), first * sizeof(Vertex));
 }
 
+bool GpuScene::bind_batch(const Batch& batch, SurfaceSet set) {
+  if (batch.index_count == 0) return false;
+  if ((set == SurfaceSet::Opaque && batch.cut_out) ||
+      (set == SurfaceSet::CutOut && !batch.cut_out)) {
+    return false;
+  }
+  glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
+  glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
+  glBindTextureUnit(UNIT_BASE_ALPHA, batch.texture->id());
+  glBindSampler(UNIT_BASE_ALPHA, batch.alpha_sampler->id());
+  return true;
+}
+
 void GpuScene::draw_indirect(SurfaceSet set, std::size_t offset) const {
   glBindVertexArray(vao_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS_SSBO, materials_.id());
   for (std::size_t b = 0; b < batches_.size(); ++b) {
     const Batch& batch = batches_[b];
-    if (batch.index_count == 0) continue;
-    if ((set == SurfaceSet::Opaque && batch.cut_out) ||
-        (set == SurfaceSet::CutOut && !batch.cut_out)) {
-      continue;
-    }
-    glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
-    glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
-    glBindTextureUnit(UNIT_BASE_ALPHA, batch.texture->id());
-    glBindSampler(UNIT_BASE_ALPHA, batch.alpha_sampler->id());
+    if (!bind_batch(batch, set)) continue;
     glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(offset + b * 5 * sizeof(std::uint32_t)));
   }
@@ -272,15 +277,7 @@ void GpuScene::draw(SurfaceSet set, Corners corners) const {
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS_SSBO, materials_.id());
   for (const Batch& batch : batches_) {
-    if (batch.index_count == 0) continue;
-    if ((set == SurfaceSet::Opaque && batch.cut_out) ||
-        (set == SurfaceSet::CutOut && !batch.cut_out)) {
-      continue;
-    }
-    glBindTextureUnit(UNIT_BASE_COLOR, batch.texture->id());
-    glBindSampler(UNIT_BASE_COLOR, batch.sampler->id());
-    glBindTextureUnit(UNIT_BASE_ALPHA, batch.texture->id());
-    glBindSampler(UNIT_BASE_ALPHA, batch.alpha_sampler->id());
+    if (!bind_batch(batch, set)) continue;
     if (corners == Corners::Read) {
       glUniform1ui(LOCATION_FIRST_INDEX, corners_readable_
                                              ? static_cast<GLuint>(batch.first_index)

@@ -74,6 +74,8 @@ class GpuScene {
     const gl::Sampler* alpha_sampler = nullptr;  // for the alpha test (UNIT_BASE_ALPHA)
     bool cut_out = false;
   };
+  // Binds a batch's textures when `set` draws it; false: it draws nothing.
+  static bool bind_batch(const Batch& batch, SurfaceSet set);
   gl::Buffer vertices_;
   gl::Buffer indices_;
   gl::Buffer materials_;

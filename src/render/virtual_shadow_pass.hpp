@@ -18,7 +18,7 @@
 #include "penumbra/shared/gpu_types.h"
 #include "render/gbuffer_pass.hpp"
 #include "render/gpu_scene.hpp"
-#include "shadow/virtual_clipmap.hpp"
+#include "penumbra/shadow/virtual_clipmap.hpp"
 
 namespace penumbra {
 

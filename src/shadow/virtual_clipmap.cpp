@@ -1,4 +1,4 @@
-#include "shadow/virtual_clipmap.hpp"
+#include "penumbra/shadow/virtual_clipmap.hpp"
 
 #include <algorithm>
 #include <array>

@@ -283,15 +283,22 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
       if (ImGui::Checkbox(label.c_str(), &value)) set_flag(state, p.name, value);
       tooltip(p.help);
     }
-    for (const auto& p : kShadowSwitchParams) {
-      if (!offer(p.name)) continue;
-      choice_combo(state, std::string(p.name).c_str(), state.shadow.*(p.field), kOnOffNames,
-                   p.help);
-    }
+    const auto switches = [&](const auto& table) {
+      for (const auto& p : table) {
+        if (!offer(p.name)) continue;
+        choice_combo(state, std::string(p.name).c_str(), state.shadow.*(p.field), kOnOffNames,
+                     p.help);
+      }
+    };
+    switches(kShadowSwitchParams);
+    switches(kRendererShadowSwitchParams);
     int_sliders(state, state.shadow, kShadowIntParams, status.max_texture_size, false, offer);
     int_sliders(state, state.shadow, kAccumulateParams, std::numeric_limits<int>::max(), false,
                 offer);
     float_sliders(state, state.shadow, kShadowFloatParams, offer);
+    int_sliders(state, state.shadow, kRendererShadowIntParams, std::numeric_limits<int>::max(),
+                false, offer);
+    float_sliders(state, state.shadow, kRendererShadowFloatParams, offer);
     // Every light of the kind at once, as --light-size and --sun-angle.
     for (const SourceSizeParam& p : kSourceSizeParams) {
       if (!offer(p.name)) continue;

@@ -94,6 +94,10 @@ bool set_number(ViewerState& state, std::string_view name, double value) {
                       std::numeric_limits<int>::max()) ||
          set_in_table(state.shadow, kAccumulateParams, name, value,
                       std::numeric_limits<int>::max()) ||
+         set_in_table(state.shadow, kRendererShadowIntParams, name, value,
+                      std::numeric_limits<int>::max()) ||
+         set_in_table(state.shadow, kRendererShadowFloatParams, name, value,
+                      std::numeric_limits<float>::max()) ||
          set_in_table(state.render, kRenderIntParams, name, value, std::numeric_limits<int>::max());
 }
 
@@ -116,6 +120,9 @@ bool set_choice(ViewerState& state, std::string_view name, std::string_view valu
   if (name == "view") return set_from_table(state.render.view, kViewNames, value);
   if (name == "ssao") return set_from_table(state.ssao.enabled, kOnOffNames, value);
   for (const auto& p : kShadowSwitchParams) {
+    if (p.name == name) return set_from_table(state.shadow.*(p.field), kOnOffNames, value);
+  }
+  for (const auto& p : kRendererShadowSwitchParams) {
     if (p.name == name) return set_from_table(state.shadow.*(p.field), kOnOffNames, value);
   }
   if (name == "ssao-half-resolution") {

@@ -94,6 +94,9 @@ TEST(Help, EveryTableParameterNamesItsSection) {
   collect_ungrouped(kShadowFloatParams, ungrouped);
   collect_ungrouped(kShadowIntParams, ungrouped);
   collect_ungrouped(kAccumulateParams, ungrouped);
+  collect_ungrouped(kRendererShadowIntParams, ungrouped);
+  collect_ungrouped(kRendererShadowFloatParams, ungrouped);
+  collect_ungrouped(kRendererShadowSwitchParams, ungrouped);
   collect_ungrouped(kSourceSizeParams, ungrouped);
   collect_ungrouped(kSsaoIntParams, ungrouped);
   collect_ungrouped(kSsaoFloatParams, ungrouped);

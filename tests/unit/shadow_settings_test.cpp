@@ -13,14 +13,30 @@ namespace penumbra {
 namespace {
 
 template <class T>
-concept HasAccumulate = requires(T t) { t.accumulate; };
+concept HasAccumulate = requires(T t) {
+  t.accumulate;
+};
 template <class T>
-concept HasSubframe = requires(T t) { t.subframe_cell; };
+concept HasSubframe = requires(T t) {
+  t.subframe_cell;
+};
 template <class T>
-concept HasLightSize = requires(T t) { t.light_size; };
+concept HasLightSize = requires(T t) {
+  t.light_size;
+};
+
+template <class T>
+concept HasContactShadows = requires(T t) {
+  t.contact_shadows;
+};
+template <class T>
+concept HasPagePool = requires(T t) {
+  t.page_pool_mib;
+};
 
 static_assert(!HasAccumulate<ShadowMapSettings> && !HasSubframe<ShadowMapSettings> &&
-              !HasLightSize<ShadowMapSettings>);
+              !HasLightSize<ShadowMapSettings> && !HasContactShadows<ShadowMapSettings> &&
+              !HasPagePool<ShadowMapSettings>);
 static_assert(HasAccumulate<ShadowSettings> && HasSubframe<ShadowSettings> &&
               HasLightSize<ShadowSettings>);
 
