@@ -15,10 +15,10 @@
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
 #include "penumbra/settings.hpp"
+#include "penumbra/shadow/virtual_clipmap.hpp"
 #include "penumbra/shared/gpu_types.h"
 #include "render/gbuffer_pass.hpp"
 #include "render/gpu_scene.hpp"
-#include "penumbra/shadow/virtual_clipmap.hpp"
 
 namespace penumbra {
 

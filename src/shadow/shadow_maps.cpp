@@ -83,9 +83,9 @@ struct ShadowMaps::Impl {
   // The engine's generation of the geometry last fitted to, when it gave one
   // (casters_hash then unset).
   std::optional<std::uint64_t> casters_generation;
-  std::vector<CasterBounds> bounds;           // the bounds form's boxes, by id
-  std::vector<int> moved;                     // ids marked by moved()
-  std::vector<glm::vec3> box_corners;         // the boxes as triangles, for the fit
+  std::vector<CasterBounds> bounds;    // the bounds form's boxes, by id
+  std::vector<int> moved;              // ids marked by moved()
+  std::vector<glm::vec3> box_corners;  // the boxes as triangles, for the fit
   std::vector<std::uint32_t> box_indices;
   std::optional<ShadowMapSettings> filtered_for;  // the settings the filtered maps hold
   int views_drawn = 0;

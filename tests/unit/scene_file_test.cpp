@@ -49,10 +49,10 @@ TEST(SceneFile, ReadsEachLightsSourceSize) {
   EXPECT_FLOAT_EQ(s.lights[1].light_size, 2.5f);
   EXPECT_FLOAT_EQ(s.lights[2].sun_angle, 0.53f);
   EXPECT_FLOAT_EQ(s.lights[3].light_size, Light{}.light_size);
-  for (const char* bad : {R"({"type": "spot", "light_size": -1})",
-                          R"({"type": "spot", "sun_angle": 1})",
-                          R"({"type": "directional", "light_size": 1})",
-                          R"({"type": "directional", "sun_angle": 90})"}) {
+  for (const char* bad :
+       {R"({"type": "spot", "light_size": -1})", R"({"type": "spot", "sun_angle": 1})",
+        R"({"type": "directional", "light_size": 1})",
+        R"({"type": "directional", "sun_angle": 90})"}) {
     const std::string json = std::string(R"({"lights": [)") + bad + "], " + plane;
     try {
       (void)parse_scene_json(json, "bad.json");
