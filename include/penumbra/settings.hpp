@@ -240,6 +240,16 @@ struct ShadowMapSettings {
   // reads the scene from its own face (no seams between faces).
   bool guard_band = true;
 
+  // The first directional light: cascades, or virtual shadow maps (a
+  // clipmap of 16,384^2-texel levels in 128^2 pages, only the pages the
+  // camera's pixels read resident in a page pool; hard and pcf). Virtual
+  // maps mark their pages from the camera's depth buffer, which
+  // ShadowMaps::update() then takes (CameraDepthBuffer).
+  ShadowMapKind shadow_maps = ShadowMapKind::Cascades;
+  // Virtual shadow maps: the physical page pool's size in MiB of 32-bit
+  // depth (64 KiB a page). 48: the memory of 3 cascades of 2048^2.
+  int page_pool_mib = 48;
+
   bool operator==(const ShadowMapSettings&) const = default;
 };
 
@@ -272,14 +282,6 @@ class SourceSizeOverride {
 // only the renderer does with them (accumulated soft shadows, source
 // sizes set for every light at once).
 struct ShadowSettings : ShadowMapSettings {
-  // Directional lights: cascades, or virtual shadow maps (a clipmap of
-  // 16,384^2-texel levels in 128^2 pages, resident in a page pool). Virtual
-  // maps are penumbra's renderer's; ShadowMaps draws cascades.
-  ShadowMapKind shadow_maps = ShadowMapKind::Cascades;
-  // Virtual shadow maps: the physical page pool's size in MiB of 32-bit
-  // depth (64 KiB a page). 48: the memory of 3 cascades of 2048^2.
-  int page_pool_mib = 48;
-
   // Screen-space contact shadows, with every technique, in penumbra's
   // renderer (ShadowMaps' lookup has no camera depth buffer to march): from
   // each lit pixel, contact_shadow_steps dithered steps through the
@@ -511,7 +513,7 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowF
 // GL 4.5 device allows an array texture.
 inline constexpr int kMaxPagePoolMib = 128;
 
-inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 8> kShadowIntParams{{
+inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 9> kShadowIntParams{{
     {"shadow-map-size", "shadow-map width and height in texels", 16, kMaxMapSize,
      &ShadowMapSettings::map_size, OptionGroup::Technique},
     {"shadow-msaa",
@@ -536,6 +538,10 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, int>, 8> kShadowIntP
      "--shadow-mips: most anisotropic filtering along the pixel's footprint (up to the device's "
      "limit; llvmpipe: 1); 1: trilinear only",
      1, 16, &ShadowMapSettings::shadow_anisotropy, OptionGroup::Filter},
+    {"page-pool-mib",
+     "--shadow-maps virtual: the physical page pool in MiB (64 KiB of 32-bit depth a 128^2 "
+     "page; 48 is the memory of 3 cascades of 2048^2)",
+     1, kMaxPagePoolMib, &ShadowMapSettings::page_pool_mib, OptionGroup::Lights},
 }};
 
 inline constexpr int kMaxAccumulate = 4096;
@@ -551,12 +557,8 @@ inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kAccumulatePar
 }};
 
 // The renderer's own shadow parameters, which ShadowMaps does not take:
-// virtual shadow maps and screen-space contact shadows.
-inline constexpr std::array<NumericParam<ShadowSettings, int>, 2> kRendererShadowIntParams{{
-    {"page-pool-mib",
-     "--shadow-maps virtual: the physical page pool in MiB (64 KiB of 32-bit depth a 128^2 "
-     "page; 48 is the memory of 3 cascades of 2048^2)",
-     1, kMaxPagePoolMib, &ShadowSettings::page_pool_mib, OptionGroup::Lights},
+// screen-space contact shadows.
+inline constexpr std::array<NumericParam<ShadowSettings, int>, 1> kRendererShadowIntParams{{
     {"contact-shadow-steps", "--contact-shadows: steps of each pixel's march towards the light", 1,
      kMaxContactShadowSteps, &ShadowSettings::contact_shadow_steps, OptionGroup::Technique},
 }};

@@ -36,7 +36,7 @@ inline constexpr int kMaxCascades = MAX_CASCADES;
 // clear of its own. Give the same value to ShadowMaps' constructor and to
 // shadow_lookup_glsl(), which declares the block, the samplers and the
 // buffer at exactly these bindings (and defines them as the GLSL macros
-// named beside each field, for the engine's shader to read). The four
+// named beside each field, for the engine's shader to read). The six
 // texture units must differ; each binding must be below the context's
 // limit (GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, GL_MAX_UNIFORM_BUFFER_BINDINGS,
 // GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS; ShadowMaps checks them).
@@ -59,6 +59,16 @@ struct ShadowBindings {
   // Shader storage buffer binding of PCF's and PCSS's sample set
   // (PENUMBRA_POISSON_BINDING).
   unsigned poisson_buffer = 2;
+  // Virtual shadow maps (ShadowMapKind::Virtual): the uniform buffer
+  // binding of their block (PENUMBRA_SHADOW_VIRTUAL_BLOCK_BINDING, bound
+  // by bind() whatever the kind: it says which light has virtual maps), and
+  // the texture units of the page table, a usampler2DArray
+  // (PENUMBRA_SHADOW_PAGE_TABLE_UNIT), and of the page pool, a
+  // sampler2DArray (PENUMBRA_SHADOW_PAGE_POOL_UNIT), both read texel by
+  // texel. ShadowMaps::render() binds the block at the binding too.
+  unsigned virtual_block = 8;
+  unsigned page_table_unit = 10;
+  unsigned page_pool_unit = 11;
 
   friend bool operator==(const ShadowBindings&, const ShadowBindings&) = default;
 };

@@ -28,6 +28,7 @@
 #include <string>
 #include <string_view>
 
+#include "camera_depth_buffer.hpp"
 #include "light.hpp"
 #include "position_span.hpp"
 #include "settings.hpp"
@@ -51,11 +52,15 @@ struct CasterGeometry {
   std::optional<std::uint64_t> generation = std::nullopt;
 };
 
-// One shadow view as the caster callback sees it.
+// One shadow view as the caster callback sees it: a view of the depth
+// array, or with virtual maps one page of the light's clipmap.
 struct CasterView {
-  int index = 0;                    // the view: the layer of the depth array
-  int light = 0;                    // the light it belongs to
-  glm::mat4 view_projection{1.0f};  // world -> clip, for the engine's own culling
+  int index = 0;  // the view: the layer of the depth array (-1: a virtual page)
+  int light = 0;  // the light it belongs to
+  // world -> clip, for the engine's own culling: the view's, or the
+  // virtual page's (an orthographic box over the page's 128^2 texels:
+  // casters outside it need not be drawn).
+  glm::mat4 view_projection{1.0f};
   // penumbra's caster program, bound: its vertex shader reads the position
   // at attribute location 0 and places it in the world with the mat4
   // uniform "model" at location kModelLocation (identity until the
@@ -63,16 +68,17 @@ struct CasterView {
   // engine's glUniformMatrix4fv(glGetUniformLocation(program, "model"), ...).
   std::uint32_t program = 0;                         // a GLuint
   static constexpr std::int32_t kModelLocation = 1;  // a GLint
+  int page = -1;  // a virtual page: its index among the pages render() draws, else -1
   // Places the next draws' vertices in the world (object -> world).
   void set_model(const glm::mat4& model) const;
 };
 
 // Draws the engine's casters for one view: binds its vertex arrays (and
 // sets the model matrix per object) and issues its draws. The program,
-// the framebuffer (the view's layer, cleared) and the viewport are set;
-// the callback must not change them. Called only for the views whose maps
-// must be drawn again (render()); it draws every caster the view sees,
-// static ones included.
+// the framebuffer (the view's layer, or the virtual page's, cleared) and
+// the viewport are set; the callback must not change them. Called only
+// for the views (and virtual pages) whose maps must be drawn again
+// (render()); it draws every caster the view sees, static ones included.
 using DrawCasters = std::function<void(const CasterView&)>;
 
 // What render() and bind() do with the engine's GL state. Full (the
@@ -115,14 +121,25 @@ class ShadowMaps {
   // (Light::light_size, sun_angle) sets its penumbrae. Throws UsageError
   // for settings or a light's source size out of range (validate()), or
   // too many lights or views.
+  //
+  // settings.shadow_maps == ShadowMapKind::Virtual: the first directional
+  // light's shadow comes from virtual maps (docs/library.md, "Virtual
+  // shadow maps"), a clipmap fitted to `camera` and `depth`, the engine's
+  // depth buffer of this frame's camera, whose pixels render() marks the
+  // pages from (`depth.texture` must hold the frame's depth when render()
+  // runs; its size, projection and depth convention are read here).
+  // Throws UsageError when virtual maps are asked for without a depth
+  // buffer.
   void update(std::span<const Light> lights, const CameraFrustum& camera,
-              const CasterGeometry& casters, const ShadowMapSettings& settings);
+              const CasterGeometry& casters, const ShadowMapSettings& settings,
+              const CameraDepthBuffer& depth = {});
   // The same with the casters' world-space bounding boxes, one per object
   // (its index is the caster's id): the views are fitted to the boxes, and
   // a caster whose box changed since the last update() has the views that
   // see it (before or after) drawn again, and no other.
   void update(std::span<const Light> lights, const CameraFrustum& camera,
-              std::span<const CasterBounds> casters, const ShadowMapSettings& settings);
+              std::span<const CasterBounds> casters, const ShadowMapSettings& settings,
+              const CameraDepthBuffer& depth = {});
   // Caster `id` of the bounds form changed inside an unchanged box (it
   // turned, or its mesh changed): the views that see it are drawn again at
   // the next update() and render(). Throws UsageError for an id the last
@@ -144,10 +161,20 @@ class ShadowMaps {
   // lower-left / 0..1, depth range 0..1; the callback sees them so) and,
   // with StateRestore::Full, leaves every piece of GL state it touches as
   // it found it: the table in docs/library.md ("GL state") lists them.
+  //
+  // With virtual maps it also, every frame, marks the pages the depth
+  // buffer's pixels read, allocates them in the page pool and lists those
+  // to draw (compute passes; pages cached from earlier frames are not
+  // drawn again), reads that list back (a few bytes: the one wait of the
+  // frame), and calls draw() once per listed page (CasterView::page)
+  // into its pool page.
   void render(const DrawCasters& draw);
 
   // Binds what penumbra_shadow() reads, at bindings(), and leaves it
-  // bound: the block (uniform buffer .block), the depth maps (units
+  // bound: the block (uniform buffer .block), the virtual maps' block,
+  // page table and pool (.virtual_block, .page_table_unit,
+  // .page_pool_unit; a block saying no light has them when none has),
+  // the depth maps (units
   // .depth_unit, nearest, and .compare_unit, with a comparison sampler),
   // the filtered maps (unit .filtered_unit, bilinear), the summed-area
   // tables (unit .sat_unit; no texture without Filter::Sat) and PCF's
@@ -172,6 +199,12 @@ class ShadowMaps {
   [[nodiscard]] int view_count() const;
   // The views the last render() drew (0: every map was cached).
   [[nodiscard]] int views_drawn() const;
+  // The virtual pages the last render() drew (0: none, or every page the
+  // camera reads was cached), and the pages resident in the pool then.
+  [[nodiscard]] int pages_drawn() const;
+  [[nodiscard]] int pages_resident() const;
+  // The light with virtual maps in the last update() (-1: none).
+  [[nodiscard]] int virtual_light() const;
   // The glGet* and glIsEnabled* calls the last render() made to save the
   // engine's state (0 when nothing was drawn or filtered, or with
   // StateRestore::None).

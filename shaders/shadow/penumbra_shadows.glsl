@@ -17,7 +17,9 @@
 // The light's view is picked as penumbra's renderer picks it
 // (view_select.glsl): a spot light's one view, a point light's cube face,
 // a directional light's cascade along the camera, blended into the next
-// near each cascade's end. The tests per technique are the shared ones
+// near each cascade's end, or for the first directional light with
+// virtual maps (hard, pcf) the finest clipmap level with a texel per
+// pixel, through its page table (virtual_shadow.glsl). The tests per technique are the shared ones
 // under shaders/shadow/ (hard.glsl, pcf.glsl, pcss.glsl,
 // backprojection.glsl, filtered.glsl with vsm.glsl, esm.glsl, evsm.glsl,
 // msm.glsl; filter/sat.glsl), with the biases of lookup.glsl.
@@ -39,6 +41,13 @@
 #include "pcf.glsl"
 #include "pcss.glsl"
 #include "backprojection.glsl"
+// A directional light's virtual shadow maps (ShadowMapKind::Virtual),
+// read through their page table at the engine's bindings.
+#define VIRTUAL_BLOCK_BINDING PENUMBRA_SHADOW_VIRTUAL_BLOCK_BINDING
+#define VIRTUAL_PAGE_TABLE_UNIT PENUMBRA_SHADOW_PAGE_TABLE_UNIT
+#define VIRTUAL_POOL_UNIT PENUMBRA_SHADOW_PAGE_POOL_UNIT
+#define VIRTUAL_NO_TEXEL_DENSITY
+#include "virtual_shadow.glsl"
 
 // The binding points are the engine's (penumbra::ShadowBindings):
 // shadow_lookup_glsl() defines these macros before this text.
@@ -118,6 +127,12 @@ float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, v
   float noise = interleaved_gradient_noise(floor(pixel));
   float angle = 6.28318530718 * noise;
   vec2 rotation = vec2(cos(angle), sin(angle));
+  // The light with virtual maps (hard and pcf) reads them, not cascades.
+  if (light_index == virtual_shadow.counts.x &&
+      (technique == TECHNIQUE_HARD || technique == TECHNIQUE_PCF)) {
+    return virtual_shadow_factor_of(technique, penumbra_block.params, light, world, normal,
+                                    rotation);
+  }
   float camera_depth = -(penumbra_block.camera_view * vec4(world, 1.0)).z;
   ViewSelection selected = select_shadow_view(light, world, camera_depth);
   // One call site in a loop over the one or two views: the technique's

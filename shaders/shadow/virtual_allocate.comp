@@ -5,8 +5,9 @@
 //  1 (the same threads): gives each requested page that has none a pool
 //    page from the top of the free list (an atomic counter picks which),
 //    and lists it, and each resident page marked dirty, for rendering;
-//  2 (one thread): pops what phase 1 took from the free list, and writes
-//    the number of listed pages into the indirect draws' instance counts.
+//  2 (one thread): pops what phase 1 took from the free list, writes the
+//    number of listed pages into the clearing draw's instance count, and
+//    zeroes the caster draws' (virtual_cull.comp counts them).
 // No read-back: the GPU's own counters drive the draws.
 #include "../shared/bindings.h"
 #include "../shared/gpu_types.h"
@@ -29,7 +30,7 @@ layout(std430, binding = BINDING_VIRTUAL_RENDER_LIST_SSBO) buffer RenderList {
   ivec4 render_list[];
 };
 // [0, 4): the clearing draw (DrawArraysIndirectCommand); then one
-// DrawElementsIndirectCommand (5 words) per batch of casters.
+// DrawElementsIndirectCommand (5 words) per caster draw.
 layout(std430, binding = BINDING_VIRTUAL_COMMANDS_SSBO) buffer Commands { uint commands[]; };
 
 // The world page slot `slot` of level l stands for, with its first page at `origin`.
@@ -49,7 +50,7 @@ void main() {
     free_count -= popped;
     taken = 0u;
     commands[1] = rendered;
-    for (int b = 0; b < virtual_shadow.counts.w; ++b) commands[4 + 5 * b + 1] = rendered;
+    for (int b = 0; b < virtual_shadow.counts.w; ++b) commands[4 + 5 * b + 1] = 0u;
     return;
   }
   ivec2 slot = ivec2(gl_GlobalInvocationID.xy);

@@ -5,7 +5,12 @@
 // they agree on every page.
 #pragma once
 
-layout(std140, binding = BINDING_VIRTUAL_UBO) uniform VirtualShadowBlock {
+// The block's binding: penumbra's own, or the engine's in the lookup it
+// includes (penumbra_shadows.glsl defines it from ShadowBindings).
+#ifndef VIRTUAL_BLOCK_BINDING
+#define VIRTUAL_BLOCK_BINDING BINDING_VIRTUAL_UBO
+#endif
+layout(std140, binding = VIRTUAL_BLOCK_BINDING) uniform VirtualShadowBlock {
   GpuVirtualShadow virtual_shadow;
 };
 
@@ -30,4 +35,17 @@ ivec2 virtual_page_slot(ivec2 world_page) {
 // The slot of page `page` (0..127 from the level's first) of level `level`.
 ivec2 virtual_level_slot(int level, ivec2 page) {
   return virtual_page_slot(virtual_shadow.origins[level].xy + page);
+}
+
+// The clip position in world page `page` of a level seen through `view`
+// of the point at light-view position `p` (view.view * world): the page's
+// square in light space is world page * page size, a power of two times
+// an integer, so every page meets its neighbours exactly; the depth is
+// the level's z-bar, as a cascade's (caster_position.glsl): orthographic,
+// so the rasterizer's depth is z-bar itself.
+vec4 virtual_page_clip_position(GpuShadowView view, ivec2 page, vec3 p) {
+  float page_size = view.depth_range.z * float(VIRTUAL_PAGE_TEXELS);
+  vec2 local = (p.xy - vec2(page) * page_size) / page_size;
+  float z_bar = (-p.z - view.depth_range.x) / (view.depth_range.y - view.depth_range.x);
+  return vec4(local * 2.0 - 1.0, z_bar, 1.0);
 }

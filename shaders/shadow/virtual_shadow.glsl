@@ -5,10 +5,18 @@
 #pragma once
 #include "virtual_lookup.glsl"
 
+// The units: penumbra's own, or the engine's in the lookup it includes
+// (penumbra_shadows.glsl defines them from ShadowBindings).
+#ifndef VIRTUAL_PAGE_TABLE_UNIT
+#define VIRTUAL_PAGE_TABLE_UNIT UNIT_VIRTUAL_PAGE_TABLE
+#endif
+#ifndef VIRTUAL_POOL_UNIT
+#define VIRTUAL_POOL_UNIT UNIT_VIRTUAL_POOL
+#endif
 // One layer per level of 128 x 128 entries (PAGE_* flags, pool page).
-layout(binding = UNIT_VIRTUAL_PAGE_TABLE) uniform usampler2DArray virtual_page_table;
+layout(binding = VIRTUAL_PAGE_TABLE_UNIT) uniform usampler2DArray virtual_page_table;
 // The physical pages: z-bar of their level, one 128^2 layer each.
-layout(binding = UNIT_VIRTUAL_POOL) uniform sampler2DArray virtual_pool;
+layout(binding = VIRTUAL_POOL_UNIT) uniform sampler2DArray virtual_pool;
 
 uint virtual_page_entry(int level, ivec2 page) {
   return texelFetch(virtual_page_table, ivec3(virtual_level_slot(level, page), level), 0).r;
@@ -49,6 +57,7 @@ int virtual_resident_level(vec3 world) {
   return -1;
 }
 
+#ifndef VIRTUAL_NO_TEXEL_DENSITY
 // The texel a virtual map's lookup reads at `world` (texel_density.glsl's
 // shading_texel() for the light with virtual maps): its resident level's.
 ShadingTexel virtual_shading_texel(vec3 world) {
@@ -57,6 +66,7 @@ ShadingTexel virtual_shading_texel(vec3 world) {
   GpuShadowView view = virtual_shadow.levels[level];
   return ShadingTexel(shadow_texel_world(view, light_linear_depth(view, world)), true);
 }
+#endif
 
 // The hard test at the texel under uv; a missing page is lit.
 float virtual_hard(int level, vec2 uv, float depth) {
@@ -98,23 +108,28 @@ float virtual_pcf(int level, GpuShadowView view, OccluderCone cone, vec2 uv, flo
 }
 
 // Fraction of the light's light reaching the point through its virtual
-// maps, for SHADOW_TECHNIQUE hard or pcf.
-float virtual_shadow_factor(GpuShadow params, GpuLight light, vec3 world, vec3 normal,
-                            vec2 rotation) {
+// maps, for `technique` hard or pcf (TECHNIQUE_*; the engine's lookup
+// chooses it at run time).
+float virtual_shadow_factor_of(int technique, GpuShadow params, GpuLight light, vec3 world,
+                               vec3 normal, vec2 rotation) {
   int level = virtual_resident_level(world);
   if (level < 0) return 1.0;
   GpuShadowView view = virtual_shadow.levels[level];
   ShadowLookup s = shadow_lookup(view, world, normal, params.normal_offset);
   if (!s.inside) return 1.0;
   float z = s.depth - shadow_bias(params, s, normal, direction_to_light(light, world), 0.0);
-#if SHADOW_TECHNIQUE == TECHNIQUE_PCF
-  if (params.pcf_width <= 0.0) return virtual_hard(level, s.uv, z);
+  if (technique != TECHNIQUE_PCF || params.pcf_width <= 0.0) return virtual_hard(level, s.uv, z);
   if (params.pcf_samples == 1) return virtual_bilinear_compare(level, s.uv, z);
   vec2 gradient = receiver_depth_gradient(view, s, normal, params.max_slope);
   OccluderCone cone = occluder_cone(light, view, s.position, PCF_MIN_CONE_TAN);
   return virtual_pcf(level, view, cone, s.uv, z, gradient, params.pcf_width, params.pcf_samples,
                      rotation);
-#else
-  return virtual_hard(level, s.uv, z);
-#endif
 }
+
+#ifdef SHADOW_TECHNIQUE
+// The same for SHADOW_TECHNIQUE (penumbra's lighting pass).
+float virtual_shadow_factor(GpuShadow params, GpuLight light, vec3 world, vec3 normal,
+                            vec2 rotation) {
+  return virtual_shadow_factor_of(SHADOW_TECHNIQUE, params, light, world, normal, rotation);
+}
+#endif

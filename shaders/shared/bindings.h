@@ -18,13 +18,17 @@
 #define BINDING_POISSON_SSBO 2
 #define BINDING_SCENE_VERTICES_SSBO 3  // the scene's vertices (GpuScene), read by triangle
 #define BINDING_SCENE_INDICES_SSBO 4   // and its indices, three per triangle
-// Virtual shadow maps (src/render/virtual_shadow_pass.hpp): the page
+// Virtual shadow maps (penumbra/shadow/virtual_shadow_pass.hpp): the page
 // counters (VirtualPageCounters), the free list of pool pages, the list of
 // pages to render, and the indirect draw commands.
 #define BINDING_VIRTUAL_COUNTERS_SSBO 5
 #define BINDING_VIRTUAL_FREE_LIST_SSBO 6
 #define BINDING_VIRTUAL_RENDER_LIST_SSBO 7
 #define BINDING_VIRTUAL_COMMANDS_SSBO 8
+// Per-page caster culling: each draw's world bounds (two vec4), and the
+// listed pages each draw covers (pool pages x draws entries).
+#define BINDING_VIRTUAL_DRAW_BOUNDS_SSBO 9
+#define BINDING_VIRTUAL_DRAW_PAGES_SSBO 10
 // The vertices' layout in that buffer, in floats (src/scene/mesh.hpp:
 // Vertex, whose offsets src/render/gpu_scene.cpp checks against these).
 #define SCENE_VERTEX_FLOATS 10
@@ -57,6 +61,7 @@
 
 // Uniform locations
 #define LOCATION_FIRST_INDEX 0  // GpuScene::draw: the batch's first index, for gl_PrimitiveID
+#define LOCATION_VIRTUAL_DRAW 5  // virtual_page.vert: the caster draw, for its pages
 
 // Image units (compute)
 #define IMAGE_OUTPUT 0

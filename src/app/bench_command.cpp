@@ -258,21 +258,25 @@ constexpr float kOrbitDegrees = 1.0f;
 void print_orbit(const std::vector<VirtualOrbitFrame>& orbit) {
   std::printf("  virtual pages, camera orbiting %.0f degree a frame (pool %d pages):\n",
               static_cast<double>(kOrbitDegrees), orbit.empty() ? 0 : orbit.front().pool_pages);
-  std::printf("  %-6s %10s %10s %9s %10s\n", "frame", "allocated", "rendered", "rendered%",
-              "pool used%");
+  std::printf("  %-6s %10s %10s %9s %10s %11s %9s\n", "frame", "allocated", "rendered", "rendered%",
+              "pool used%", "page draws", "unculled");
   for (std::size_t f = 0; f < orbit.size(); ++f) {
     const VirtualOrbitFrame& o = orbit[f];
-    std::printf("  %-6zu %10d %10d %8.1f%% %9.1f%%\n", f, o.resident, o.rendered,
+    std::printf("  %-6zu %10d %10d %8.1f%% %9.1f%% %11d %9d\n", f, o.resident, o.rendered,
                 o.resident > 0 ? 100.0 * o.rendered / o.resident : 0.0,
-                o.pool_pages > 0 ? 100.0 * o.resident / o.pool_pages : 0.0);
+                o.pool_pages > 0 ? 100.0 * o.resident / o.pool_pages : 0.0, o.page_draws,
+                o.unculled_page_draws);
   }
 }
 
 nlohmann::json orbit_json(const std::vector<VirtualOrbitFrame>& orbit) {
   nlohmann::json frames = nlohmann::json::array();
   for (const VirtualOrbitFrame& o : orbit) {
-    frames.push_back(
-        {{"allocated", o.resident}, {"rendered", o.rendered}, {"pool_pages", o.pool_pages}});
+    frames.push_back({{"allocated", o.resident},
+                      {"rendered", o.rendered},
+                      {"pool_pages", o.pool_pages},
+                      {"page_draws", o.page_draws},
+                      {"unculled_page_draws", o.unculled_page_draws}});
   }
   return {{"degrees_per_frame", kOrbitDegrees}, {"frames", frames}};
 }

@@ -36,13 +36,6 @@ void validate(const ShadowSettings& settings) {
   for (const SourceSizeParam& p : kSourceSizeParams) {
     check_range<float>(p.name, settings.*(p.override_field), p.min, p.max);
   }
-  if (settings.shadow_maps == ShadowMapKind::Virtual &&
-      !supports_virtual_maps(settings.technique)) {
-    throw UsageError(
-        "--shadow-maps virtual needs --technique hard or pcf: the other techniques filter or "
-        "search their maps as whole textures (moments blurred or summed across page borders), "
-        "so they use --shadow-maps cascades");
-  }
 }
 
 void validate(const Light& light) {
@@ -54,6 +47,13 @@ void validate(const Light& light) {
 void validate(const ShadowMapSettings& settings) {
   check_ranges(settings, kShadowFloatParams);
   check_ranges(settings, kShadowIntParams);
+  if (settings.shadow_maps == ShadowMapKind::Virtual &&
+      !supports_virtual_maps(settings.technique)) {
+    throw UsageError(
+        "--shadow-maps virtual needs --technique hard or pcf: the other techniques filter or "
+        "search their maps as whole textures (moments blurred or summed across page borders), "
+        "so they use --shadow-maps cascades");
+  }
   if ((settings.shadow_msaa & (settings.shadow_msaa - 1)) != 0) {
     throw UsageError("--shadow-msaa must be 1, 2, 4 or 8 (got " +
                      std::to_string(settings.shadow_msaa) + ")");

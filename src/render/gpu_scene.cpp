@@ -115,7 +115,8 @@ GpuMaterial gpu_material(const Material& m) {
 }
 
 GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
-                   std::int64_t max_storage_block_bytes)
+                   std::int64_t max_storage_block_bytes,
+                   std::span<const std::size_t> shape_first_vertex)
     : vertices_(mesh.vertices.size() * sizeof(Vertex), mesh.vertices.data(), true,
                 "scene vertices"),
       vao_("scene"),
@@ -201,8 +202,27 @@ GpuScene::GpuScene(const Scene& scene, const TriangleMesh& mesh,
       at += 3;
     }
   }
-  indices_ = gl::Buffer::from(std::span<const std::uint32_t>(one_batch ? mesh.indices : ordered),
-                              "scene indices");
+  const std::vector<std::uint32_t>& drawn = one_batch ? mesh.indices : ordered;
+  indices_ = gl::Buffer::from(std::span<const std::uint32_t>(drawn), "scene indices");
+  // One draw per run of a batch's triangles of one shape (the mesh holds
+  // the shapes one after another, and a batch keeps the mesh's order).
+  const auto shape_of = [&](std::uint32_t vertex) -> std::size_t {
+    if (shape_first_vertex.size() < 2) return 0;
+    const auto next = std::upper_bound(shape_first_vertex.begin(), shape_first_vertex.end(),
+                                       static_cast<std::size_t>(vertex));
+    return static_cast<std::size_t>(next - shape_first_vertex.begin()) - 1;
+  };
+  for (std::size_t b = 0; b < batches_.size(); ++b) {
+    const Batch& batch = batches_[b];
+    for (std::size_t i = batch.first_index; i < batch.first_index + batch.index_count; i += 3) {
+      const std::size_t shape = shape_of(drawn[i]);
+      if (draws_.empty() || draws_.back().batch != b || draws_.back().shape != shape) {
+        draws_.push_back({.batch = b, .first_index = i, .index_count = 0, .shape = shape});
+      }
+      draws_.back().index_count += 3;
+    }
+  }
+  draw_indices_ = drawn;
   // Batch b uses samplers_[b] and the texture of its key.
   for (const auto& [key, b] : batch_index) {
     batches_[b].texture = &textures_[std::get<0>(key)];
@@ -247,14 +267,19 @@ bool GpuScene::bind_batch(const Batch& batch, SurfaceSet set) {
   return true;
 }
 
-void GpuScene::draw_indirect(SurfaceSet set, std::size_t offset) const {
+void GpuScene::draw_indirect(SurfaceSet set, std::size_t offset, GLint draw_location) const {
   glBindVertexArray(vao_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_MATERIALS_SSBO, materials_.id());
-  for (std::size_t b = 0; b < batches_.size(); ++b) {
-    const Batch& batch = batches_[b];
-    if (!bind_batch(batch, set)) continue;
+  std::size_t bound = batches_.size();
+  for (std::size_t d = 0; d < draws_.size(); ++d) {
+    const Batch& batch = batches_[draws_[d].batch];
+    if (draws_[d].batch != bound) {
+      if (!bind_batch(batch, set)) continue;
+      bound = draws_[d].batch;
+    }
+    if (draw_location >= 0) glUniform1i(draw_location, static_cast<GLint>(d));
     glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                           reinterpret_cast<const void*>(offset + b * 5 * sizeof(std::uint32_t)));
+                           reinterpret_cast<const void*>(offset + d * 5 * sizeof(std::uint32_t)));
   }
   glBindSampler(UNIT_BASE_COLOR, 0);
   glBindSampler(UNIT_BASE_ALPHA, 0);
@@ -262,11 +287,25 @@ void GpuScene::draw_indirect(SurfaceSet set, std::size_t offset) const {
 
 std::vector<std::uint32_t> GpuScene::indirect_commands() const {
   std::vector<std::uint32_t> commands;
-  for (const Batch& batch : batches_) {
-    commands.insert(commands.end(), {static_cast<std::uint32_t>(batch.index_count), 0u,
-                                     static_cast<std::uint32_t>(batch.first_index), 0u, 0u});
+  for (const Draw& draw : draws_) {
+    commands.insert(commands.end(), {static_cast<std::uint32_t>(draw.index_count), 0u,
+                                     static_cast<std::uint32_t>(draw.first_index), 0u, 0u});
   }
   return commands;
+}
+
+std::vector<CasterBounds> GpuScene::draw_bounds(const TriangleMesh& mesh) const {
+  std::vector<CasterBounds> bounds;
+  for (const Draw& draw : draws_) {
+    CasterBounds b{glm::vec3(1e30f), glm::vec3(-1e30f)};
+    for (std::size_t i = draw.first_index; i < draw.first_index + draw.index_count; ++i) {
+      const glm::vec3& p = mesh.vertices[draw_indices_[i]].position;
+      b.min = glm::min(b.min, p);
+      b.max = glm::max(b.max, p);
+    }
+    bounds.push_back(b);
+  }
+  return bounds;
 }
 
 void GpuScene::draw(SurfaceSet set, Corners corners) const {

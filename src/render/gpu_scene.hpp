@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "penumbra/gl/resources.hpp"
+#include "penumbra/shadow/caster_bounds.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -37,7 +38,11 @@ class GpuScene {
  public:
   // `max_storage_block_bytes`: the largest storage block the shaders may
   // read (negative: the GPU's MAX_SHADER_STORAGE_BLOCK_SIZE).
-  GpuScene(const Scene& scene, const TriangleMesh& mesh, std::int64_t max_storage_block_bytes = -1);
+  // `shape_first_vertex` (optional: each shape's first vertex in the
+  // mesh, and one past the last) splits the batches into one indirect
+  // draw per shape, which virtual shadow maps cull per page.
+  GpuScene(const Scene& scene, const TriangleMesh& mesh, std::int64_t max_storage_block_bytes = -1,
+           std::span<const std::size_t> shape_first_vertex = {});
 
   // Binds the vertex array, the materials and each batch's texture (units
   // UNIT_BASE_COLOR and UNIT_BASE_ALPHA), and draws the triangles of the set. With
@@ -47,14 +52,21 @@ class GpuScene {
   // LOCATION_FIRST_INDEX.
   enum class Corners { Unread, Read };
   void draw(SurfaceSet set = SurfaceSet::All, Corners corners = Corners::Unread) const;
-  // The same with glDrawElementsIndirect: batch b's command is the
-  // DrawElementsIndirectCommand at byte `offset` + 20 b of the buffer bound
-  // to GL_DRAW_INDIRECT_BUFFER (indirect_commands() gives their first
-  // index and count; the instance count is the caller's).
-  void draw_indirect(SurfaceSet set, std::size_t offset) const;
+  // The same with glDrawElementsIndirect, one draw per batch and shape:
+  // draw d's command is the DrawElementsIndirectCommand at byte `offset` +
+  // 20 d of the buffer bound to GL_DRAW_INDIRECT_BUFFER
+  // (indirect_commands() gives their first index and count; the instance
+  // count is the caller's), and d goes to the bound program's uniform
+  // `draw_location` (unless -1).
+  void draw_indirect(SurfaceSet set, std::size_t offset, GLint draw_location = -1) const;
   // One DrawElementsIndirectCommand {count, instance count 0, first index,
-  // base vertex 0, base instance 0} per batch, in draw_indirect()'s order.
+  // base vertex 0, base instance 0} per draw, in draw_indirect()'s order.
   [[nodiscard]] std::vector<std::uint32_t> indirect_commands() const;
+  // Each indirect draw's world bounds, as the mesh was given (or last
+  // updated), and the shape it draws.
+  [[nodiscard]] std::vector<CasterBounds> draw_bounds(const TriangleMesh& mesh) const;
+  [[nodiscard]] std::size_t draw_shape(std::size_t draw) const { return draws_[draw].shape; }
+  [[nodiscard]] std::size_t draw_count() const { return draws_.size(); }
   // Replaces vertices [first, first + vertices.size()) (a shape moved).
   void update_vertices(std::size_t first, std::span<const Vertex> vertices);
   [[nodiscard]] std::size_t triangle_count() const { return index_count_ / 3; }
@@ -76,6 +88,15 @@ class GpuScene {
   };
   // Binds a batch's textures when `set` draws it; false: it draws nothing.
   static bool bind_batch(const Batch& batch, SurfaceSet set);
+  // A batch's triangles of one shape, contiguous in the index buffer.
+  struct Draw {
+    std::size_t batch = 0;
+    std::size_t first_index = 0;
+    std::size_t index_count = 0;
+    std::size_t shape = 0;
+  };
+  std::vector<Draw> draws_;
+  std::vector<std::uint32_t> draw_indices_;  // the index buffer's contents
   gl::Buffer vertices_;
   gl::Buffer indices_;
   gl::Buffer materials_;

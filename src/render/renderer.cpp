@@ -106,7 +106,7 @@ Renderer::Renderer(const Scene& scene)
     : scene_(scene),
       mesh_(build_scene_mesh(scene, &shape_first_vertex_)),
       bounds_(mesh_.bounds()),
-      gpu_scene_(scene_, mesh_),
+      gpu_scene_(scene_, mesh_, -1, shape_first_vertex_),
       frame_ubo_(sizeof(gpu::GpuFrame), nullptr, true, "frame block"),
       lights_ubo_(sizeof(gpu::GpuLight) * MAX_LIGHTS, nullptr, true, "lights block"),
       shadow_ubo_(sizeof(gpu::GpuShadow), nullptr, true, "shadow block"),
@@ -116,6 +116,7 @@ Renderer::Renderer(const Scene& scene)
                          "reference filter weights"),
       poisson_(gl::Buffer::from(std::span<const glm::vec2>(poisson_square_samples()),
                                 "poisson samples")) {
+  virtual_pass_.set_draws(gpu_scene_.indirect_commands(), gpu_scene_.draw_bounds(mesh_));
   // Queried once: a query in the frame loop would stall a GPU's pipeline.
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_size_);
   set_lights(scene_.lights);
@@ -150,6 +151,10 @@ void Renderer::move_shape(std::size_t shape, const glm::vec3& offset) {
   const Bounds after = shape_bounds(shape);
   shadow_cache_.caster_moved({before.min, before.max}, {after.min, after.max});
   virtual_pass_.caster_moved(before.min, before.max, after.min, after.max);
+  const std::vector<CasterBounds> draw_bounds = gpu_scene_.draw_bounds(mesh_);
+  for (std::size_t d = 0; d < draw_bounds.size(); ++d) {
+    if (gpu_scene_.draw_shape(d) == shape) virtual_pass_.set_draw_bounds(d, draw_bounds[d]);
+  }
   bounds_ = mesh_.bounds();
   // Every fit read the old position: the lights' views, the camera's
   // depth range, and the G-buffer drawn from it.
@@ -351,8 +356,16 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     // Marking reads the camera's depth: the G-buffer first.
     ensure_gbuffer(frame, render, profiler);
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
-    virtual_pass_.execute(virtual_light_, scene_.lights[static_cast<std::size_t>(virtual_light_)],
-                          virtual_clipmap_, shadow, gbuffer_pass_, gpu_scene_);
+    // Marked from the G-buffer's reversed-Z depth (render/camera_depth.hpp).
+    const CameraDepthBuffer depth{.texture = gbuffer_pass_.depth().id(),
+                                  .width = render.width,
+                                  .height = render.height,
+                                  .view_projection = frame.projection * frame.view,
+                                  .clip_depth = ClipDepth::ZeroToOne,
+                                  .background_depth = static_cast<float>(CAMERA_FAR_DEPTH)};
+    virtual_pass_.update(virtual_light_, scene_.lights[static_cast<std::size_t>(virtual_light_)],
+                         virtual_clipmap_, shadow, depth);
+    draw_virtual_pages();
     virtual_pass_.bind();
   }
   if (shadows) {
@@ -474,6 +487,25 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     last_ao_ = ao;
     last_shadows_ = shadows;
   }
+}
+
+void Renderer::draw_virtual_pages() {
+  if (!virtual_page_programs_[0]) {
+    for (int cut_outs = 0; cut_outs < 2; ++cut_outs) {
+      virtual_page_programs_[cut_outs] =
+          gl::Program::graphics("shadow/virtual_page.vert", "shadow/shadow_depth.frag",
+                                {{"RADIAL_DEPTH", "0"}, {"CUT_OUTS", cut_outs != 0 ? "1" : "0"}});
+    }
+  }
+  virtual_pass_.begin_pages();
+  virtual_pass_.clear_listed_pages();
+  const std::size_t offset = VirtualShadowPass::draws_offset();
+  virtual_page_programs_[0].use();
+  gpu_scene_.draw_indirect(SurfaceSet::Opaque, offset, LOCATION_VIRTUAL_DRAW);
+  virtual_page_programs_[1].use();
+  gpu_scene_.draw_indirect(SurfaceSet::CutOut, offset, LOCATION_VIRTUAL_DRAW);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+  virtual_pass_.end_pages();
 }
 
 void Renderer::ensure_gbuffer(const gpu::GpuFrame& frame, const RenderSettings& render,

@@ -21,6 +21,7 @@
 #include "penumbra/shadow/shadow_map_pass.hpp"
 #include "penumbra/shadow/shadow_views.hpp"
 #include "penumbra/shadow/view_cache.hpp"
+#include "penumbra/shadow/virtual_shadow_pass.hpp"
 #include "penumbra/shared/bindings.h"
 #include "penumbra/shared/gpu_types.h"
 #include "render/gbuffer_pass.hpp"
@@ -30,7 +31,6 @@
 #include "render/ssao_pass.hpp"
 #include "render/surface_points.hpp"
 #include "render/view_tiling_pass.hpp"
-#include "render/virtual_shadow_pass.hpp"
 #include "scene/mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -212,6 +212,7 @@ class Renderer {
   LightingPass lighting_pass_;
   ViewTilingPass tiling_pass_;
   VirtualShadowPass virtual_pass_;
+  gl::Program virtual_page_programs_[2];  // the scene's casters into the pages: opaque, cut-outs
   VirtualClipmap virtual_clipmap_;
   int virtual_light_ = -1;
   // The kind of maps the shadow views' cache holds (a switch redraws them).
@@ -230,6 +231,9 @@ class Renderer {
   // The lighting pass again on the last frame's inputs, writing VIEW_*
   // define `define` (with the AO of the last render() if asked).
   void shade_as(int define, bool ambient_occlusion);
+  // Draws the scene's casters into the virtual pages the last update of
+  // virtual_pass_ listed, each draw into the pages its bounds cover.
+  void draw_virtual_pages();
   // Each light's views and the camera's depth range are kept and refitted
   // only when what they depend on changes (the geometry: only through
   // move_shape(), which also forgets the caster bounds below).

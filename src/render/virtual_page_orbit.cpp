@@ -21,7 +21,8 @@ std::vector<VirtualOrbitFrame> orbit_virtual_pages(Renderer& renderer, const Ren
     renderer.set_camera(camera);
     renderer.render(render, shadow);
     const VirtualPageStats stats = renderer.virtual_page_stats();
-    result.push_back({stats.resident, stats.rendered, stats.pool_pages});
+    result.push_back({stats.resident, stats.rendered, stats.pool_pages, stats.page_draws,
+                      stats.rendered * renderer.virtual_shadows().draw_count()});
   }
   renderer.set_camera(start);
   return result;

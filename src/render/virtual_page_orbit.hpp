@@ -14,6 +14,10 @@ struct VirtualOrbitFrame {
   int resident = 0;  // pages allocated after the frame
   int rendered = 0;  // pages drawn in it
   int pool_pages = 0;
+  // Caster draws into pages in it (per-page culling), and what drawing
+  // every caster draw into every rendered page would have been.
+  int page_draws = 0;
+  int unculled_page_draws = 0;
 };
 
 // `frames` frames, the first from the scene's camera, each next one turned

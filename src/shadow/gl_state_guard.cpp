@@ -19,8 +19,9 @@ constexpr int kClipDistances = 8;
 }  // namespace
 
 GlStateGuard::GlStateGuard(const GlStateScope& scope)
-    : any_(scope.caster_pass || !scope.texture_units.empty() || !scope.image_units.empty() ||
-           !scope.uniform_buffers.empty() || !scope.storage_buffers.empty()),
+    : any_(scope.caster_pass || !scope.texture_units.empty() || !scope.texture_2d_units.empty() ||
+           !scope.image_units.empty() || !scope.uniform_buffers.empty() ||
+           !scope.storage_buffers.empty()),
       caster_pass_(scope.caster_pass) {
   if (!any_) return;
   const auto get = [this](GLenum pname, GLint* value) {
@@ -67,7 +68,17 @@ GlStateGuard::GlStateGuard(const GlStateScope& scope)
     get(GL_TEXTURE_BINDING_2D_ARRAY, &saved.texture);
     get(GL_SAMPLER_BINDING, &saved.sampler);
   }
-  if (!scope.texture_units.empty()) glActiveTexture(static_cast<GLenum>(active_texture_));
+  for (GLuint unit : scope.texture_2d_units) {
+    TextureUnit& saved = texture_units_.emplace_back();
+    saved.target = GL_TEXTURE_2D;
+    saved.unit = unit;
+    glActiveTexture(GL_TEXTURE0 + unit);
+    get(GL_TEXTURE_BINDING_2D, &saved.texture);
+    get(GL_SAMPLER_BINDING, &saved.sampler);
+  }
+  if (!scope.texture_units.empty() || !scope.texture_2d_units.empty()) {
+    glActiveTexture(static_cast<GLenum>(active_texture_));
+  }
   for (GLuint unit : scope.image_units) {
     ImageUnit& saved = image_units_.emplace_back();
     saved.unit = unit;
@@ -120,7 +131,7 @@ GlStateGuard::~GlStateGuard() {
   }
   for (const TextureUnit& u : texture_units_) {
     glActiveTexture(GL_TEXTURE0 + u.unit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(u.texture));
+    glBindTexture(u.target, static_cast<GLuint>(u.texture));
     glBindSampler(u.unit, static_cast<GLuint>(u.sampler));
   }
   glActiveTexture(static_cast<GLenum>(active_texture_));

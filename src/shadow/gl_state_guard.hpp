@@ -27,6 +27,9 @@ struct GlStateScope {
   // Units whose 2D-array texture and sampler a pass binds (every pass
   // binds 2D arrays only: the state test binds every target on every unit).
   std::span<const GLuint> texture_units;
+  // Units whose 2D texture and sampler a pass binds (virtual maps' marking
+  // reads the camera's depth buffer).
+  std::span<const GLuint> texture_2d_units;
   std::span<const GLuint> image_units;
   std::span<const GLuint> uniform_buffers;  // indexed GL_UNIFORM_BUFFER bindings
   std::span<const GLuint> storage_buffers;  // indexed GL_SHADER_STORAGE_BUFFER bindings
@@ -49,8 +52,9 @@ class GlStateGuard {
 
  private:
   struct TextureUnit {
+    GLenum target = GL_TEXTURE_2D_ARRAY;
     GLuint unit = 0;
-    GLint texture = 0;  // the 2D array
+    GLint texture = 0;  // bound to target
     GLint sampler = 0;
   };
   struct ImageUnit {

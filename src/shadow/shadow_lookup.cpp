@@ -46,15 +46,20 @@ gl::Defines shadow_binding_defines(const ShadowBindings& b) {
           {"PENUMBRA_SHADOW_COMPARE_UNIT", std::to_string(b.compare_unit)},
           {"PENUMBRA_SHADOW_FILTERED_UNIT", std::to_string(b.filtered_unit)},
           {"PENUMBRA_SHADOW_SAT_UNIT", std::to_string(b.sat_unit)},
-          {"PENUMBRA_POISSON_BINDING", std::to_string(b.poisson_buffer)}};
+          {"PENUMBRA_POISSON_BINDING", std::to_string(b.poisson_buffer)},
+          {"PENUMBRA_SHADOW_VIRTUAL_BLOCK_BINDING", std::to_string(b.virtual_block)},
+          {"PENUMBRA_SHADOW_PAGE_TABLE_UNIT", std::to_string(b.page_table_unit)},
+          {"PENUMBRA_SHADOW_PAGE_POOL_UNIT", std::to_string(b.page_pool_unit)}};
 }
 
 void check_distinct_units(const ShadowBindings& b) {
-  const std::array<std::pair<const char*, unsigned>, 4> units = {
+  const std::array<std::pair<const char*, unsigned>, 6> units = {
       {{"depth_unit", b.depth_unit},
        {"compare_unit", b.compare_unit},
        {"filtered_unit", b.filtered_unit},
-       {"sat_unit", b.sat_unit}}};
+       {"sat_unit", b.sat_unit},
+       {"page_table_unit", b.page_table_unit},
+       {"page_pool_unit", b.page_pool_unit}}};
   for (std::size_t i = 0; i < units.size(); ++i) {
     for (std::size_t j = i + 1; j < units.size(); ++j) {
       if (units[i].second == units[j].second) {
@@ -78,10 +83,13 @@ const ShadowBindings& checked_bindings(const ShadowBindings& b) {
   };
   check("block", b.block, GL_MAX_UNIFORM_BUFFER_BINDINGS);
   check("poisson_buffer", b.poisson_buffer, GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS);
+  check("virtual_block", b.virtual_block, GL_MAX_UNIFORM_BUFFER_BINDINGS);
   for (auto [field, unit] : {std::pair{"depth_unit", b.depth_unit},
                              {"compare_unit", b.compare_unit},
                              {"filtered_unit", b.filtered_unit},
-                             {"sat_unit", b.sat_unit}}) {
+                             {"sat_unit", b.sat_unit},
+                             {"page_table_unit", b.page_table_unit},
+                             {"page_pool_unit", b.page_pool_unit}}) {
     check(field, unit, GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS);
   }
   return b;

@@ -29,6 +29,7 @@
 #include "penumbra/shadow/view_cache.hpp"
 #include "shadow/gl_state_guard.hpp"
 #include "shadow/shadow_lookup.hpp"
+#include "shadow/shadow_maps_virtual.hpp"
 
 namespace penumbra {
 
@@ -89,7 +90,13 @@ struct ShadowMaps::Impl {
   std::vector<std::uint32_t> box_indices;
   std::optional<ShadowMapSettings> filtered_for;  // the settings the filtered maps hold
   int views_drawn = 0;
+  int pages_drawn = 0;
   int state_queries = 0;  // the GL state the last render() read
+  // The first directional light's virtual maps (ShadowMapKind::Virtual).
+  ShadowMapsVirtual virtual_maps{bindings};
+  // The stale views less those of the light with virtual maps.
+  std::vector<std::uint8_t> stale_without_virtual;
+  CameraDepthBuffer depth;  // the engine's, given to the last update()
 
   bool bounds_form = false;  // the last update() had caster bounds
 
@@ -181,7 +188,8 @@ ShadowMaps::ShadowMaps(ShadowMaps&&) noexcept = default;
 ShadowMaps& ShadowMaps::operator=(ShadowMaps&&) noexcept = default;
 
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
-                        const CasterGeometry& casters, const ShadowMapSettings& settings) {
+                        const CasterGeometry& casters, const ShadowMapSettings& settings,
+                        const CameraDepthBuffer& depth) {
   check_update(lights, settings);
   Impl& m = live(impl_, "update");
   // The engine's generation when it gives one, else a hash of every vertex.
@@ -191,6 +199,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
   if (!same || m.bounds_form) {
     // No objects to tell apart: every view may see the change.
     m.view_cache.invalidate();
+    m.virtual_maps.invalidate();
     m.fit_inputs.clear();
     m.caster_bounds.clear();
   }
@@ -199,16 +208,19 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
   m.bounds_form = false;
   m.bounds.clear();
   m.moved.clear();
+  m.depth = depth;
   m.update(lights, camera, casters.positions, casters.indices, settings);
 }
 
 void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& camera,
-                        std::span<const CasterBounds> casters, const ShadowMapSettings& settings) {
+                        std::span<const CasterBounds> casters, const ShadowMapSettings& settings,
+                        const CameraDepthBuffer& depth) {
   check_update(lights, settings);
   Impl& m = live(impl_, "update");
   const bool same_objects = m.bounds_form && m.casters_hash && casters.size() == m.bounds.size();
   if (!same_objects) {
     m.view_cache.invalidate();
+    m.virtual_maps.invalidate();
     m.fit_inputs.clear();
     m.caster_bounds.clear();
   } else {
@@ -216,8 +228,10 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
     for (std::size_t id = 0; id < casters.size(); ++id) {
       const bool marked =
           std::find(m.moved.begin(), m.moved.end(), static_cast<int>(id)) != m.moved.end();
-      if (casters[id] != m.bounds[id] || marked)
+      if (casters[id] != m.bounds[id] || marked) {
         m.view_cache.caster_moved(m.bounds[id], casters[id]);
+        m.virtual_maps.caster_moved(m.bounds[id], casters[id]);
+      }
       changed = changed || casters[id] != m.bounds[id];
     }
     // The fit reads the boxes: refitted when one moved.
@@ -232,6 +246,7 @@ void ShadowMaps::update(std::span<const Light> lights, const CameraFrustum& came
   box_triangles(casters, m.box_corners, m.box_indices);
   m.casters_hash = hash_casters(PositionSpan(m.box_corners), m.box_indices);
   m.casters_generation.reset();
+  m.depth = depth;
   m.update(lights, camera, PositionSpan(m.box_corners), m.box_indices, settings);
 }
 
@@ -247,6 +262,7 @@ void ShadowMaps::moved(int caster) {
 void ShadowMaps::invalidate() {
   Impl& m = live(impl_, "invalidate");
   m.view_cache.invalidate();
+  m.virtual_maps.invalidate();
   m.fit_inputs.clear();
   m.caster_bounds.clear();
   m.casters_hash.reset();
@@ -258,6 +274,7 @@ void ShadowMaps::Impl::update(std::span<const Light> lights, const CameraFrustum
                               PositionSpan positions, std::span<const std::uint32_t> indices,
                               const ShadowMapSettings& settings) {
   Impl& m = *this;
+  m.virtual_maps.fit(lights, camera, positions, indices, m.caster_bounds, settings, m.depth);
   m.settings = settings;
   m.fitted.resize(lights.size());
   m.fit_inputs.resize(lights.size());
@@ -299,7 +316,18 @@ void ShadowMaps::render(const DrawCasters& draw) {
   // An array needs at least one layer: with no lights the lookup reads none.
   const std::span<const gpu::GpuShadowView> views(m.block.views,
                                                   static_cast<std::size_t>(view_count));
-  const std::span<const std::uint8_t> stale = m.view_cache.stale_views(views, s.map_size);
+  std::span<const std::uint8_t> stale = m.view_cache.stale_views(views, s.map_size);
+  const int virtual_light = m.virtual_maps.light();
+  if (virtual_light >= 0) {
+    // The light with virtual maps draws none of its cascades.
+    m.stale_without_virtual.assign(stale.begin(), stale.end());
+    m.stale_without_virtual.resize(static_cast<std::size_t>(view_count), 1);
+    for (int v = 0; v < view_count; ++v) {
+      if (m.view_light[static_cast<std::size_t>(v)] == virtual_light)
+        m.stale_without_virtual[static_cast<std::size_t>(v)] = 0;
+    }
+    stale = m.stale_without_virtual;
+  }
   // ShadowMapPass draws (and sets state) for a stale view, or for every
   // layer when there is no view (the cache flags every view of a new array).
   const bool draws = stale.empty() || std::find(stale.begin(), stale.end(), 1) != stale.end();
@@ -320,8 +348,14 @@ void ShadowMaps::render(const DrawCasters& draw) {
   static constexpr std::array<GLuint, 2> kImageUnits{IMAGE_OUTPUT, IMAGE_OUTPUT_2};
   static constexpr std::array<GLuint, 1> kStorageBuffers{BINDING_FILTER_WEIGHTS_SSBO};
   const std::array<GLuint, 1> uniform_buffers{m.bindings.block};
+  // Virtual maps, every frame: marking (the camera's depth at a 2D unit,
+  // the page table at an image unit), allocation and culling (their
+  // storage buffers and block), and the pages' draws.
+  const std::array<GLuint, 2> virtual_uniform_buffers{m.bindings.block, BINDING_VIRTUAL_UBO};
+  std::vector<GLuint> virtual_storage_buffers;
+  const bool virtual_pass = virtual_light >= 0;
   GlStateScope scope;
-  if (restore && draws) {
+  if (restore && (draws || virtual_pass)) {
     scope.caster_pass = true;
     scope.uniform_buffers = uniform_buffers;
   }
@@ -330,6 +364,17 @@ void ShadowMaps::render(const DrawCasters& draw) {
   if (restore && computes) {
     scope.image_units = kImageUnits;
     scope.storage_buffers = kStorageBuffers;
+  }
+  if (restore && virtual_pass) {
+    scope.uniform_buffers = virtual_uniform_buffers;
+    scope.image_units = kImageUnits;
+    const std::span<const GLuint> buffers = ShadowMapsVirtual::storage_buffers();
+    virtual_storage_buffers.assign(buffers.begin(), buffers.end());
+    if (computes)
+      virtual_storage_buffers.insert(virtual_storage_buffers.end(), kStorageBuffers.begin(),
+                                     kStorageBuffers.end());
+    scope.storage_buffers = virtual_storage_buffers;
+    scope.texture_2d_units = ShadowMapsVirtual::texture_2d_units();
   }
   const GlStateGuard saved(scope);
   m.state_queries = saved.queries();
@@ -357,6 +402,7 @@ void ShadowMaps::render(const DrawCasters& draw) {
         },
         views, s.map_size, stale, depth_samples(s));
   }
+  m.pages_drawn = m.virtual_maps.render(draw, s, m.block_buffer.id());
   m.filtered_for = s;
   if (filters) m.filter(s, settings_changed ? std::span<const std::uint8_t>() : stale);
   m.rendered = true;
@@ -415,6 +461,7 @@ void ShadowMaps::bind() const {
   glBindSampler(b.filtered_unit, hierarchy ? 0 : (filtered ? m.bilinear.id() : m.nearest.id()));
   // The tables are read texel by texel (texelFetch: no sampler applies).
   glBindTextureUnit(b.sat_unit, sat ? m.filtered : 0);
+  m.virtual_maps.bind();
 }
 
 const ShadowBindings& ShadowMaps::bindings() const {
@@ -433,6 +480,15 @@ int ShadowMaps::view_count() const {
 }
 int ShadowMaps::views_drawn() const {
   return live(impl_, "views_drawn").views_drawn;
+}
+int ShadowMaps::pages_drawn() const {
+  return live(impl_, "pages_drawn").pages_drawn;
+}
+int ShadowMaps::pages_resident() const {
+  return live(impl_, "pages_resident").virtual_maps.pages_resident();
+}
+int ShadowMaps::virtual_light() const {
+  return live(impl_, "virtual_light").virtual_maps.light();
 }
 int ShadowMaps::state_queries() const {
   return live(impl_, "state_queries").state_queries;

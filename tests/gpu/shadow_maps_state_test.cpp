@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <set>
 #include <string>
@@ -33,7 +34,7 @@ using testing::GpuTest;
 constexpr int kUnits = 16;
 constexpr int kImageUnits = 4;
 constexpr int kUniformBuffers = 10;
-constexpr int kStorageBuffers = 6;
+constexpr int kStorageBuffers = 11;
 // Clip distances, viewports and draw buffers every GL 4.5 device has.
 constexpr GLenum kClipDistances = 8;
 constexpr GLuint kViewports = 2;
@@ -431,16 +432,39 @@ struct Config {
   bool fused;
   const char* name;
   int samples = 1;  // --shadow-msaa
+  bool virtual_maps = false;  // the sun's virtual maps, marked from the engine's depth
 };
 // Depth maps alone; the resolve pass and a Gaussian (storage-buffer
 // weights, image units, the compute input unit); summed-area tables; the
 // multisampled layers (GL_MULTISAMPLE, which the engine turned off).
-constexpr std::array<Config, 4> kConfigs{{
+constexpr std::array<Config, 5> kConfigs{{
     {Technique::Pcf, Filter::Gaussian, true, "pcf"},
     {Technique::Vsm, Filter::Gaussian, false, "vsm gaussian"},
     {Technique::Msm, Filter::Sat, true, "msm sat"},
     {Technique::Vsm, Filter::Gaussian, true, "vsm fused, 4 samples", 4},
+    {Technique::Hard, Filter::Gaussian, true, "hard, virtual maps", 1, true},
 }};
+
+// The engine's camera depth for virtual maps: a plane of constant window
+// depth across its pixels, far enough out to cross the casters' ground.
+struct EngineDepth {
+  gl::Texture texture{gl::TextureInfo{
+      .format = GL_DEPTH_COMPONENT32F, .width = 32, .height = 32, .label = "engine depth"}};
+  EngineDepth() {
+    const float depth = 0.97f;
+    glClearTexImage(texture.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+  }
+  [[nodiscard]] CameraDepthBuffer buffer(const CameraFrustum& camera) const {
+    const glm::mat4 projection =
+        glm::perspective(camera.fov_y, camera.aspect, camera.near_plane, camera.far_plane);
+    return {
+        .texture = texture.id(),
+        .width = 32,
+        .height = 32,
+        .view_projection =
+            projection * glm::lookAt(camera.position, camera.position + camera.forward, camera.up)};
+  }
+};
 
 // render() and bind() under an engine's state that differs from GL's
 // defaults in every respect the contract names: render() leaves all of it
@@ -453,10 +477,15 @@ TEST_F(GpuTest, RenderAndBindLeaveTheEnginesStateAsTheyFoundIt) {
   const std::vector<Light> lights = test_lights();
   for (const Config& config : kConfigs) {
     SCOPED_TRACE(config.name);
-    const ShadowSettings settings =
+    ShadowSettings settings =
         settings_for(config.technique, config.filter, config.fused, config.samples);
+    if (config.virtual_maps) settings.shadow_maps = ShadowMapKind::Virtual;
     ShadowMaps maps;
-    maps.update(lights, test_camera(), casters.geometry(), settings);
+    const EngineDepth depth;
+    maps.update(lights, test_camera(), casters.geometry(), settings, depth.buffer(test_camera()));
+    if (config.virtual_maps) {
+      EXPECT_EQ(maps.virtual_light(), 1);
+    }
 
     apply_default_state();
     maps.render(casters.draw());
@@ -479,6 +508,9 @@ TEST_F(GpuTest, RenderAndBindLeaveTheEnginesStateAsTheyFoundIt) {
     maps.render(casters.draw());
     const Snapshot after_render = snapshot();
     EXPECT_EQ(changes(before, after_render), "") << "render() changed the engine's state";
+    if (config.virtual_maps) {
+      EXPECT_GT(maps.pages_drawn(), 0);
+    }
 
     maps.bind();
     // What bind() documents that it leaves bound: the block, the units the
@@ -487,9 +519,11 @@ TEST_F(GpuTest, RenderAndBindLeaveTheEnginesStateAsTheyFoundIt) {
     const ShadowBindings& b = maps.bindings();
     for (const char* field : {" buffer", " start", " size"}) {
       bound.insert("uniform buffer " + std::to_string(b.block) + field);
+      bound.insert("uniform buffer " + std::to_string(b.virtual_block) + field);
       bound.insert("storage buffer " + std::to_string(b.poisson_buffer) + field);
     }
-    for (unsigned unit : {b.depth_unit, b.filtered_unit, b.compare_unit, b.sat_unit}) {
+    for (unsigned unit : {b.depth_unit, b.filtered_unit, b.compare_unit, b.sat_unit,
+                          b.page_table_unit, b.page_pool_unit}) {
       for (auto [pname, name] : kTextureBindings) {
         bound.insert("unit " + std::to_string(unit) + " " + name);
       }

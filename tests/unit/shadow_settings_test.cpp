@@ -35,8 +35,9 @@ concept HasPagePool = requires(T t) {
 };
 
 static_assert(!HasAccumulate<ShadowMapSettings> && !HasSubframe<ShadowMapSettings> &&
-              !HasLightSize<ShadowMapSettings> && !HasContactShadows<ShadowMapSettings> &&
-              !HasPagePool<ShadowMapSettings>);
+              !HasLightSize<ShadowMapSettings> && !HasContactShadows<ShadowMapSettings>);
+// Virtual shadow maps are the shadow core's (ShadowMaps draws them too).
+static_assert(HasPagePool<ShadowMapSettings>);
 static_assert(HasAccumulate<ShadowSettings> && HasSubframe<ShadowSettings> &&
               HasLightSize<ShadowSettings>);
 

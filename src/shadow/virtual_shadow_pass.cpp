@@ -1,6 +1,7 @@
-#include "render/virtual_shadow_pass.hpp"
+#include "penumbra/shadow/virtual_shadow_pass.hpp"
 
 #include <algorithm>
+#include <glm/gtc/type_ptr.hpp>
 #include <numeric>
 
 #include "penumbra/shadow/shadow_block_data.hpp"
@@ -17,13 +18,9 @@ namespace {
 // The counters' words (virtual_allocate.comp).
 constexpr std::size_t kFreeCount = 0, kRendered = 2, kUnserved = 3, kCounterWords = 4;
 // The clearing draw's command comes first in the command buffer, then the
-// batches' (5 words each).
+// caster draws' (5 words each).
 constexpr std::size_t kClearCommandWords = 4;
-
-gl::Program page_program(bool cut_outs) {
-  return gl::Program::graphics("shadow/virtual_page.vert", "shadow/shadow_depth.frag",
-                               {{"RADIAL_DEPTH", "0"}, {"CUT_OUTS", cut_outs ? "1" : "0"}});
-}
+constexpr std::size_t kDrawWords = 5;
 
 GLuint groups(int n, int size) {
   return static_cast<GLuint>((n + size - 1) / size);
@@ -35,9 +32,9 @@ VirtualShadowPass::VirtualShadowPass()
     : mark_program_(gl::Program::compute("shadow/virtual_mark.comp")),
       allocate_program_(gl::Program::compute("shadow/virtual_allocate.comp")),
       dirty_program_(gl::Program::compute("shadow/virtual_dirty.comp")),
+      cull_program_(gl::Program::compute("shadow/virtual_cull.comp")),
       clear_program_(
           gl::Program::graphics("shadow/virtual_clear.vert", "shadow/virtual_clear.frag")),
-      page_programs_{page_program(false), page_program(true)},
       block_ubo_(sizeof(gpu::GpuVirtualShadow), nullptr, true, "virtual shadow block"),
       counters_(kCounterWords * sizeof(std::uint32_t), nullptr, true, "virtual page counters"),
       page_table_(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
@@ -48,11 +45,39 @@ VirtualShadowPass::VirtualShadowPass()
                                   .label = "virtual page table"}),
       empty_vertex_array_("virtual page clear") {
   block_.counts = glm::ivec4(-1, 0, 0, 0);
+  block_ubo_.update(&block_, sizeof block_);
+}
+
+std::size_t VirtualShadowPass::draws_offset() {
+  return kClearCommandWords * sizeof(std::uint32_t);
+}
+
+void VirtualShadowPass::set_draws(std::span<const std::uint32_t> commands,
+                                  std::span<const CasterBounds> bounds) {
+  draws_ = static_cast<int>(bounds.size());
+  commands_data_ = {3u, 0u, 0u, 0u};  // the clearing triangle, one instance per page
+  commands_data_.insert(commands_data_.end(), commands.begin(),
+                        commands.begin() + static_cast<std::ptrdiff_t>(kDrawWords * bounds.size()));
+  bounds_data_.clear();
+  for (const CasterBounds& b : bounds) {
+    bounds_data_.emplace_back(b.min, 0.0f);
+    bounds_data_.emplace_back(b.max, 0.0f);
+  }
+  draws_changed_ = true;
+}
+
+void VirtualShadowPass::set_draw_bounds(std::size_t draw, const CasterBounds& bounds) {
+  bounds_data_.at(2 * draw) = glm::vec4(bounds.min, 0.0f);
+  bounds_data_.at(2 * draw + 1) = glm::vec4(bounds.max, 0.0f);
+  if (!draws_changed_ && draw_bounds_.id() != 0) {
+    draw_bounds_.update(&bounds_data_[2 * draw], 2 * sizeof(glm::vec4),
+                        2 * draw * sizeof(glm::vec4));
+  }
 }
 
 void VirtualShadowPass::ensure_pool(int pages) {
-  if (pages == pool_pages_ && !reset_) return;
-  if (pages != pool_pages_) {
+  const bool resized = pages != pool_pages_;
+  if (resized) {
     pool_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
                                         .format = GL_DEPTH_COMPONENT32F,
                                         .width = kVirtualPageTexels,
@@ -67,6 +92,22 @@ void VirtualShadowPass::ensure_pool(int pages) {
                               true, "virtual pages to render");
     pool_pages_ = pages;
   }
+  if (resized || draws_changed_) {
+    // Each draw's pages: at most every listed page.
+    const std::size_t entries = std::max<std::size_t>(
+        1, static_cast<std::size_t>(pool_pages_) * static_cast<std::size_t>(draws_));
+    draw_pages_ = gl::Buffer(entries * sizeof(std::uint32_t), nullptr, true, "virtual draw pages");
+  }
+  if (draws_changed_) {
+    if (commands_data_.empty()) commands_data_ = {3u, 0u, 0u, 0u};
+    commands_ = gl::Buffer(commands_data_.size() * sizeof(std::uint32_t), commands_data_.data(),
+                           true, "virtual page draws");
+    if (bounds_data_.empty()) bounds_data_.assign(2, glm::vec4(0.0f));
+    draw_bounds_ = gl::Buffer(bounds_data_.size() * sizeof(glm::vec4), bounds_data_.data(), true,
+                              "virtual draw bounds");
+    draws_changed_ = false;
+  }
+  if (!resized && !reset_) return;
   // Every page free, none resident.
   std::vector<std::uint32_t> free(static_cast<std::size_t>(pages));
   std::iota(free.begin(), free.end(), 0u);
@@ -87,12 +128,12 @@ void VirtualShadowPass::caster_moved(const glm::vec3& lo0, const glm::vec3& hi0,
   moved_boxes_.emplace_back(lo1, hi1);
 }
 
-void VirtualShadowPass::bind() const {
-  glBindBufferBase(GL_UNIFORM_BUFFER, BINDING_VIRTUAL_UBO, block_ubo_.id());
-  glBindTextureUnit(UNIT_VIRTUAL_PAGE_TABLE, page_table_.id());
-  glBindSampler(UNIT_VIRTUAL_PAGE_TABLE, 0);
-  glBindTextureUnit(UNIT_VIRTUAL_POOL, pool_.id());
-  glBindSampler(UNIT_VIRTUAL_POOL, 0);
+void VirtualShadowPass::bind(const VirtualBindings& b) const {
+  glBindBufferBase(GL_UNIFORM_BUFFER, b.block, block_ubo_.id());
+  glBindTextureUnit(b.page_table_unit, page_table_.id());
+  glBindSampler(b.page_table_unit, 0);
+  glBindTextureUnit(b.pool_unit, pool_.id());
+  glBindSampler(b.pool_unit, 0);
 }
 
 VirtualPageStats VirtualShadowPass::read_stats() const {
@@ -103,30 +144,49 @@ VirtualPageStats VirtualShadowPass::read_stats() const {
   stats.resident = pool_pages_ - static_cast<int>(counters[kFreeCount]);
   stats.rendered = static_cast<int>(counters[kRendered]);
   stats.unserved = static_cast<int>(counters[kUnserved]);
+  for (const int pages : read_page_draws()) stats.page_draws += pages;
   return stats;
 }
 
-void VirtualShadowPass::execute(int light_index, const Light& light, const VirtualClipmap& clipmap,
-                                const ShadowSettings& shadow, const GBufferPass& gbuffer,
-                                const GpuScene& scene) {
+std::vector<int> VirtualShadowPass::read_page_draws() const {
+  std::vector<int> pages(static_cast<std::size_t>(draws_));
+  if (draws_ == 0 || commands_.id() == 0) return pages;
+  std::vector<std::uint32_t> words(kDrawWords * static_cast<std::size_t>(draws_));
+  glGetNamedBufferSubData(commands_.id(), static_cast<GLintptr>(draws_offset()),
+                          static_cast<GLsizeiptr>(words.size() * sizeof(std::uint32_t)),
+                          words.data());
+  for (std::size_t d = 0; d < pages.size(); ++d)
+    pages[d] = static_cast<int>(words[kDrawWords * d + 1]);
+  return pages;
+}
+
+std::vector<glm::ivec4> VirtualShadowPass::read_render_list() const {
+  std::uint32_t rendered = 0;
+  glGetNamedBufferSubData(counters_.id(), kRendered * sizeof(std::uint32_t), sizeof rendered,
+                          &rendered);
+  std::vector<glm::ivec4> pages(std::min<std::size_t>(rendered, pool_pages_));
+  if (!pages.empty()) {
+    glGetNamedBufferSubData(render_list_.id(), 0,
+                            static_cast<GLsizeiptr>(pages.size() * sizeof(glm::ivec4)),
+                            pages.data());
+  }
+  return pages;
+}
+
+void VirtualShadowPass::update(int light_index, const Light& light, const VirtualClipmap& clipmap,
+                               const ShadowMapSettings& settings, const CameraDepthBuffer& depth) {
   GLint max_layers = 0;
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
   // 16 pages of 64 KiB per MiB.
-  ensure_pool(std::min(shadow.page_pool_mib * 16, std::min(max_layers, int(PAGE_INDEX_MASK) + 1)));
-  if (commands_data_.empty()) {
-    commands_data_ = {3u, 0u, 0u, 0u};  // the clearing triangle
-    const std::vector<std::uint32_t> batches = scene.indirect_commands();
-    commands_data_.insert(commands_data_.end(), batches.begin(), batches.end());
-    commands_ = gl::Buffer(commands_data_.size() * sizeof(std::uint32_t), commands_data_.data(),
-                           true, "virtual page draws");
-  }
+  ensure_pool(
+      std::min(settings.page_pool_mib * 16, std::min(max_layers, int(PAGE_INDEX_MASK) + 1)));
 
   // The block: one view per level, and what changed since the last frame.
   const int levels = static_cast<int>(clipmap.levels.size());
   block_ = gpu::GpuVirtualShadow{};
   for (int l = 0; l < levels; ++l) {
     const VirtualLevel& level = clipmap.levels[static_cast<std::size_t>(l)];
-    gpu::GpuShadowView view = gpu_shadow_view(light, level.view, shadow);
+    gpu::GpuShadowView view = gpu_shadow_view(light, level.view, settings);
     view.depth_range.w = static_cast<float>(kVirtualTexels);
     block_.levels[l] = view;
     bool same = static_cast<std::size_t>(l) < previous_levels_.size();
@@ -145,10 +205,10 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
   // What a lookup reads around its texel: the normal offset, PCF's window
   // (half its width, and one texel for its floor), the bilinear taps, and
   // two texels for the lookups' own lift off the surface and rounding.
-  const float filter = shadow.technique == Technique::Pcf ? 0.5f * shadow.pcf_width + 1.0f : 1.0f;
-  block_.params = glm::vec4(clipmap.texel0, shadow.normal_offset + filter + 2.0f, 0.0f, 0.0f);
-  const int batch_words = static_cast<int>(commands_data_.size() - kClearCommandWords);
-  block_.counts = glm::ivec4(light_index, levels, pool_pages_, batch_words / 5);
+  const float filter =
+      settings.technique == Technique::Pcf ? 0.5f * settings.pcf_width + 1.0f : 1.0f;
+  block_.params = glm::vec4(clipmap.texel0, settings.normal_offset + filter + 2.0f, 0.0f, 0.0f);
+  block_.counts = glm::ivec4(light_index, levels, pool_pages_, draws_);
   block_ubo_.update(&block_, sizeof block_);
   previous_levels_ = clipmap.levels;
 
@@ -158,21 +218,15 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_FREE_LIST_SSBO, free_list_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_RENDER_LIST_SSBO, render_list_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_COMMANDS_SSBO, commands_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_DRAW_BOUNDS_SSBO, draw_bounds_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_DRAW_PAGES_SSBO, draw_pages_.id());
   glBindImageTexture(IMAGE_OUTPUT, page_table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   // This frame's counts of rendered and unserved pages start at 0.
   const std::uint32_t zeros[2] = {0, 0};
   counters_.update(zeros, sizeof zeros, kRendered * sizeof(std::uint32_t));
 
   mark_dirty();
-
-  // Marking, over the camera's pixels.
-  glBindTextureUnit(UNIT_GBUFFER_DEPTH, gbuffer.depth().id());
-  glBindSampler(UNIT_GBUFFER_DEPTH, 0);
-  glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
-  glBindSampler(UNIT_GBUFFER_NORMAL, 0);
-  mark_program_.use();
-  glDispatchCompute(groups(gbuffer.depth().width(), 8), groups(gbuffer.depth().height(), 8), 1);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  mark(depth);
 
   // Allocation: free, take, finish.
   allocate_program_.use();
@@ -186,11 +240,37 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glProgramUniform1i(program, 0, 2);
   glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  cull();
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                   GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-
-  render_pages(scene);
   glPopDebugGroup();
+}
+
+void VirtualShadowPass::mark(const CameraDepthBuffer& depth) {
+  // World positions from window depth: NDC through the inverse
+  // view-projection, inverted in double (the float inverse's rounding
+  // would add to the depth buffer's).
+  const glm::mat4 inverse = glm::mat4(glm::inverse(glm::dmat4(depth.view_projection)));
+  const GLuint program = mark_program_.id();
+  glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(inverse));
+  glProgramUniform2i(program, 1, depth.width, depth.height);
+  glProgramUniform1i(program, 2, depth.clip_depth == ClipDepth::ZeroToOne ? 1 : 0);
+  glProgramUniform1f(program, 3, depth.background_depth);
+  glBindTextureUnit(UNIT_GBUFFER_DEPTH, depth.texture);
+  glBindSampler(UNIT_GBUFFER_DEPTH, 0);
+  mark_program_.use();
+  glDispatchCompute(groups(depth.width, 8), groups(depth.height, 8), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void VirtualShadowPass::cull() {
+  if (draws_ == 0) return;
+  // One thread per (listed page, draw): the threads past the frame's
+  // rendered count return at once.
+  cull_program_.use();
+  glDispatchCompute(groups(pool_pages_, 64), static_cast<GLuint>(draws_), 1);
 }
 
 void VirtualShadowPass::mark_dirty() {
@@ -198,7 +278,7 @@ void VirtualShadowPass::mark_dirty() {
   dirty_program_.use();
   const int levels = block_.counts.y;
   for (const auto& [lo, hi] : moved_boxes_) {
-    for (int l = 0; l < levels; ++l) {
+    for (int l = 0; l < levels && static_cast<std::size_t>(l) < previous_levels_.size(); ++l) {
       const auto [first, last] =
           virtual_pages_of_box(previous_levels_[static_cast<std::size_t>(l)], lo, hi);
       if (first.x > last.x || first.y > last.y) continue;
@@ -212,12 +292,10 @@ void VirtualShadowPass::mark_dirty() {
   moved_boxes_.clear();
 }
 
-void VirtualShadowPass::render_pages(const GpuScene& scene) {
-  GLint clip_origin = GL_LOWER_LEFT, clip_depth = GL_NEGATIVE_ONE_TO_ONE;
-  GLfloat depth_range[2] = {0.0f, 1.0f};
-  glGetIntegerv(GL_CLIP_ORIGIN, &clip_origin);
-  glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth);
-  glGetFloatv(GL_DEPTH_RANGE, depth_range);
+void VirtualShadowPass::begin_pages() {
+  glGetIntegerv(GL_CLIP_ORIGIN, &saved_clip_origin_);
+  glGetIntegerv(GL_CLIP_DEPTH_MODE, &saved_clip_depth_);
+  glGetFloatv(GL_DEPTH_RANGE, saved_depth_range_);
   // Window depth = clip z exactly: the level's z-bar (as ShadowMapPass).
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDepthRangef(0.0f, 1.0f);
@@ -225,23 +303,23 @@ void VirtualShadowPass::render_pages(const GpuScene& scene) {
   glViewport(0, 0, kVirtualPageTexels, kVirtualPageTexels);
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
+}
+
+void VirtualShadowPass::clear_listed_pages() {
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
-  // Clear the listed pages to the far depth.
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_RENDER_LIST_SSBO, render_list_.id());
   glDepthFunc(GL_ALWAYS);
   clear_program_.use();
   glBindVertexArray(empty_vertex_array_.id());
   glDrawArraysIndirect(GL_TRIANGLES, nullptr);
-  // The casters, one instance per listed page.
   glDepthFunc(GL_LESS);
-  const std::size_t batches = kClearCommandWords * sizeof(std::uint32_t);
-  page_programs_[0].use();
-  scene.draw_indirect(SurfaceSet::Opaque, batches);
-  page_programs_[1].use();
-  scene.draw_indirect(SurfaceSet::CutOut, batches);
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-  glClipControl(static_cast<GLenum>(clip_origin), static_cast<GLenum>(clip_depth));
-  glDepthRangef(depth_range[0], depth_range[1]);
+}
+
+void VirtualShadowPass::end_pages() {
+  glClipControl(static_cast<GLenum>(saved_clip_origin_), static_cast<GLenum>(saved_clip_depth_));
+  glDepthRangef(saved_depth_range_[0], saved_depth_range_[1]);
 }
 
 }  // namespace penumbra
