@@ -355,7 +355,6 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   if (shadows && virtual_light_ >= 0) {
     // Marking reads the camera's depth: the G-buffer first.
     ensure_gbuffer(frame, render, profiler);
-    gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
     // Marked from the G-buffer's reversed-Z depth (render/camera_depth.hpp).
     const CameraDepthBuffer depth{.texture = gbuffer_pass_.depth().id(),
                                   .width = render.width,
@@ -364,7 +363,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
                                   .clip_depth = ClipDepth::ZeroToOne,
                                   .background_depth = static_cast<float>(CAMERA_FAR_DEPTH)};
     virtual_pass_.update(virtual_light_, scene_.lights[static_cast<std::size_t>(virtual_light_)],
-                         virtual_clipmap_, shadow, depth);
+                         virtual_clipmap_, shadow, depth, profiler);
+    gl::GpuPassScope timed(profiler, gl::GpuPass::VirtualPages);
     draw_virtual_pages();
     virtual_pass_.bind();
   }

@@ -174,7 +174,8 @@ std::vector<glm::ivec4> VirtualShadowPass::read_render_list() const {
 }
 
 void VirtualShadowPass::update(int light_index, const Light& light, const VirtualClipmap& clipmap,
-                               const ShadowMapSettings& settings, const CameraDepthBuffer& depth) {
+                               const ShadowMapSettings& settings, const CameraDepthBuffer& depth,
+                               gl::GpuProfiler* profiler) {
   GLint max_layers = 0;
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
   // 16 pages of 64 KiB per MiB.
@@ -225,10 +226,14 @@ void VirtualShadowPass::update(int light_index, const Light& light, const Virtua
   const std::uint32_t zeros[2] = {0, 0};
   counters_.update(zeros, sizeof zeros, kRendered * sizeof(std::uint32_t));
 
-  mark_dirty();
-  mark(depth);
+  {
+    gl::GpuPassScope timed(profiler, gl::GpuPass::VirtualMarking);
+    mark_dirty();
+    mark(depth);
+  }
 
   // Allocation: free, take, finish.
+  gl::GpuPassScope timed(profiler, gl::GpuPass::VirtualAllocation);
   allocate_program_.use();
   const GLuint program = allocate_program_.id();
   glProgramUniform1i(program, 0, 0);

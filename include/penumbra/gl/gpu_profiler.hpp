@@ -24,6 +24,9 @@ enum class GpuPass {
   SatColumns,
   Mips,            // the filtered map's mip chain (MipChainPass, --shadow-mips)
   DepthHierarchy,  // the depth maps' min/max hierarchy (DepthHierarchyPass, backprojection)
+  VirtualMarking,     // virtual shadow maps: the pages the camera's pixels read
+  VirtualAllocation,  // virtual shadow maps: allocation and per-page caster culling
+  VirtualPages,       // virtual shadow maps: the casters drawn into the listed pages
   GBuffer,
   AmbientOcclusion,
   Lighting,
@@ -42,6 +45,9 @@ inline constexpr std::array<std::string_view, static_cast<std::size_t>(GpuPass::
                   "SAT columns",
                   "mips",
                   "depth min/max",
+                  "virtual marking",
+                  "virtual allocation",
+                  "virtual pages",
                   "G-buffer",
                   "SSAO",
                   "lighting",

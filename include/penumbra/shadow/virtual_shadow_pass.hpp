@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "penumbra/camera_depth_buffer.hpp"
+#include "penumbra/gl/gpu_profiler.hpp"
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
 #include "penumbra/settings.hpp"
@@ -68,8 +69,11 @@ class VirtualShadowPass {
   // at the BINDING_VIRTUAL_* storage bindings, BINDING_VIRTUAL_UBO, image
   // unit IMAGE_OUTPUT and texture unit UNIT_GBUFFER_DEPTH (the depth, as
   // a 2D texture) and leaves them bound.
+  // With a profiler, the marking and the allocation (with the culling)
+  // are timed as GpuPass::VirtualMarking and VirtualAllocation.
   void update(int light_index, const Light& light, const VirtualClipmap& clipmap,
-              const ShadowMapSettings& settings, const CameraDepthBuffer& depth);
+              const ShadowMapSettings& settings, const CameraDepthBuffer& depth,
+              gl::GpuProfiler* profiler = nullptr);
   // A caster moved from world box [lo0, hi0] to [lo1, hi1]: the resident
   // pages either touches render again in the next update().
   void caster_moved(const glm::vec3& lo0, const glm::vec3& hi0, const glm::vec3& lo1,
