@@ -300,12 +300,15 @@ void VirtualShadowPass::mark_dirty() {
 void VirtualShadowPass::begin_pages() {
   glGetIntegerv(GL_CLIP_ORIGIN, &saved_clip_origin_);
   glGetIntegerv(GL_CLIP_DEPTH_MODE, &saved_clip_depth_);
-  glGetFloatv(GL_DEPTH_RANGE, saved_depth_range_);
+  glGetDoublei_v(GL_DEPTH_RANGE, 0, saved_depth_range_);
   // Window depth = clip z exactly: the level's z-bar (as ShadowMapPass).
+  // Viewport 0's range and rectangle only: the casters write no
+  // gl_ViewportIndex, and an engine's other viewports stay as they were.
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  glDepthRangef(0.0f, 1.0f);
+  glDepthRangeIndexed(0, 0.0, 1.0);
   glBindFramebuffer(GL_FRAMEBUFFER, pool_framebuffer_.id());
-  glViewport(0, 0, kVirtualPageTexels, kVirtualPageTexels);
+  glViewportIndexedf(0, 0.0f, 0.0f, static_cast<float>(kVirtualPageTexels),
+                     static_cast<float>(kVirtualPageTexels));
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
@@ -324,7 +327,7 @@ void VirtualShadowPass::clear_listed_pages() {
 
 void VirtualShadowPass::end_pages() {
   glClipControl(static_cast<GLenum>(saved_clip_origin_), static_cast<GLenum>(saved_clip_depth_));
-  glDepthRangef(saved_depth_range_[0], saved_depth_range_[1]);
+  glDepthRangeIndexed(0, saved_depth_range_[0], saved_depth_range_[1]);
 }
 
 }  // namespace penumbra

@@ -82,9 +82,9 @@ class VirtualShadowPass {
   void invalidate() { reset_ = true; }
 
   // Sets what drawing into the pool's pages needs: its layered framebuffer
-  // (gl_Layer picks the page), a 128^2 viewport, depth test LESS with
-  // writes, no face culling, clip control lower-left / 0..1 and depth
-  // range 0..1 (end_pages() puts the last two back).
+  // (gl_Layer picks the page), a 128^2 viewport 0, depth test LESS with
+  // writes, no face culling, clip control lower-left / 0..1 and viewport
+  // 0's depth range 0..1 (end_pages() puts the last two back).
   void begin_pages();
   void end_pages();
   // Clears the listed pages to the far depth (one instanced triangle per
@@ -137,7 +137,7 @@ class VirtualShadowPass {
   bool draws_changed_ = true;
   bool reset_ = true;
   GLint saved_clip_origin_ = 0, saved_clip_depth_ = 0;
-  GLfloat saved_depth_range_[2] = {0.0f, 1.0f};
+  GLdouble saved_depth_range_[2] = {0.0, 1.0};
 };
 
 }  // namespace penumbra
