@@ -159,9 +159,7 @@ TEST_P(ShadowMapDepth, MapsHoldTheTracedRelativeDepth) {
 INSTANTIATE_TEST_SUITE_P(EveryLightType, ShadowMapDepth,
                          ::testing::Values(LightType::Spot, LightType::Directional,
                                            LightType::Point),
-                         [](const ::testing::TestParamInfo<LightType>& info) {
-                           return std::string(enum_name<LightType>(kLightTypeNames, info.param));
-                         });
+                         testing::light_type_name);
 
 }  // namespace
 }  // namespace penumbra
