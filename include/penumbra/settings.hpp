@@ -65,10 +65,12 @@ constexpr bool supports_soft_shadows(Technique t, Filter f) {
   return f == Filter::Sat && (t == Technique::Vsm || t == Technique::Msm || t == Technique::Msm16);
 }
 
-// Where a directional light's shadow is stored: cascades (a fixed number
-// of maps along the camera's view), or a virtual clipmap of 16,384^2
-// texels per level in 128^2 pages, only the pages the camera's pixels need
-// resident in a physical pool (docs/rendering.md, "Virtual shadow maps").
+// Where a directional or spot light's shadow is stored: cascades (a fixed
+// number of maps along the camera's view) and one map a spot, or virtual
+// maps in 128^2 pages (a directional light's clipmap of 16,384^2 texels per
+// level, a spot light's 16,384^2 map with mip levels), only the pages the
+// camera's pixels need resident in a physical pool (docs/rendering.md,
+// "Virtual shadow maps").
 enum class ShadowMapKind { Cascades, Virtual };
 
 inline constexpr std::array<std::pair<ShadowMapKind, std::string_view>, 2> kShadowMapKindNames{{
@@ -272,9 +274,10 @@ class SourceSizeOverride {
 // only the renderer does with them (accumulated soft shadows, source
 // sizes set for every light at once).
 struct ShadowSettings : ShadowMapSettings {
-  // Directional lights: cascades, or virtual shadow maps (a clipmap of
-  // 16,384^2-texel levels in 128^2 pages, resident in a page pool). Virtual
-  // maps are penumbra's renderer's; ShadowMaps draws cascades.
+  // Directional and spot lights: cascades and spot maps, or virtual shadow
+  // maps (a clipmap of 16,384^2-texel levels, a spot's 16,384^2 map with
+  // mip levels, in 128^2 pages resident in a page pool). Virtual maps are
+  // penumbra's renderer's; ShadowMaps draws cascades.
   ShadowMapKind shadow_maps = ShadowMapKind::Cascades;
   // Virtual shadow maps: the physical page pool's size in MiB of 32-bit
   // depth (64 KiB a page). 48: the memory of 3 cascades of 2048^2.

@@ -120,9 +120,9 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
   named.shadow_maps =
       std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, settings.shadow_maps));
   add_choice(app, "shadow-maps", named.shadow_maps,
-             "directional lights: cascades, or virtual shadow maps (a clipmap of 16384^2-texel "
-             "levels in 128^2 pages, the pages the image needs rendered into --page-pool-mib; "
-             "hard and pcf)",
+             "directional and spot lights: cascades and spot maps, or virtual shadow maps (a "
+             "clipmap of 16384^2-texel levels, a spot's 16384^2 map with mip levels, in 128^2 "
+             "pages, the pages the image needs rendered into --page-pool-mib; hard and pcf)",
              shadow_map_kind_names(), OptionGroup::Lights);
   add_shadow_parameters(app, settings);
 }

@@ -20,6 +20,7 @@
 #include "render/scene_shadow_casters.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/mesh.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -46,10 +47,7 @@ Scene spot_scene(bool second_spot = false) {
 }
 
 RenderSettings camera_view(View view, int light_index = 0) {
-  RenderSettings rs;
-  rs.width = 384;
-  rs.height = 256;
-  rs.view = view;
+  RenderSettings rs = testing::small_frame(384, 256, view);
   rs.light_index = light_index;
   return rs;
 }
