@@ -520,7 +520,7 @@ void main() {
     vec3 colour = vec3(0.0);
 #if VIRTUAL_SHADOWS
     if (frame.options.z == virtual_shadow.counts.x) {
-      int level = virtual_resident_level(world);
+      int level = virtual_resident_level(world, facet_normal);
       if (level >= 0) {
         vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world) * float(VIRTUAL_PAGES);
         uint entry = virtual_page_entry(level, ivec2(floor(uv)));
@@ -543,7 +543,9 @@ void main() {
     PixelFootprint on_facet = pixel_footprint(pixel, world, facet_normal);
     ShadingTexel texel = shading_texel(light, world, camera_depth(world));
 #if VIRTUAL_SHADOWS
-    if (frame.options.z == virtual_shadow.counts.x) texel = virtual_shading_texel(world);
+    if (frame.options.z == virtual_shadow.counts.x) {
+      texel = virtual_shading_texel(world, facet_normal);
+    }
 #endif
     float density = texels_per_pixel(texel, on_facet.dx, on_facet.dy, facet_normal,
                                      direction_to_light(light, world));

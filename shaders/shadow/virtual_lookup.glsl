@@ -11,13 +11,44 @@ layout(std140, binding = BINDING_VIRTUAL_UBO) uniform VirtualShadowBlock {
 
 const int VIRTUAL_TEXELS = VIRTUAL_PAGES * VIRTUAL_PAGE_TEXELS;
 
-// The finest level whose texel is no larger than the pixel's footprint at
-// `world` (its camera distance times the footprint per unit distance): at
-// least one texel per pixel. virtual_level_of() is the CPU twin.
-int virtual_level(vec3 world) {
-  float footprint = length(world - virtual_shadow.camera.xyz) * virtual_shadow.camera.w;
-  float l = floor(log2(max(footprint, 1e-30) / virtual_shadow.params.x));
+// The level coordinate at `world` on a receiver with unit normal
+// `normal`: log2 of the largest texel that still gives the pixel there one
+// texel (an area ratio, as texel_density.glsl measures it), over level 0's
+// texel. A pixel at distance d, off the view axis by theta, sees a solid
+// angle a^2 cos^3(theta) (a: the footprint per unit distance on the axis);
+// on a receiver whose normal makes cosines cos_v with the camera ray and
+// cos_l with the light, it covers d^2 a^2 cos^3(theta) / cos_v, and a
+// texel t covers t^2 / cos_l. One texel per pixel then needs
+// t <= d a cos^1.5(theta) sqrt(cos_l / cos_v). The cosines' ratio only
+// makes levels finer (a grazing view's footprint is long, not wide: a
+// coarser texel would be wider than the pixel), by at most two levels (a
+// receiver along the light's rays would need texels without end).
+// virtual_level_coordinate() is the CPU twin.
+float virtual_level_coordinate(vec3 world, vec3 normal) {
+  vec3 ray = world - virtual_shadow.camera.xyz;
+  float d = max(length(ray), 1e-30);
+  ray /= d;
+  float cos_axis = clamp(dot(ray, virtual_shadow.view_axis.xyz), 1e-3, 1.0);
+  // The light's +z axis (the view matrix's third row) points at the light.
+  mat4 light_view = virtual_shadow.levels[0].view;
+  vec3 to_light = vec3(light_view[0][2], light_view[1][2], light_view[2][2]);
+  float tilt = clamp(abs(dot(normal, to_light)) / max(abs(dot(normal, ray)), 1e-6), 1.0 / 16.0,
+                     1.0);
+  float footprint = d * virtual_shadow.camera.w * pow(cos_axis, 1.5) * sqrt(tilt);
+  return log2(max(footprint, 1e-30) / virtual_shadow.params.x);
+}
+
+// The level under level bias `bias` (half levels finer, PAGE_WANTED):
+// the finest whose texel gives the pixel at least one texel, bias / 2
+// levels finer still. virtual_level_of() is the CPU twin.
+int virtual_level_biased(vec3 world, vec3 normal, int bias) {
+  float l = floor(virtual_level_coordinate(world, normal) - 0.5 * float(bias));
   return int(clamp(l, 0.0, float(virtual_shadow.counts.y - 1)));
+}
+
+// The level a lookup at `world` reads, under the bias the allocation chose.
+int virtual_level(vec3 world, vec3 normal) {
+  return virtual_level_biased(world, normal, int(virtual_shadow.params.z));
 }
 
 // The page-table slot of a world page: the table is addressed modulo 128

@@ -33,12 +33,13 @@ bool virtual_page_resident(int level, vec3 world) {
   return (virtual_page_entry(level, page) & PAGE_RESIDENT) != 0u;
 }
 
-// The level a lookup at `world` reads: virtual_level(), or where its page
+// The level a lookup at `world` (on a receiver with unit normal `normal`)
+// reads: virtual_level(), or where its page
 // is missing (the pool ran out; or the point lies within a rounding error
 // of a level's boundary and its neighbours marked the other level), the
 // nearest coarser level holding it, then the nearest finer; -1 if none.
-int virtual_resident_level(vec3 world) {
-  int level = virtual_level(world);
+int virtual_resident_level(vec3 world, vec3 normal) {
+  int level = virtual_level(world, normal);
   if (virtual_page_resident(level, world)) return level;
   for (int l = level + 1; l < virtual_shadow.counts.y; ++l) {
     if (virtual_page_resident(l, world)) return l;
@@ -51,8 +52,8 @@ int virtual_resident_level(vec3 world) {
 
 // The texel a virtual map's lookup reads at `world` (texel_density.glsl's
 // shading_texel() for the light with virtual maps): its resident level's.
-ShadingTexel virtual_shading_texel(vec3 world) {
-  int level = virtual_resident_level(world);
+ShadingTexel virtual_shading_texel(vec3 world, vec3 normal) {
+  int level = virtual_resident_level(world, normal);
   if (level < 0) return ShadingTexel(0.0, false);
   GpuShadowView view = virtual_shadow.levels[level];
   return ShadingTexel(shadow_texel_world(view, light_linear_depth(view, world)), true);
@@ -101,7 +102,7 @@ float virtual_pcf(int level, GpuShadowView view, OccluderCone cone, vec2 uv, flo
 // maps, for SHADOW_TECHNIQUE hard or pcf.
 float virtual_shadow_factor(GpuShadow params, GpuLight light, vec3 world, vec3 normal,
                             vec2 rotation) {
-  int level = virtual_resident_level(world);
+  int level = virtual_resident_level(world, normal);
   if (level < 0) return 1.0;
   GpuShadowView view = virtual_shadow.levels[level];
   ShadowLookup s = shadow_lookup(view, world, normal, params.normal_offset);

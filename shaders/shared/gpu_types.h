@@ -151,9 +151,13 @@ struct GpuVirtualShadow {
   ivec4 origins[MAX_VIRTUAL_LEVELS];
   // The origins of the last frame, for the pages that scrolled out.
   ivec4 previous_origins[MAX_VIRTUAL_LEVELS];
-  vec4 camera;  // xyz: where footprints are measured from; w: footprint per unit distance
+  vec4 camera;     // xyz: where footprints are measured from; w: footprint per unit distance
+  vec4 view_axis;  // xyz: the camera's unit view direction; w: unused
   // x: level 0's texel (world units); y: texels a lookup reads around its
-  // own (normal offset, filter, bilinear taps, margin); zw: unused
+  // own (normal offset, filter, bilinear taps, margin); z: the level bias
+  // in half levels finer (0 from the host; the allocation writes the one it
+  // chose, 0 .. VIRTUAL_LEVEL_BIASES - 1, before the pages are drawn); w:
+  // unused
   vec4 params;
   // x: the light that reads virtual maps (-1: none); y: level count;
   // z: pool pages; w: caster draw commands (one per batch)

@@ -9,13 +9,15 @@
 namespace penumbra {
 
 static_assert(sizeof(gpu::GpuVirtualShadow) ==
-                  MAX_VIRTUAL_LEVELS * (sizeof(gpu::GpuShadowView) + 2 * 16) + 3 * 16,
+                  MAX_VIRTUAL_LEVELS * (sizeof(gpu::GpuShadowView) + 2 * 16) + 4 * 16,
               "GpuVirtualShadow must match std140");
 
 namespace {
 
-// The counters' words (virtual_allocate.comp).
-constexpr std::size_t kFreeCount = 0, kRendered = 2, kUnserved = 3, kCounterWords = 4;
+// The counters' words (virtual_allocate.comp): free count, taken,
+// rendered, unserved, the bias, the pages each bias wants.
+constexpr std::size_t kFreeCount = 0, kRendered = 2, kUnserved = 3, kBias = 4,
+                      kCounterWords = 5 + VIRTUAL_LEVEL_BIASES;
 // The clearing draw's command comes first in the command buffer, then the
 // batches' (5 words each).
 constexpr std::size_t kClearCommandWords = 4;
@@ -72,7 +74,8 @@ void VirtualShadowPass::ensure_pool(int pages) {
   std::iota(free.begin(), free.end(), 0u);
   free_list_ =
       gl::Buffer(free.size() * sizeof(std::uint32_t), free.data(), true, "virtual page free list");
-  const std::uint32_t counters[kCounterWords] = {static_cast<std::uint32_t>(pages), 0, 0, 0};
+  std::uint32_t counters[kCounterWords] = {};
+  counters[kFreeCount] = static_cast<std::uint32_t>(pages);
   counters_.update(counters, sizeof counters);
   const GLuint zero = 0;
   glClearTexImage(page_table_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -103,6 +106,7 @@ VirtualPageStats VirtualShadowPass::read_stats() const {
   stats.resident = pool_pages_ - static_cast<int>(counters[kFreeCount]);
   stats.rendered = static_cast<int>(counters[kRendered]);
   stats.unserved = static_cast<int>(counters[kUnserved]);
+  stats.bias = static_cast<int>(counters[kBias]);
   return stats;
 }
 
@@ -142,6 +146,7 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
     block_.previous_origins[l] = glm::ivec4(same ? previous : level.origin, 0, 0);
   }
   block_.camera = glm::vec4(clipmap.camera, clipmap.pixel_angle);
+  block_.view_axis = glm::vec4(clipmap.forward, 0.0f);
   // What a lookup reads around its texel: the normal offset, PCF's window
   // (half its width, and one texel for its floor), the bilinear taps, and
   // two texels for the lookups' own lift off the surface and rounding.
@@ -158,6 +163,7 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_FREE_LIST_SSBO, free_list_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_RENDER_LIST_SSBO, render_list_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_COMMANDS_SSBO, commands_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_BLOCK_SSBO, block_ubo_.id());
   glBindImageTexture(IMAGE_OUTPUT, page_table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   // This frame's counts of rendered and unserved pages start at 0.
   const std::uint32_t zeros[2] = {0, 0};
@@ -170,13 +176,22 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
   glBindSampler(UNIT_GBUFFER_DEPTH, 0);
   glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
   glBindSampler(UNIT_GBUFFER_NORMAL, 0);
+  glBindTextureUnit(UNIT_GBUFFER_FACET, gbuffer.facet().id());
+  glBindSampler(UNIT_GBUFFER_FACET, 0);
   mark_program_.use();
   glDispatchCompute(groups(gbuffer.depth().width(), 8), groups(gbuffer.depth().height(), 8), 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
-  // Allocation: free, take, finish.
+  // Allocation: count each bias's pages, choose one, free, take, finish.
   allocate_program_.use();
   const GLuint program = allocate_program_.id();
+  glProgramUniform1i(program, 0, 3);
+  glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8),
+                    static_cast<GLuint>(std::max(levels, 1)));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glProgramUniform1i(program, 0, 4);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT);
   glProgramUniform1i(program, 0, 0);
   glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8), kMaxVirtualLevels);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

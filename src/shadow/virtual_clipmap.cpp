@@ -39,6 +39,7 @@ VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& came
   VirtualClipmap clipmap;
   clipmap.pixel_angle = pixel_footprint_per_distance(camera, image_height);
   clipmap.camera = camera.position;
+  clipmap.forward = glm::normalize(camera.forward);
   // All kMaxVirtualLevels levels, the coarsest's texel the power of two at
   // or below the pixel's footprint at the far plane: then level 0's is at
   // or below the footprint at any near plane the renderer fits (at least
@@ -114,9 +115,25 @@ VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& came
   return clipmap;
 }
 
-int virtual_level_of(const VirtualClipmap& clipmap, const glm::vec3& world) {
-  const float footprint = glm::length(world - clipmap.camera) * clipmap.pixel_angle;
-  const float l = std::floor(std::log2(std::max(footprint, 1e-30f) / clipmap.texel0));
+float virtual_level_coordinate(const VirtualClipmap& clipmap, const glm::vec3& world,
+                               const glm::vec3& normal) {
+  glm::vec3 ray = world - clipmap.camera;
+  const float d = std::max(glm::length(ray), 1e-30f);
+  ray /= d;
+  const float cos_axis = std::clamp(glm::dot(ray, clipmap.forward), 1e-3f, 1.0f);
+  const glm::mat4& light_view = clipmap.levels.front().view.view;
+  const glm::vec3 to_light(light_view[0][2], light_view[1][2], light_view[2][2]);
+  const float tilt = std::clamp(
+      std::abs(glm::dot(normal, to_light)) / std::max(std::abs(glm::dot(normal, ray)), 1e-6f),
+      1.0f / 16.0f, 1.0f);
+  const float footprint = d * clipmap.pixel_angle * std::pow(cos_axis, 1.5f) * std::sqrt(tilt);
+  return std::log2(std::max(footprint, 1e-30f) / clipmap.texel0);
+}
+
+int virtual_level_of(const VirtualClipmap& clipmap, const glm::vec3& world, const glm::vec3& normal,
+                     int bias) {
+  const float l = std::floor(virtual_level_coordinate(clipmap, world, normal) -
+                             0.5f * static_cast<float>(bias));
   return static_cast<int>(
       std::clamp(l, 0.0f, static_cast<float>(static_cast<int>(clipmap.levels.size()) - 1)));
 }
