@@ -1,9 +1,12 @@
-// A directional light's virtual shadow maps (docs/rendering.md, "Virtual
-// shadow maps"; src/shadow/virtual_clipmap.hpp holds the CPU twins): which
-// clipmap level a point reads, and where its pages sit in the page table.
+// The lights' virtual shadow maps (docs/rendering.md, "Virtual shadow
+// maps"; src/shadow/virtual_clipmap.hpp holds the CPU twins): which level
+// (a directional light's clipmap level, a spot light's mip level) a point
+// reads, and where its pages sit in the page table. Levels are numbered
+// across the lights (virtual_shadow.lights[i]: light i's first and count).
 // Shared by the marking pass, the page rendering and the lookup, so that
 // they agree on every page.
 #pragma once
+#include "lookup.glsl"
 
 layout(std140, binding = BINDING_VIRTUAL_UBO) uniform VirtualShadowBlock {
   GpuVirtualShadow virtual_shadow;
@@ -11,10 +14,15 @@ layout(std140, binding = BINDING_VIRTUAL_UBO) uniform VirtualShadowBlock {
 
 const int VIRTUAL_TEXELS = VIRTUAL_PAGES * VIRTUAL_PAGE_TEXELS;
 
-// The level coordinate at `world` on a receiver with unit normal
-// `normal`: log2 of the largest texel that still gives the pixel there one
-// texel (an area ratio, as texel_density.glsl measures it), over level 0's
-// texel. A pixel at distance d, off the view axis by theta, sees a solid
+// Texels along a side of level `level`: 16,384, or a spot's mip level's.
+int virtual_level_texels(int level) {
+  return int(virtual_shadow.levels[level].depth_range.w);
+}
+
+// log2 of the largest texel that gives the pixel at `world`, on a
+// receiver with unit normal `normal`, one texel (an area ratio, as
+// texel_density.glsl measures it), over light i's first level's texel
+// there. A pixel at distance d, off the view axis by theta, sees a solid
 // angle a^2 cos^3(theta) (a: the footprint per unit distance on the axis);
 // on a receiver whose normal makes cosines cos_v with the camera ray and
 // cos_l with the light, it covers d^2 a^2 cos^3(theta) / cos_v, and a
@@ -23,32 +31,39 @@ const int VIRTUAL_TEXELS = VIRTUAL_PAGES * VIRTUAL_PAGE_TEXELS;
 // makes levels finer (a grazing view's footprint is long, not wide: a
 // coarser texel would be wider than the pixel), by at most two levels (a
 // receiver along the light's rays would need texels without end).
-// virtual_level_coordinate() is the CPU twin.
-float virtual_level_coordinate(vec3 world, vec3 normal) {
+// virtual_level_coordinate() is the CPU twin (directional lights).
+float virtual_level_coordinate(int i, vec3 world, vec3 normal) {
+  GpuShadowView first = virtual_shadow.levels[virtual_shadow.lights[i].x];
   vec3 ray = world - virtual_shadow.camera.xyz;
   float d = max(length(ray), 1e-30);
   ray /= d;
   float cos_axis = clamp(dot(ray, virtual_shadow.view_axis.xyz), 1e-3, 1.0);
-  // The light's +z axis (the view matrix's third row) points at the light.
-  mat4 light_view = virtual_shadow.levels[0].view;
-  vec3 to_light = vec3(light_view[0][2], light_view[1][2], light_view[2][2]);
+  // Towards the light: a view's +z axis (the third row of its rotation),
+  // or a spot's eye.
+  mat3 rotation = mat3(first.view);
+  vec3 to_light = first.perspective != 0
+                      ? normalize(-(transpose(rotation) * first.view[3].xyz) - world)
+                      : vec3(first.view[0][2], first.view[1][2], first.view[2][2]);
   float tilt = clamp(abs(dot(normal, to_light)) / max(abs(dot(normal, ray)), 1e-6), 1.0 / 16.0,
                      1.0);
   float footprint = d * virtual_shadow.camera.w * pow(cos_axis, 1.5) * sqrt(tilt);
-  return log2(max(footprint, 1e-30) / virtual_shadow.params.x);
+  float texel = shadow_texel_world(first, light_linear_depth(first, world));
+  return log2(max(footprint, 1e-30) / max(texel, 1e-30));
 }
 
-// The level under level bias `bias` (half levels finer, PAGE_WANTED):
-// the finest whose texel gives the pixel at least one texel, bias / 2
-// levels finer still. virtual_level_of() is the CPU twin.
-int virtual_level_biased(vec3 world, vec3 normal, int bias) {
-  float l = floor(virtual_level_coordinate(world, normal) - 0.5 * float(bias));
-  return int(clamp(l, 0.0, float(virtual_shadow.counts.y - 1)));
+// Light i's level under level bias `bias` (half levels finer,
+// PAGE_WANTED): the finest whose texel gives the pixel at least one
+// texel, bias / 2 levels finer still. virtual_level_of() is the CPU twin.
+int virtual_level_biased(int i, vec3 world, vec3 normal, int bias) {
+  ivec4 light = virtual_shadow.lights[i];
+  float l = floor(virtual_level_coordinate(i, world, normal) - 0.5 * float(bias));
+  return light.x + int(clamp(l, 0.0, float(light.y - 1)));
 }
 
-// The level a lookup at `world` reads, under the bias the allocation chose.
-int virtual_level(vec3 world, vec3 normal) {
-  return virtual_level_biased(world, normal, int(virtual_shadow.params.z));
+// The level light i's lookup at `world` reads, under the bias the
+// allocation chose.
+int virtual_level(int i, vec3 world, vec3 normal) {
+  return virtual_level_biased(i, world, normal, int(virtual_shadow.params.z));
 }
 
 // The page-table slot of a world page: the table is addressed modulo 128
@@ -58,7 +73,8 @@ ivec2 virtual_page_slot(ivec2 world_page) {
   return world_page & (VIRTUAL_PAGES - 1);
 }
 
-// The slot of page `page` (0..127 from the level's first) of level `level`.
+// The slot of page `page` (0..127 from the level's first) of level `level`
+// (a spot level's origin is (0, 0): its slot is the page).
 ivec2 virtual_level_slot(int level, ivec2 page) {
   return virtual_page_slot(virtual_shadow.origins[level].xy + page);
 }

@@ -314,7 +314,7 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
     const std::string stem = item_stem(item.settings);
     view.view = View::Shadow;
     Image shadow = render_accumulated(renderer, view, item.settings);
-    if (renderer.virtual_light() >= 0) item.pages = renderer.virtual_page_stats();
+    if (!renderer.virtual_lights().empty()) item.pages = renderer.virtual_page_stats();
     restrict_to(shadow, traced);
     item.traced = compare_shadow(shadow, traced);
     item.traced_near = compare_shadow(only_half(shadow, halves, false), traced);

@@ -55,7 +55,7 @@ using Page = std::tuple<int, int, int>;  // level, world page x, y
 std::set<Page> resident_pages(const Renderer& renderer) {
   const gl::Texture& table = renderer.virtual_shadows().page_table();
   std::vector<GLuint> entries(static_cast<std::size_t>(kVirtualPages) * kVirtualPages *
-                              kMaxVirtualLevels);
+                              kMaxVirtualViews);
   glGetTextureImage(table.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
                     static_cast<GLsizei>(entries.size() * sizeof(GLuint)), entries.data());
   const VirtualClipmap& clipmap = renderer.virtual_clipmap();
@@ -73,27 +73,6 @@ std::set<Page> resident_pages(const Renderer& renderer) {
     }
   }
   return pages;
-}
-
-// The G-buffer's triangle normals, per pixel as SurfacePoints orders them
-// (rows top to bottom): the normals the marking and the lookup pick their
-// levels with.
-std::vector<glm::vec3> facet_normals(const Renderer& renderer) {
-  const gl::Texture& facet = renderer.gbuffer().facet();
-  const int w = facet.width(), h = facet.height();
-  std::vector<float> rgba(static_cast<std::size_t>(w) * h * 4);
-  glGetTextureImage(facet.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * 4),
-                    rgba.data());
-  std::vector<glm::vec3> normals(static_cast<std::size_t>(w) * h);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const float* n = &rgba[(static_cast<std::size_t>(h - 1 - y) * w + x) * 4];
-      const glm::vec3 v(n[0], n[1], n[2]);
-      normals[static_cast<std::size_t>(y) * w + x] =
-          glm::length(v) > 0.0f ? glm::normalize(v) : glm::vec3(0.0f, 1.0f, 0.0f);
-    }
-  }
-  return normals;
 }
 
 // The pages of `level` a lookup at `world` reads, `reach` texels around it.
@@ -129,7 +108,7 @@ TEST_F(GpuTest, VirtualPagesMarkedAreThoseThePixelsRead) {
     const VirtualClipmap& clipmap = renderer.virtual_clipmap();
     const float reach = renderer.virtual_shadows().block().params.y;
     const SurfacePoints surfaces = renderer.read_surfaces();
-    const std::vector<glm::vec3> facets = facet_normals(renderer);
+    const std::vector<glm::vec3> facets = renderer.read_facet_normals();
     std::set<Page> needed, allowed, levels_seen;
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
       if (surfaces.covered[i] == 0) continue;
@@ -319,7 +298,7 @@ TEST_F(GpuTest, PcfHasNoSeamAcrossVirtualPageBorders) {
   const Image image = renderer.read_view();
   const SurfacePoints surfaces = renderer.read_surfaces();
   const VirtualClipmap& clipmap = renderer.virtual_clipmap();
-  const std::vector<glm::vec3> facets = facet_normals(renderer);
+  const std::vector<glm::vec3> facets = renderer.read_facet_normals();
   const int bias = renderer.virtual_page_stats().bias;
   // Each covered pixel's level and page (-1: not covered).
   std::vector<glm::ivec3> page(surfaces.size(), glm::ivec3(-1));

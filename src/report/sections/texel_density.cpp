@@ -151,7 +151,7 @@ void Study::texel_density_section(HtmlPage& page) {
     std::string pages = "-";
     if (drawn) {
       density = image_or_failure([&] { return renderer_.read_texel_density(); });
-      if (renderer_.virtual_light() >= 0) {
+      if (!renderer_.virtual_lights().empty()) {
         const VirtualPageStats stats = renderer_.virtual_page_stats();
         pages = std::to_string(stats.resident) + " of " + std::to_string(stats.pool_pages) + " (" +
                 fixed(0.5 * stats.bias, 1) + " levels finer)";
