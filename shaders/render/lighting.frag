@@ -520,7 +520,7 @@ void main() {
     vec3 colour = vec3(0.0);
 #if VIRTUAL_SHADOWS
     if (virtual_shadow.lights[frame.options.z].y > 0) {
-      int level = virtual_resident_level(frame.options.z, world);
+      int level = virtual_resident_level(frame.options.z, world, facet_normal);
       if (level >= 0) {
         vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world) *
                   float(virtual_level_texels(level) / VIRTUAL_PAGE_TEXELS);
@@ -545,8 +545,9 @@ void main() {
     PixelFootprint on_facet = pixel_footprint(pixel, world, facet_normal);
     ShadingTexel texel = shading_texel(light, world, camera_depth(world));
 #if VIRTUAL_SHADOWS
-    if (virtual_shadow.lights[frame.options.z].y > 0)
-      texel = virtual_shading_texel(frame.options.z, world);
+    if (virtual_shadow.lights[frame.options.z].y > 0) {
+      texel = virtual_shading_texel(frame.options.z, world, facet_normal);
+    }
 #endif
     float density = texels_per_pixel(texel, on_facet.dx, on_facet.dy, facet_normal,
                                      direction_to_light(light, world));

@@ -1,7 +1,13 @@
-// Virtual shadow maps, allocation, in three dispatches (u_phase):
+// Virtual shadow maps, allocation, in five dispatches (u_phase):
+//  3 (one thread per page-table entry of the levels in use): counts the
+//    pages each level bias wants (PAGE_WANTED, virtual_mark.comp);
+//  4 (one thread): keeps the finest bias whose pages fit the pool (bias 0,
+//    one texel per pixel, if none does), for this frame's allocation and
+//    for every pass after it (the block's params.z);
 //  0 (one thread per page-table entry): frees the resident pages no pixel
-//    requested, whose slot scrolled to another world page, or whose level
-//    changed as a whole, pushing their pool pages onto the free list;
+//    requested under that bias, whose slot scrolled to another world
+//    page, or whose level changed as a whole, pushing their pool pages
+//    onto the free list;
 //  1 (the same threads): gives each requested page that has none a pool
 //    page from the top of the free list (an atomic counter picks which),
 //    and lists it, and each resident page marked dirty, for rendering;
@@ -26,6 +32,12 @@ layout(std430, binding = BINDING_VIRTUAL_COUNTERS_SSBO) buffer Counters {
   uint rendered;    // pages listed for rendering this frame
   uint unserved;    // requested pages the pool had no page for
   uint rendered_written;  // perspective pages listed (from render_list[pool pages])
+  uint bias;              // the level bias phase 4 chose
+  uint wanted[VIRTUAL_LEVEL_BIASES];  // phase 3: pages each bias wants
+};
+// The block the passes read (its params.z: the level bias).
+layout(std430, binding = BINDING_VIRTUAL_BLOCK_SSBO) buffer VirtualBlockOut {
+  GpuVirtualShadow virtual_shadow_out;
 };
 layout(std430, binding = BINDING_VIRTUAL_FREE_LIST_SSBO) buffer FreeList { uint free_list[]; };
 // x: level, yz: world page, w: pool page; the orthographic levels' pages
@@ -51,6 +63,17 @@ void list_for_rendering(int level, ivec2 slot, uint page) {
 }
 
 void main() {
+  if (u_phase == 4) {
+    if (gl_GlobalInvocationID != uvec3(0u)) return;
+    uint chosen = 0u;
+    for (uint k = 1u; k < uint(VIRTUAL_LEVEL_BIASES); ++k) {
+      if (wanted[k] <= uint(virtual_shadow.counts.z)) chosen = k;
+    }
+    for (int k = 0; k < VIRTUAL_LEVEL_BIASES; ++k) wanted[k] = 0u;
+    bias = chosen;
+    virtual_shadow_out.params.z = float(chosen);
+    return;
+  }
   if (u_phase == 2) {
     if (gl_GlobalInvocationID != uvec3(0u)) return;
     uint popped = min(taken, free_count);
@@ -73,8 +96,14 @@ void main() {
   if (!in_use && u_phase != 0) return;
   ivec3 at = ivec3(slot, level);
   uint entry = imageLoad(page_table, at).r;
+  if (u_phase == 3) {
+    for (int k = 0; k < VIRTUAL_LEVEL_BIASES; ++k) {
+      if ((entry & PAGE_WANTED(k)) != 0u) atomicAdd(wanted[k], 1u);
+    }
+    return;
+  }
   bool resident = (entry & PAGE_RESIDENT) != 0u;
-  bool requested = in_use && (entry & PAGE_REQUESTED) != 0u;
+  bool requested = in_use && (entry & (PAGE_WANTED(bias) | PAGE_REQUESTED)) != 0u;
   if (u_phase == 0) {
     ivec4 origin = virtual_shadow.origins[level];
     bool scrolled = world_page_of(slot, origin.xy) !=
@@ -83,7 +112,8 @@ void main() {
       free_list[atomicAdd(free_count, 1u)] = entry & PAGE_INDEX_MASK;
       entry = 0u;
     }
-    imageStore(page_table, at, uvec4((entry & ~PAGE_RENDERED) | (requested ? PAGE_REQUESTED : 0u)));
+    entry &= ~(PAGE_RENDERED | PAGE_WANTED_ALL | PAGE_REQUESTED);
+    imageStore(page_table, at, uvec4(entry | (requested ? PAGE_REQUESTED : 0u)));
     return;
   }
   // Phase 1.

@@ -19,17 +19,51 @@ int virtual_level_texels(int level) {
   return int(virtual_shadow.levels[level].depth_range.w);
 }
 
-// Light i's finest level whose texel at `world` is no larger than the
-// pixel's footprint there (its camera distance times the footprint per
-// unit distance): at least one texel per pixel. virtual_level_of() is the
-// CPU twin.
-int virtual_level(int i, vec3 world) {
-  ivec4 light = virtual_shadow.lights[i];
-  GpuShadowView first = virtual_shadow.levels[light.x];
-  float footprint = length(world - virtual_shadow.camera.xyz) * virtual_shadow.camera.w;
+// log2 of the largest texel that gives the pixel at `world`, on a
+// receiver with unit normal `normal`, one texel (an area ratio, as
+// texel_density.glsl measures it), over light i's first level's texel
+// there. A pixel at distance d, off the view axis by theta, sees a solid
+// angle a^2 cos^3(theta) (a: the footprint per unit distance on the axis);
+// on a receiver whose normal makes cosines cos_v with the camera ray and
+// cos_l with the light, it covers d^2 a^2 cos^3(theta) / cos_v, and a
+// texel t covers t^2 / cos_l. One texel per pixel then needs
+// t <= d a cos^1.5(theta) sqrt(cos_l / cos_v). The cosines' ratio only
+// makes levels finer (a grazing view's footprint is long, not wide: a
+// coarser texel would be wider than the pixel), by at most two levels (a
+// receiver along the light's rays would need texels without end).
+// virtual_level_coordinate() is the CPU twin (directional lights).
+float virtual_level_coordinate(int i, vec3 world, vec3 normal) {
+  GpuShadowView first = virtual_shadow.levels[virtual_shadow.lights[i].x];
+  vec3 ray = world - virtual_shadow.camera.xyz;
+  float d = max(length(ray), 1e-30);
+  ray /= d;
+  float cos_axis = clamp(dot(ray, virtual_shadow.view_axis.xyz), 1e-3, 1.0);
+  // Towards the light: a view's +z axis (the third row of its rotation),
+  // or a spot's eye.
+  mat3 rotation = mat3(first.view);
+  vec3 to_light = first.perspective != 0
+                      ? normalize(-(transpose(rotation) * first.view[3].xyz) - world)
+                      : vec3(first.view[0][2], first.view[1][2], first.view[2][2]);
+  float tilt = clamp(abs(dot(normal, to_light)) / max(abs(dot(normal, ray)), 1e-6), 1.0 / 16.0,
+                     1.0);
+  float footprint = d * virtual_shadow.camera.w * pow(cos_axis, 1.5) * sqrt(tilt);
   float texel = shadow_texel_world(first, light_linear_depth(first, world));
-  float l = floor(log2(max(footprint, 1e-30) / max(texel, 1e-30)));
+  return log2(max(footprint, 1e-30) / max(texel, 1e-30));
+}
+
+// Light i's level under level bias `bias` (half levels finer,
+// PAGE_WANTED): the finest whose texel gives the pixel at least one
+// texel, bias / 2 levels finer still. virtual_level_of() is the CPU twin.
+int virtual_level_biased(int i, vec3 world, vec3 normal, int bias) {
+  ivec4 light = virtual_shadow.lights[i];
+  float l = floor(virtual_level_coordinate(i, world, normal) - 0.5 * float(bias));
   return light.x + int(clamp(l, 0.0, float(light.y - 1)));
+}
+
+// The level light i's lookup at `world` reads, under the bias the
+// allocation chose.
+int virtual_level(int i, vec3 world, vec3 normal) {
+  return virtual_level_biased(i, world, normal, int(virtual_shadow.params.z));
 }
 
 // The page-table slot of a world page: the table is addressed modulo 128

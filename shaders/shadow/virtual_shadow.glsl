@@ -36,13 +36,14 @@ bool virtual_page_resident(int level, vec3 world) {
   return (virtual_page_entry(level, page) & PAGE_RESIDENT) != 0u;
 }
 
-// The level light i's lookup at `world` reads: virtual_level(), or where
+// The level light i's lookup at `world` (on a receiver with unit normal
+// `normal`) reads: virtual_level(), or where
 // its page is missing (the pool ran out; or the point lies within a
 // rounding error of a level's boundary and its neighbours marked the
 // other level), the nearest coarser level holding it, then the nearest
 // finer; -1 if none.
-int virtual_resident_level(int i, vec3 world) {
-  int level = virtual_level(i, world);
+int virtual_resident_level(int i, vec3 world, vec3 normal) {
+  int level = virtual_level(i, world, normal);
   if (virtual_page_resident(level, world)) return level;
   ivec4 light = virtual_shadow.lights[i];
   for (int l = level + 1; l < light.x + light.y; ++l) {
@@ -57,8 +58,8 @@ int virtual_resident_level(int i, vec3 world) {
 // The texel light i's virtual map's lookup reads at `world`
 // (texel_density.glsl's shading_texel() for a light with virtual maps):
 // its resident level's.
-ShadingTexel virtual_shading_texel(int i, vec3 world) {
-  int level = virtual_resident_level(i, world);
+ShadingTexel virtual_shading_texel(int i, vec3 world, vec3 normal) {
+  int level = virtual_resident_level(i, world, normal);
   if (level < 0) return ShadingTexel(0.0, false);
   GpuShadowView view = virtual_shadow.levels[level];
   return ShadingTexel(shadow_texel_world(view, light_linear_depth(view, world)), true);
@@ -108,7 +109,7 @@ float virtual_pcf(int level, GpuShadowView view, OccluderCone cone, vec2 uv, flo
 // maps, for SHADOW_TECHNIQUE hard or pcf.
 float virtual_shadow_factor(int i, GpuShadow params, GpuLight light, vec3 world, vec3 normal,
                             vec2 rotation) {
-  int level = virtual_resident_level(i, world);
+  int level = virtual_resident_level(i, world, normal);
   if (level < 0) return 1.0;
   GpuShadowView view = virtual_shadow.levels[level];
   ShadowLookup s = shadow_lookup(view, world, normal, params.normal_offset);

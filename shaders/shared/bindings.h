@@ -25,6 +25,9 @@
 #define BINDING_VIRTUAL_FREE_LIST_SSBO 6
 #define BINDING_VIRTUAL_RENDER_LIST_SSBO 7
 #define BINDING_VIRTUAL_COMMANDS_SSBO 8
+// The GpuVirtualShadow block itself, where the allocation writes the
+// level bias it chose (params.z) for the passes after it.
+#define BINDING_VIRTUAL_BLOCK_SSBO 9
 // The vertices' layout in that buffer, in floats (src/scene/mesh.hpp:
 // Vertex, whose offsets src/render/gpu_scene.cpp checks against these).
 #define SCENE_VERTEX_FLOATS 10
@@ -84,6 +87,13 @@
 #define PAGE_REQUESTED 0x40000000u  // a pixel of this frame reads it (marking)
 #define PAGE_RENDERED 0x20000000u   // drawn this frame (else cached)
 #define PAGE_DIRTY 0x10000000u      // a caster over it moved: draw it again
+// Level biases the marking tries: bias k reads levels k/2 finer than the
+// footprint's (k = 0: at least one texel per pixel); a pixel marks the
+// page it reads under each with PAGE_WANTED(k), and the allocation keeps
+// the finest bias whose pages fit the pool.
+#define VIRTUAL_LEVEL_BIASES 5
+#define PAGE_WANTED(k) (0x10000u << (k))
+#define PAGE_WANTED_ALL 0x1f0000u
 
 // Widest PCF / PCSS window, in texels.
 #define MAX_PCF_WIDTH 128

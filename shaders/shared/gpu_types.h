@@ -157,10 +157,13 @@ struct GpuVirtualShadow {
   // Per scene light: x: its first level, y: its level count (0: the light
   // reads no virtual maps); zw: unused
   ivec4 lights[MAX_LIGHTS];
-  vec4 camera;  // xyz: where footprints are measured from; w: footprint per unit distance
+  vec4 camera;     // xyz: where footprints are measured from; w: footprint per unit distance
+  vec4 view_axis;  // xyz: the camera's unit view direction; w: unused
   // x: level 0's texel of the directional light (world units); y: texels
   // a lookup reads around its own (normal offset, filter, bilinear taps,
-  // margin); zw: unused
+  // margin); z: the level bias, in half levels finer (0 from the host; the
+  // allocation writes the one it chose, 0 .. VIRTUAL_LEVEL_BIASES - 1,
+  // before the pages are drawn); w: unused
   vec4 params;
   // x: unused; y: level count (all lights); z: pool pages; w: caster
   // draw commands (one per batch)

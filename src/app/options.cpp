@@ -181,14 +181,15 @@ void add_ssao_options(CLI::App& app, SsaoSettings& settings) {
   add_params(app, settings, kSsaoFloatParams, OptionGroup::Ssao);
 }
 
+ShadowMapKind parse_shadow_map_kind(const std::string& name) {
+  return parse_name(name, "--shadow-maps", "shadow-map kind", kShadowMapKindNames);
+}
+
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow,
                          RenderSettings& render) {
   shadow.technique = parse_name(named.technique, "--technique", "technique", kTechniqueNames);
   shadow.filter = parse_name(named.filter, "--filter", "filter", kFilterNames);
-  if (!named.shadow_maps.empty()) {
-    shadow.shadow_maps =
-        parse_name(named.shadow_maps, "--shadow-maps", "shadow-map kind", kShadowMapKindNames);
-  }
+  if (!named.shadow_maps.empty()) shadow.shadow_maps = parse_shadow_map_kind(named.shadow_maps);
   render.view = parse_name(named.view, "--view", "view", kViewNames);
 }
 

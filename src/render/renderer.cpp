@@ -660,6 +660,25 @@ Image read_view_source(const ViewSource& source) {
   return image;
 }
 
+std::vector<glm::vec3> Renderer::read_facet_normals() const {
+  if (!gbuffer_current_) {
+    throw std::logic_error("read_facet_normals() needs a camera view rendered");
+  }
+  const int width = gbuffer_pass_.facet().width(), height = gbuffer_pass_.facet().height();
+  const Image facet = read_texture(gbuffer_pass_.facet().id(), width, height, GL_RGBA);
+  std::vector<glm::vec3> normals(static_cast<std::size_t>(width) * height, glm::vec3(0.0f));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float* n = facet.pixel(x, y);
+      const glm::vec3 v(n[0], n[1], n[2]);
+      if (glm::length(v) > 0.0f) {
+        normals[static_cast<std::size_t>(y) * width + x] = glm::normalize(v);
+      }
+    }
+  }
+  return normals;
+}
+
 SurfacePoints Renderer::read_surfaces() const {
   if (!gbuffer_current_) throw std::logic_error("read_surfaces() needs a camera view rendered");
   const int width = gbuffer_pass_.depth().width(), height = gbuffer_pass_.depth().height();

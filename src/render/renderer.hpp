@@ -161,6 +161,10 @@ class Renderer {
   // rebuilt from the G-buffer depth (through the inverse view-projection,
   // in double) and normals. Throws std::logic_error after a map view.
   [[nodiscard]] SurfacePoints read_surfaces() const;
+  // The G-buffer's triangle normals (unit; 0 where no geometry), ordered as
+  // read_surfaces()' points: what the virtual maps pick each pixel's level
+  // with.
+  [[nodiscard]] std::vector<glm::vec3> read_facet_normals() const;
 
   // Every shadow view's map as the filters see it, one layer per view: the
   // technique's representation for vsm/esm/msm/msm16 (filtered, when the

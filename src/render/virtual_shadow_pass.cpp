@@ -11,15 +11,17 @@ namespace penumbra {
 
 static_assert(sizeof(gpu::GpuVirtualShadow) ==
                   MAX_VIRTUAL_VIEWS * (sizeof(gpu::GpuShadowView) + 2 * 16) + MAX_LIGHTS * 16 +
-                      3 * 16,
+                      4 * 16,
               "GpuVirtualShadow must match std140");
 static_assert(sizeof(gpu::GpuVirtualShadow) <= 16384, "every OpenGL 4.5 device's block size");
 
 namespace {
 
-// The counters' words (virtual_allocate.comp).
-constexpr std::size_t kFreeCount = 0, kRendered = 2, kUnserved = 3, kRenderedWritten = 4,
-                      kCounterWords = 5;
+// The counters' words (virtual_allocate.comp): free count, taken,
+// rendered, unserved, rendered written, the bias, the pages each bias
+// wants.
+constexpr std::size_t kFreeCount = 0, kRendered = 2, kUnserved = 3, kRenderedWritten = 4, kBias = 5,
+                      kCounterWords = 6 + VIRTUAL_LEVEL_BIASES;
 // The two lists' clearing draws' commands come first in the command
 // buffer, then the batches' (5 words each) of the first list, then of the
 // second.
@@ -85,7 +87,8 @@ void VirtualShadowPass::ensure_pool(int pages) {
   std::iota(free.begin(), free.end(), 0u);
   free_list_ =
       gl::Buffer(free.size() * sizeof(std::uint32_t), free.data(), true, "virtual page free list");
-  const std::uint32_t counters[kCounterWords] = {static_cast<std::uint32_t>(pages), 0, 0, 0, 0};
+  std::uint32_t counters[kCounterWords] = {};
+  counters[kFreeCount] = static_cast<std::uint32_t>(pages);
   counters_.update(counters, sizeof counters);
   const GLuint zero = 0;
   glClearTexImage(page_table_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -116,6 +119,7 @@ VirtualPageStats VirtualShadowPass::read_stats() const {
   stats.resident = pool_pages_ - static_cast<int>(counters[kFreeCount]);
   stats.rendered = static_cast<int>(counters[kRendered] + counters[kRenderedWritten]);
   stats.unserved = static_cast<int>(counters[kUnserved]);
+  stats.bias = static_cast<int>(counters[kBias]);
   return stats;
 }
 
@@ -149,6 +153,7 @@ void VirtualShadowPass::execute(std::span<const VirtualLightMaps> lights,
     block_.lights[maps.light_index] = glm::ivec4(first, count, 0, 0);
     if (!maps.maps.levels.front().view.perspective) block_.params.x = maps.maps.texel0;
     block_.camera = glm::vec4(maps.maps.camera, maps.maps.pixel_angle);
+    block_.view_axis = glm::vec4(maps.maps.forward, 0.0f);
     for (const VirtualLevel& level : maps.maps.levels) {
       const int l = static_cast<int>(levels_now.size());
       gpu::GpuShadowView view = gpu_shadow_view(maps.light, level.view, shadow);
@@ -191,6 +196,7 @@ void VirtualShadowPass::execute(std::span<const VirtualLightMaps> lights,
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_FREE_LIST_SSBO, free_list_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_RENDER_LIST_SSBO, render_list_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_COMMANDS_SSBO, commands_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_VIRTUAL_BLOCK_SSBO, block_ubo_.id());
   glBindImageTexture(IMAGE_OUTPUT, page_table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
   // This frame's counts of rendered and unserved pages start at 0.
   const std::uint32_t zeros[3] = {0, 0, 0};
@@ -203,13 +209,22 @@ void VirtualShadowPass::execute(std::span<const VirtualLightMaps> lights,
   glBindSampler(UNIT_GBUFFER_DEPTH, 0);
   glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
   glBindSampler(UNIT_GBUFFER_NORMAL, 0);
+  glBindTextureUnit(UNIT_GBUFFER_FACET, gbuffer.facet().id());
+  glBindSampler(UNIT_GBUFFER_FACET, 0);
   mark_program_.use();
   glDispatchCompute(groups(gbuffer.depth().width(), 8), groups(gbuffer.depth().height(), 8), 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
-  // Allocation: free, take, finish.
+  // Allocation: count each bias's pages, choose one, free, take, finish.
   allocate_program_.use();
   const GLuint program = allocate_program_.id();
+  glProgramUniform1i(program, 0, 3);
+  glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8),
+                    static_cast<GLuint>(std::max(levels, 1)));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glProgramUniform1i(program, 0, 4);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT);
   glProgramUniform1i(program, 0, 0);
   glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8),
                     static_cast<GLuint>(std::max(layers, 1)));

@@ -30,6 +30,9 @@ struct VirtualPageStats {
   int resident = 0;    // pages holding depths (allocated)
   int rendered = 0;    // pages drawn by the last execute()
   int unserved = 0;    // requested pages the pool had no room for in the last execute()
+  // The level bias of the last execute(): half levels finer than one
+  // texel per pixel, the finest whose pages fit the pool.
+  int bias = 0;
 };
 
 // One light's virtual maps in a frame: scene light `light_index`, its

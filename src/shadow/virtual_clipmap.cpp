@@ -39,6 +39,7 @@ VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& came
   VirtualClipmap clipmap;
   clipmap.pixel_angle = pixel_footprint_per_distance(camera, image_height);
   clipmap.camera = camera.position;
+  clipmap.forward = glm::normalize(camera.forward);
   // All kMaxVirtualLevels levels, the coarsest's texel the power of two at
   // or below the pixel's footprint at the far plane: then level 0's is at
   // or below the footprint at any near plane the renderer fits (at least
@@ -132,6 +133,7 @@ VirtualClipmap fit_virtual_spot_map(const LightView& spot, const CameraFrustum& 
   VirtualClipmap map;
   map.pixel_angle = pixel_footprint_per_distance(camera, image_height);
   map.camera = camera.position;
+  map.forward = glm::normalize(camera.forward);
   // Level 0's texel at unit depth: the projection's 2 / (cot(fov / 2) N).
   map.texel0 = 2.0f / (spot.projection[1][1] * static_cast<float>(kVirtualTexels));
   float z0 = spot.z0, z1 = spot.z1;
@@ -165,12 +167,31 @@ VirtualClipmap fit_virtual_spot_map(const LightView& spot, const CameraFrustum& 
   return map;
 }
 
-int virtual_level_of(const VirtualClipmap& clipmap, const glm::vec3& world) {
-  const float footprint = glm::length(world - clipmap.camera) * clipmap.pixel_angle;
-  // Level 0's texel at the point: a spot's grows with the depth.
+float virtual_level_coordinate(const VirtualClipmap& clipmap, const glm::vec3& world,
+                               const glm::vec3& normal) {
+  glm::vec3 ray = world - clipmap.camera;
+  const float d = std::max(glm::length(ray), 1e-30f);
+  ray /= d;
+  const float cos_axis = std::clamp(glm::dot(ray, clipmap.forward), 1e-3f, 1.0f);
+  // Towards the light: a view's +z axis (its third row), or a spot's eye.
   const LightView& first = clipmap.levels.front().view;
+  const glm::mat4& v = first.view;
+  const glm::vec3 to_light = first.perspective
+                                 ? glm::normalize(glm::vec3(glm::inverse(v)[3]) - world)
+                                 : glm::vec3(v[0][2], v[1][2], v[2][2]);
+  const float tilt = std::clamp(
+      std::abs(glm::dot(normal, to_light)) / std::max(std::abs(glm::dot(normal, ray)), 1e-6f),
+      1.0f / 16.0f, 1.0f);
+  const float footprint = d * clipmap.pixel_angle * std::pow(cos_axis, 1.5f) * std::sqrt(tilt);
+  // Level 0's texel at the point: a spot's grows with the depth.
   const float texel = first.perspective ? clipmap.texel0 * first.depth(world) : clipmap.texel0;
-  const float l = std::floor(std::log2(std::max(footprint, 1e-30f) / std::max(texel, 1e-30f)));
+  return std::log2(std::max(footprint, 1e-30f) / std::max(texel, 1e-30f));
+}
+
+int virtual_level_of(const VirtualClipmap& clipmap, const glm::vec3& world, const glm::vec3& normal,
+                     int bias) {
+  const float l = std::floor(virtual_level_coordinate(clipmap, world, normal) -
+                             0.5f * static_cast<float>(bias));
   return static_cast<int>(
       std::clamp(l, 0.0f, static_cast<float>(static_cast<int>(clipmap.levels.size()) - 1)));
 }

@@ -51,8 +51,9 @@ struct VirtualClipmap {
   std::vector<VirtualLevel> levels;
   // Level 0's texel, world units (a power of two); a spot's at unit depth.
   float texel0 = 0.0f;
-  float pixel_angle = 0.0f;  // a pixel's footprint per unit of camera distance
-  glm::vec3 camera{0.0f};    // where footprints are measured from
+  float pixel_angle = 0.0f;              // a pixel's footprint per unit of camera distance
+  glm::vec3 camera{0.0f};                // where footprints are measured from
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};  // the camera's unit view direction
 };
 
 // A pixel's footprint per unit of distance from the camera:
@@ -87,9 +88,22 @@ VirtualClipmap fit_virtual_clipmap(const Light& light, const CameraFrustum& came
 VirtualClipmap fit_virtual_spot_map(const LightView& spot, const CameraFrustum& camera,
                                     int image_height, const VirtualClipmap* previous = nullptr);
 
-// The level a point at `world` reads: the finest whose texel there is no
-// larger than the pixel's footprint (virtual_level() in the shaders).
-int virtual_level_of(const VirtualClipmap& clipmap, const glm::vec3& world);
+// log2 of the largest texel that gives the pixel at `world`, on a receiver
+// with unit normal `normal`, one texel per pixel, over the first level's
+// texel there: the pixel's footprint from its distance and its angle off
+// the view axis, made smaller where the receiver turns from the light
+// more than from the camera (at most four times).
+// virtual_level_coordinate() in shaders/shadow/virtual_lookup.glsl
+// derives it.
+float virtual_level_coordinate(const VirtualClipmap& clipmap, const glm::vec3& world,
+                               const glm::vec3& normal);
+
+// The level a point at `world` reads under level bias `bias` (half levels
+// finer; the GPU's allocation picks it per frame, VirtualPageStats::bias):
+// the finest whose texel gives the pixel one texel, bias / 2 levels finer
+// still (virtual_level_biased() in the shaders).
+int virtual_level_of(const VirtualClipmap& clipmap, const glm::vec3& world, const glm::vec3& normal,
+                     int bias = 0);
 
 // The page-table slot (0..127 on each axis) of world page `page`: the
 // table is addressed modulo 128 in the world's page grid.
