@@ -4,6 +4,7 @@
 // Shared by the marking pass, the page rendering and the lookup, so that
 // they agree on every page.
 #pragma once
+#include "lookup.glsl"
 
 layout(std140, binding = BINDING_VIRTUAL_UBO) uniform VirtualShadowBlock {
   GpuVirtualShadow virtual_shadow;
@@ -30,4 +31,31 @@ ivec2 virtual_page_slot(ivec2 world_page) {
 // The slot of page `page` (0..127 from the level's first) of level `level`.
 ivec2 virtual_level_slot(int level, ivec2 page) {
   return virtual_page_slot(virtual_shadow.origins[level].xy + page);
+}
+
+// The level a window `world_width` wide around a lookup of level `level`
+// reads: the finest at or above `level` where it spans at most `window`
+// texels (level l's texel is params.x 2^l).
+int virtual_window_level(int level, float world_width, float window) {
+  float l = ceil(log2(max(world_width / (window * virtual_shadow.params.x), 1e-30)));
+  return clamp(max(int(l), level), 0, virtual_shadow.counts.y - 1);
+}
+
+// The region where the source's blockers can lie around a receiver at
+// `world` (PCSS's blocker search, backprojection's cone cut at the
+// nearest caster), in world units: the source's width over the depth from
+// the level's nearest caster (blocker_search_width()). Each level has its
+// own nearest depth, so the level the region is read from is the first at
+// or above `level` where it spans at most `window` texels.
+float virtual_search_world(int level, vec3 world) {
+  GpuShadowView view = virtual_shadow.levels[level];
+  return view.source_width * max(light_linear_depth(view, world) - view.depth_range.x, 0.0);
+}
+int virtual_search_level(int level, vec3 world, float window) {
+  int l = level;
+  while (l < virtual_shadow.counts.y - 1 &&
+         virtual_search_world(l, world) > window * virtual_shadow.levels[l].depth_range.z) {
+    ++l;
+  }
+  return l;
 }

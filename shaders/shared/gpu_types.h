@@ -153,7 +153,10 @@ struct GpuVirtualShadow {
   ivec4 previous_origins[MAX_VIRTUAL_LEVELS];
   vec4 camera;  // xyz: where footprints are measured from; w: footprint per unit distance
   // x: level 0's texel (world units); y: texels a lookup reads around its
-  // own (normal offset, filter, bilinear taps, margin); zw: unused
+  // own (normal offset, filter, bilinear taps, margin); z: the window,
+  // in texels, of the source's search region the lookup also reads (pcss:
+  // VIRTUAL_PCSS_WINDOW, backprojection: BACKPROJECTION_MAX_CELLS; 0:
+  // none); w: unused
   vec4 params;
   // x: the light that reads virtual maps (-1: none); y: level count;
   // z: pool pages; w: caster draw commands (one per batch)

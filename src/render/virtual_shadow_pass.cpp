@@ -35,6 +35,7 @@ VirtualShadowPass::VirtualShadowPass()
     : mark_program_(gl::Program::compute("shadow/virtual_mark.comp")),
       allocate_program_(gl::Program::compute("shadow/virtual_allocate.comp")),
       dirty_program_(gl::Program::compute("shadow/virtual_dirty.comp")),
+      bounds_program_(gl::Program::compute("shadow/virtual_bounds.comp")),
       clear_program_(
           gl::Program::graphics("shadow/virtual_clear.vert", "shadow/virtual_clear.frag")),
       page_programs_{page_program(false), page_program(true)},
@@ -59,6 +60,12 @@ void VirtualShadowPass::ensure_pool(int pages) {
                                         .height = kVirtualPageTexels,
                                         .layers = pages,
                                         .label = "virtual page pool"});
+    bounds_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                          .format = GL_RG32F,
+                                          .width = VIRTUAL_BOUNDS_CELLS,
+                                          .height = VIRTUAL_BOUNDS_CELLS,
+                                          .layers = pages,
+                                          .label = "virtual page depth bounds"});
     pool_framebuffer_ = gl::Framebuffer("virtual page pool");
     pool_framebuffer_.attach_depth(pool_);  // layered: gl_Layer picks the page
     pool_framebuffer_.set_draw_buffers(0);
@@ -93,6 +100,8 @@ void VirtualShadowPass::bind() const {
   glBindSampler(UNIT_VIRTUAL_PAGE_TABLE, 0);
   glBindTextureUnit(UNIT_VIRTUAL_POOL, pool_.id());
   glBindSampler(UNIT_VIRTUAL_POOL, 0);
+  glBindTextureUnit(UNIT_VIRTUAL_BOUNDS, bounds_.id());
+  glBindSampler(UNIT_VIRTUAL_BOUNDS, 0);
 }
 
 VirtualPageStats VirtualShadowPass::read_stats() const {
@@ -146,7 +155,13 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
   // (half its width, and one texel for its floor), the bilinear taps, and
   // two texels for the lookups' own lift off the surface and rounding.
   const float filter = shadow.technique == Technique::Pcf ? 0.5f * shadow.pcf_width + 1.0f : 1.0f;
-  block_.params = glm::vec4(clipmap.texel0, shadow.normal_offset + filter + 2.0f, 0.0f, 0.0f);
+  // PCSS and backprojection also read the source's search region, at
+  // coarser levels where it is wider than their window (virtual_mark.comp).
+  const float search = shadow.technique == Technique::Pcss ? float(VIRTUAL_PCSS_WINDOW)
+                       : shadow.technique == Technique::Backprojection
+                           ? float(BACKPROJECTION_MAX_CELLS)
+                           : 0.0f;
+  block_.params = glm::vec4(clipmap.texel0, shadow.normal_offset + filter + 2.0f, search, 0.0f);
   const int batch_words = static_cast<int>(commands_data_.size() - kClearCommandWords);
   block_.counts = glm::ivec4(light_index, levels, pool_pages_, batch_words / 5);
   block_ubo_.update(&block_, sizeof block_);
@@ -190,6 +205,14 @@ void VirtualShadowPass::execute(int light_index, const Light& light, const Virtu
                   GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
   render_pages(scene);
+  // The rendered pages' depth bounds per cell (backprojection's cuts).
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  bounds_program_.use();
+  glBindTextureUnit(UNIT_COMPUTE_INPUT, pool_.id());
+  glBindSampler(UNIT_COMPUTE_INPUT, 0);
+  glBindImageTexture(IMAGE_OUTPUT, bounds_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glDispatchCompute(1, 1, static_cast<GLuint>(pool_pages_));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glPopDebugGroup();
 }
 
