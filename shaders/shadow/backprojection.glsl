@@ -201,7 +201,7 @@ void backprojection_patch(GpuShadowView view, BackprojectionReceiver r, vec2 a0,
 #define BACKPROJECTION_TEXEL_PATCHES_DEFINE(NAME, MAPS, TEXELS, GATHER)                        \
   void NAME(MAPS depth_maps, int layer, GpuShadowView view, BackprojectionReceiver r,          \
             ivec2 first, ivec2 last, inout uvec4 low, inout uvec4 high) {                      \
-    ivec2 size = TEXELS(depth_maps);                                                           \
+    ivec2 size = TEXELS(depth_maps, layer);                                                           \
     for (int ty = max(first.y - 1, 0); ty <= last.y; ++ty) {                                   \
       for (int tx = max(first.x - 1, 0); tx <= last.x; ++tx) {                                 \
         vec4 g = GATHER(depth_maps, layer, ivec2(tx, ty));                                     \

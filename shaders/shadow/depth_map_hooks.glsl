@@ -7,7 +7,7 @@
 // directional light's virtual maps (virtual_shadow.glsl, through the page
 // table) share them. GLSL has no function parameters, so each loop is a
 // macro that defines a function; its hooks are functions of (maps, layer):
-//   TEXELS(maps)                 the map's size in texels (ivec2)
+//   TEXELS(maps, layer)          the map's size in texels (ivec2)
 //   FETCH(maps, layer, texel)    z-bar at a texel inside the map (above 1:
 //                                nothing there, as a missing page reads)
 //   COMPARE(maps, layer, uv, z)  the 2x2 bilinear compare at uv
@@ -15,10 +15,10 @@
 //                                in textureGather's order: (0, 1), (1, 1),
 //                                (1, 0), (0, 0)
 // The cascades' hooks are the plain texture reads below.
-ivec2 shadow_map_texels(sampler2DArray maps) {
+ivec2 shadow_map_texels(sampler2DArray maps, int layer) {
   return textureSize(maps, 0).xy;
 }
-ivec2 shadow_map_texels(sampler2DArrayShadow maps) {
+ivec2 shadow_map_texels(sampler2DArrayShadow maps, int layer) {
   return textureSize(maps, 0).xy;
 }
 float shadow_map_fetch(sampler2DArray maps, int layer, ivec2 texel) {

@@ -37,7 +37,7 @@ vec2 receiver_depth_gradient(GpuShadowView view, ShadowLookup s, vec3 normal, fl
 #define SHADOW_PCF_DEFINE(NAME, MAPS, TEXELS, FETCH)                                           \
   float NAME(MAPS depth_maps, int layer, GpuShadowView view, OccluderCone cone, vec2 uv,       \
              float depth, vec2 gradient, float width, int samples, vec2 rotation) {            \
-    ivec2 size = TEXELS(depth_maps);                                                           \
+    ivec2 size = TEXELS(depth_maps, layer);                                                           \
     vec2 center = uv * vec2(size);                                                             \
     float lit = 0.0;                                                                           \
     for (int i = 0; i < samples; ++i) {                                                        \
@@ -65,7 +65,7 @@ SHADOW_PCF_DEFINE(shadow_pcf, sampler2DArray, shadow_map_texels, shadow_map_fetc
 #define SHADOW_PCF_BILINEAR_DEFINE(NAME, MAPS, TEXELS, COMPARE)                                \
   float NAME(MAPS maps, int layer, vec2 uv, float depth, vec2 gradient, float width,           \
              int samples, vec2 shift) {                                                        \
-    vec2 size = vec2(TEXELS(maps));                                                            \
+    vec2 size = vec2(TEXELS(maps, layer));                                                            \
     if (samples <= 1) return COMPARE(maps, layer, uv, depth);                                  \
     float lit = 0.0;                                                                           \
     for (int i = 0; i < samples; ++i) {                                                        \

@@ -17,7 +17,7 @@
 #define SHADOW_BLOCKER_SEARCH_DEFINE(NAME, MAPS, TEXELS, GATHER)                               \
   vec2 NAME(MAPS depth_maps, int v, GpuShadowView view, vec2 center, float z, vec2 gradient,   \
             OccluderCone cone, vec2 rotation, float search, int samples) {                     \
-    ivec2 size = TEXELS(depth_maps);                                                           \
+    ivec2 size = TEXELS(depth_maps, v);                                                           \
     /* textureGather's order of the 2x2 texels, from the lower-left one. */                    \
     const ivec2 gathered[4] = ivec2[](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0));        \
     float blockers = 0.0, blocker_depth = 0.0;                                                 \

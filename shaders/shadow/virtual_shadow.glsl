@@ -1,5 +1,5 @@
-// hard, pcf, pcss and backprojection read through a directional light's
-// virtual shadow maps: every texel fetch finds its page in the page table,
+// hard, pcf, pcss and backprojection read through a light's virtual
+// shadow maps: every texel fetch finds its page in the page table,
 // so a window across a page border reads both pages, with no seam. The
 // loops are
 // pcf.glsl's, pcss.glsl's and backprojection.glsl's, given the page
@@ -8,7 +8,8 @@
 #pragma once
 #include "virtual_lookup.glsl"
 
-// One layer per level of 128 x 128 entries (PAGE_* flags, pool page).
+// One layer per level of 128 x 128 entries (PAGE_* flags, pool page); a
+// spot's mip level m uses its first (128 / 2^m)^2.
 layout(binding = UNIT_VIRTUAL_PAGE_TABLE) uniform usampler2DArray virtual_page_table;
 // The physical pages: z-bar of their level, one 128^2 layer each.
 layout(binding = UNIT_VIRTUAL_POOL) uniform sampler2DArray virtual_pool;
@@ -28,7 +29,7 @@ uint virtual_page_entry(int level, ivec2 page) {
 // z-bar at virtual texel `texel` of level `level` (clamped to the level),
 // or VIRTUAL_MISSING_DEPTH where its page is not resident.
 float virtual_texel_depth(int level, ivec2 texel) {
-  texel = clamp(texel, ivec2(0), ivec2(VIRTUAL_TEXELS - 1));
+  texel = clamp(texel, ivec2(0), ivec2(virtual_level_texels(level) - 1));
   uint entry = virtual_page_entry(level, texel / VIRTUAL_PAGE_TEXELS);
   if ((entry & PAGE_RESIDENT) == 0u) return VIRTUAL_MISSING_DEPTH;
   return texelFetch(virtual_pool,
@@ -37,10 +38,10 @@ float virtual_texel_depth(int level, ivec2 texel) {
 }
 
 // The page table's hooks for the shared loops (depth_map_hooks.glsl): the
-// map is a level (`layer`) of VIRTUAL_TEXELS^2 texels; `pool` is
-// virtual_pool, which virtual_texel_depth() reads.
-ivec2 virtual_map_texels(sampler2DArray pool) {
-  return ivec2(VIRTUAL_TEXELS);
+// map is a level (`layer`); `pool` is virtual_pool, which
+// virtual_texel_depth() reads.
+ivec2 virtual_map_texels(sampler2DArray pool, int level) {
+  return ivec2(virtual_level_texels(level));
 }
 float virtual_map_fetch(sampler2DArray pool, int level, ivec2 texel) {
   return virtual_texel_depth(level, texel);
@@ -55,7 +56,7 @@ vec4 virtual_map_gather(sampler2DArray pool, int level, ivec2 lower_left) {
 // The hardware's 2x2 bilinear compare, fetched texel by texel through the
 // page table: the four tests weighted as GL_LINEAR weighs them.
 float virtual_map_compare(sampler2DArray pool, int level, vec2 uv, float depth) {
-  vec2 p = uv * float(VIRTUAL_TEXELS) - 0.5;
+  vec2 p = uv * float(virtual_level_texels(level)) - 0.5;
   ivec2 base = ivec2(floor(p));
   vec2 f = p - vec2(base);
   vec4 occluders = virtual_map_gather(pool, level, base);
@@ -76,8 +77,9 @@ BACKPROJECTION_TEXEL_PATCHES_DEFINE(virtual_backprojection_patches, sampler2DArr
 // missing page holds nothing.
 vec2 virtual_depth_bounds(int level, ivec2 first, ivec2 last) {
   const int cell = VIRTUAL_PAGE_TEXELS / VIRTUAL_BOUNDS_CELLS;
-  ivec2 lo = clamp(first, ivec2(0), ivec2(VIRTUAL_TEXELS - 1)) / cell;
-  ivec2 hi = clamp(last, ivec2(0), ivec2(VIRTUAL_TEXELS - 1)) / cell;
+  ivec2 size = ivec2(virtual_level_texels(level));
+  ivec2 lo = clamp(first, ivec2(0), size - 1) / cell;
+  ivec2 hi = clamp(last, ivec2(0), size - 1) / cell;
   vec2 bounds = vec2(1.0e30, -1.0e30);
   for (int cy = lo.y; cy <= hi.y; ++cy) {
     for (int cx = lo.x; cx <= hi.x; ++cx) {
@@ -101,32 +103,37 @@ vec2 virtual_depth_bounds(int level, ivec2 first, ivec2 last) {
 
 // Whether the page of level `level` under `world` is resident.
 bool virtual_page_resident(int level, vec3 world) {
-  vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world);
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return false;
-  ivec2 page = ivec2(floor(uv * float(VIRTUAL_PAGES)));
+  vec4 clip = virtual_shadow.levels[level].view_projection * vec4(world, 1.0);
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  if (clip.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0))))
+    return false;
+  ivec2 page = ivec2(floor(uv * float(virtual_level_texels(level) / VIRTUAL_PAGE_TEXELS)));
   return (virtual_page_entry(level, page) & PAGE_RESIDENT) != 0u;
 }
 
-// The level a lookup at `world` reads: virtual_level(), or where its page
-// is missing (the pool ran out; or the point lies within a rounding error
-// of a level's boundary and its neighbours marked the other level), the
-// nearest coarser level holding it, then the nearest finer; -1 if none.
-int virtual_resident_level(vec3 world) {
-  int level = virtual_level(world);
+// The level light i's lookup at `world` reads: virtual_level(), or where
+// its page is missing (the pool ran out; or the point lies within a
+// rounding error of a level's boundary and its neighbours marked the
+// other level), the nearest coarser level holding it, then the nearest
+// finer; -1 if none.
+int virtual_resident_level(int i, vec3 world) {
+  int level = virtual_level(i, world);
   if (virtual_page_resident(level, world)) return level;
-  for (int l = level + 1; l < virtual_shadow.counts.y; ++l) {
+  ivec4 light = virtual_shadow.lights[i];
+  for (int l = level + 1; l < light.x + light.y; ++l) {
     if (virtual_page_resident(l, world)) return l;
   }
-  for (int l = level - 1; l >= 0; --l) {
+  for (int l = level - 1; l >= light.x; --l) {
     if (virtual_page_resident(l, world)) return l;
   }
   return -1;
 }
 
-// The texel a virtual map's lookup reads at `world` (texel_density.glsl's
-// shading_texel() for the light with virtual maps): its resident level's.
-ShadingTexel virtual_shading_texel(vec3 world) {
-  int level = virtual_resident_level(world);
+// The texel light i's virtual map's lookup reads at `world`
+// (texel_density.glsl's shading_texel() for a light with virtual maps):
+// its resident level's.
+ShadingTexel virtual_shading_texel(int i, vec3 world) {
+  int level = virtual_resident_level(i, world);
   if (level < 0) return ShadingTexel(0.0, false);
   GpuShadowView view = virtual_shadow.levels[level];
   return ShadingTexel(shadow_texel_world(view, light_linear_depth(view, world)), true);
@@ -154,39 +161,41 @@ VirtualReceiver virtual_receiver(int level, GpuShadow params, GpuLight light, ve
 
 // The hard test at the texel under the receiver's lookup.
 float virtual_hard(VirtualReceiver r) {
-  float occluder = virtual_texel_depth(r.level, ivec2(floor(r.s.uv * float(VIRTUAL_TEXELS))));
+  vec2 texel = r.s.uv * float(virtual_level_texels(r.level));
+  float occluder = virtual_texel_depth(r.level, ivec2(floor(texel)));
   return r.z <= occluder ? 1.0 : 0.0;
 }
 
-// PCSS (pcss.glsl's shadow_pcss()) over the clipmap: the blocker search
-// over the region the source covers from the level's nearest caster, read
-// at the level where it fits the window (virtual_search_level()); the
-// penumbra's width in world units from the blockers' mean depth
-// (Fernando 2005, eq. 1, with the sun's source width per unit distance);
-// the filter at the level where that width fits the window. A penumbra
+// PCSS (pcss.glsl's shadow_pcss()) over light i's levels: the blocker
+// search over the region the source covers from the level's nearest
+// caster, read at the level where it fits the window
+// (virtual_search_level()); the penumbra's width in world units from the
+// blockers' mean depth (Fernando 2005, eq. 1; a light's levels share its
+// linear depths); the filter at the level where that width fits the
+// window. A penumbra
 // wider than a page is read from a coarser level rather than cut, and one
 // that crosses a level border is filtered at the same level on both sides
 // wherever it is wider than the finer level's window.
-float virtual_pcss(VirtualReceiver r, GpuShadow params, GpuLight light, vec3 world, vec3 normal,
-                   vec2 rotation, float noise) {
-  VirtualReceiver search = virtual_receiver(
-      virtual_search_level(r.level, world, float(VIRTUAL_PCSS_WINDOW)), params, light, world, normal);
+float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, vec3 world,
+                   vec3 normal, vec2 rotation, float noise) {
+  const float window = float(VIRTUAL_PCSS_WINDOW);
+  VirtualReceiver search = virtual_receiver(virtual_search_level(i, r.level, world, window), params,
+                                            light, world, normal);
   float d_receiver = linear_depth_of(search.view, search.s.depth);
   float search_width = min(blocker_search_width(search.view, d_receiver), float(MAX_PCF_WIDTH));
   vec2 gradient = receiver_depth_gradient(search.view, search.s, normal, params.max_slope);
   OccluderCone cone = occluder_cone(light, search.view, search.s.position, 0.0);
   vec2 found = virtual_blocker_search(
-      virtual_pool, search.level, search.view, search.s.uv * float(VIRTUAL_TEXELS), search.z,
+      virtual_pool, search.level, search.view, search.s.uv * float(virtual_level_texels(search.level)), search.z,
       gradient, cone, rotation, search_width,
       pcss_search_sample_count(search_width, params.pcss_blocker_samples));
   if (found.x == 0.0) return 1.0;  // nothing between the receiver and the light
   float d_blocker = linear_depth_of(search.view, found.y / found.x);
   float world_width = penumbra_world_width(search.view, d_receiver, d_blocker);
   if (world_width <= 0.0) return virtual_hard(r);
-  VirtualReceiver f = virtual_receiver(
-      virtual_window_level(r.level, world_width, float(VIRTUAL_PCSS_WINDOW)), params, light, world,
-      normal);
-  float width = min(world_width / f.view.depth_range.z, float(MAX_PCF_WIDTH));
+  VirtualReceiver f = virtual_receiver(virtual_window_level(i, r.level, world, world_width, window),
+                                       params, light, world, normal);
+  float width = min(world_width / shadow_texel_world(f.view, d_receiver), float(MAX_PCF_WIDTH));
   float kernel = pcss_kernel_width(width);
   return virtual_pcf_bilinear(virtual_pool, f.level, f.s.uv, f.z,
                               receiver_depth_gradient(f.view, f.s, normal, params.max_slope),
@@ -194,33 +203,37 @@ float virtual_pcss(VirtualReceiver r, GpuShadow params, GpuLight light, vec3 wor
                               square_sample_shift(noise));
 }
 
-// Backprojection (backprojection.glsl's shadow_backprojection()) over the
-// clipmap: the cone from the receiver to the sun's disc, cut at the level's
+// Backprojection (backprojection.glsl's shadow_backprojection()) over
+// light i's levels: the cone from the receiver to the source (the sun's
+// disc, a spot's square), cut at the level's
 // nearest caster and then twice at the nearest depth the pages' cells find
 // in it (virtual_depth_bounds()), is read at the level where it spans at
-// most BACKPROJECTION_MAX_CELLS texels, texel by texel: the clipmap's
-// coarser levels stand for the hierarchy's coarser cells (a level's texel
+// most BACKPROJECTION_MAX_CELLS texels, texel by texel: the coarser
+// levels stand for the hierarchy's coarser cells (a level's texel
 // holds the depth at its centre where a cell holds its nearest). If the
 // cut region fits a finer level (at least the receiver's), it is read
 // there, cut again from where the first level's cuts left it. `pixel`
 // seeds the shift of the source's grid.
-float virtual_backprojection(VirtualReceiver r0, GpuShadow params, GpuLight light, vec3 world,
-                             vec3 normal, ivec2 pixel) {
+float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLight light,
+                             vec3 world, vec3 normal, ivec2 pixel) {
   if (r0.view.source_width <= 0.0) return virtual_hard(r0);  // a point source
   const float window = float(BACKPROJECTION_MAX_CELLS);
-  int level = virtual_search_level(r0.level, world, window);
-  float cut_world = -1.0;  // the first level's cut region's half-width, world units
+  int level = virtual_search_level(i, r0.level, world, window);
+  // The first level's cut region's half-width, in units of the view's
+  // depth_range.z (world units, or tangent units of a spot's map).
+  float cut = -1.0;
   for (int pass = 0; pass < 2; ++pass) {
     VirtualReceiver v = virtual_receiver(level, params, light, world, normal);
     GpuShadowView view = v.view;
     vec2 gradient = receiver_depth_gradient(view, v.s, normal, params.max_slope);
-    BackprojectionReceiver r = backprojection_receiver(view, v.s, v.z, gradient, normal,
-                                                       ivec2(VIRTUAL_TEXELS), pixel);
-    // The cuts (shadow_backprojection()'s), orthographic: k = d_r - d.
+    ivec2 size = ivec2(virtual_level_texels(level));
+    BackprojectionReceiver r =
+        backprojection_receiver(view, v.s, v.z, gradient, normal, size, pixel);
+    // The cuts (shadow_backprojection()'s).
     float reach_per_k = 0.5 * view.source_width / view.depth_range.z;
     // At most the window (only the coarsest level can be asked for more:
     // blockers beyond it are missed there).
-    float reach = min(cut_world >= 0.0 ? cut_world / view.depth_range.z
+    float reach = min(cut >= 0.0 ? cut / view.depth_range.z
                                        : reach_per_k * max(backprojection_k(view, view.depth_range.x,
                                                                             r.receiver),
                                                            0.0),
@@ -228,35 +241,37 @@ float virtual_backprojection(VirtualReceiver r0, GpuShadow params, GpuLight ligh
     ivec2 first, last;
     vec2 bounds = vec2(0.0);
     for (int cut = 0; cut < 2; ++cut) {
-      backprojection_region(r.center, reach, ivec2(VIRTUAL_TEXELS), first, last);
+      backprojection_region(r.center, reach, size, first, last);
       bounds = virtual_depth_bounds(level, first, last);
       float nearest = linear_depth_of(view, min(bounds.x, v.z));
       reach = min(reach, reach_per_k * max(backprojection_k(view, nearest, r.receiver), 0.0));
     }
-    int finer = virtual_window_level(r0.level, (2.0 * reach + 1.0) * view.depth_range.z, window);
+    float texel_world = shadow_texel_world(view, light_linear_depth(view, world));
+    int finer = virtual_window_level(i, r0.level, world, (2.0 * reach + 1.0) * texel_world, window);
     if (pass == 0 && finer < level) {
       level = finer;
-      cut_world = reach * view.depth_range.z;
+      cut = reach * view.depth_range.z;
       continue;
     }
-    backprojection_region(r.center, reach, ivec2(VIRTUAL_TEXELS), first, last);
+    backprojection_region(r.center, reach, size, first, last);
     // The receiver's plane over the region lies within z -+ slope.
     float slope = (abs(gradient.x) + abs(gradient.y)) * (reach + 1.0);
     if (bounds.x >= v.z + slope) return 1.0;  // nothing in front of the receiver
     if (bounds.y < v.z - slope) return 0.0;   // all of it in front: umbra
     uvec4 low = uvec4(0u), high = uvec4(0u);
     virtual_backprojection_patches(virtual_pool, level, view, r, first, last, low, high);
-    return backprojection_lit_fraction(view, r, low, high, true);
+    return backprojection_lit_fraction(view, r, low, high, view.perspective == 0);
   }
   return 1.0;
 }
 
-// Fraction of the light's light reaching the point through its virtual
-// maps, for SHADOW_TECHNIQUE hard, pcf, pcss or backprojection. `rotation` is the angle
-// 2 pi noise, `noise` the pixel's noise value in [0, 1).
-float virtual_shadow_factor(GpuShadow params, GpuLight light, vec3 world, vec3 normal,
+// Fraction of light i's light reaching the point through its virtual
+// maps, for SHADOW_TECHNIQUE hard, pcf, pcss or backprojection.
+// `rotation` is the angle 2 pi noise, `noise` the pixel's noise value in
+// [0, 1).
+float virtual_shadow_factor(int i, GpuShadow params, GpuLight light, vec3 world, vec3 normal,
                             vec2 rotation, float noise) {
-  int level = virtual_resident_level(world);
+  int level = virtual_resident_level(i, world);
   if (level < 0) return 1.0;
   VirtualReceiver r = virtual_receiver(level, params, light, world, normal);
   if (!r.s.inside) return 1.0;
@@ -265,12 +280,19 @@ float virtual_shadow_factor(GpuShadow params, GpuLight light, vec3 world, vec3 n
   if (params.pcf_samples == 1) return virtual_map_compare(virtual_pool, level, r.s.uv, r.z);
   vec2 gradient = receiver_depth_gradient(r.view, r.s, normal, params.max_slope);
   OccluderCone cone = occluder_cone(light, r.view, r.s.position, PCF_MIN_CONE_TAN);
-  return virtual_pcf(virtual_pool, level, r.view, cone, r.s.uv, r.z, gradient, params.pcf_width,
+  // The level's texel is the pixel's footprint rounded down to a power of
+  // two: the window is pcf_width footprints wide (1 to 2 texels each), so
+  // its world width follows the footprint and does not double where the
+  // level changes (a step in the penumbra's width at each level border).
+  float footprint = length(world - virtual_shadow.camera.xyz) * virtual_shadow.camera.w;
+  float width = params.pcf_width * clamp(footprint / r.s.texel, 1.0, 2.0);
+  return virtual_pcf(virtual_pool, level, r.view, cone, r.s.uv, r.z, gradient, width,
                      params.pcf_samples, rotation);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCSS
-  return virtual_pcss(r, params, light, world, normal, rotation, noise);
+  return virtual_pcss(i, r, params, light, world, normal, rotation, noise);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
-  return virtual_backprojection(r, params, light, world, normal, ivec2(floor(gl_FragCoord.xy)));
+  return virtual_backprojection(i, r, params, light, world, normal,
+                                ivec2(floor(gl_FragCoord.xy)));
 #else
   return virtual_hard(r);
 #endif
