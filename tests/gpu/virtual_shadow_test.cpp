@@ -206,7 +206,10 @@ TEST_F(GpuTest, VirtualPageTexelsEqualAConventionalMap) {
 // Virtual maps shade as the cascades do where both have texels enough:
 // the default scene's shadow factor under the sun, hard and pcf, against
 // the cascades' at 4096^2 (whose texels there are as small as the
-// levels'), differing only along the shadows' edges.
+// levels'), differing only along the shadows' edges. (Virtual pcf's
+// window is pcf_width pixel footprints, 1 to 2 texels each, so that it
+// does not double at a level border: its penumbrae are up to twice the
+// cascades', and more of their pixels differ.)
 TEST_F(GpuTest, VirtualShadowsAgreeWithFineCascades) {
   Renderer renderer(sun_scene());
   const RenderSettings render = shadow_view(96, 64);
@@ -226,7 +229,8 @@ TEST_F(GpuTest, VirtualShadowsAgreeWithFineCascades) {
       differing += std::abs(expected.rgba[p] - actual.rgba[p]) > 0.5f ? 1 : 0;
     }
     EXPECT_GT(shadowed, compared / 50) << "the view shows shadows";
-    EXPECT_LE(differing, compared / 100) << enum_name<Technique>(kTechniqueNames, t);
+    EXPECT_LE(differing, compared / (t == Technique::Pcf ? 40 : 100))
+        << enum_name<Technique>(kTechniqueNames, t);
   }
 }
 
