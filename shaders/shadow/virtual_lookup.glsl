@@ -66,15 +66,20 @@ int virtual_window_level(int i, int level, vec3 world, float world_width, float 
 
 // The region where the source's blockers can lie around a receiver at
 // `world` (PCSS's blocker search, backprojection's cone cut at the nearest
-// caster), in texels of level `level`: blocker_search_width(), from the
-// level's own nearest depth. The level it is read from is the first at or
-// above `level` where it spans at most `window` texels.
-float virtual_search_texels(int level, vec3 world) {
+// caster), in texels of level `at` when the receiver reads level `level`:
+// blocker_search_width() from the receiver's level's nearest depth (its
+// column holds every caster that can shadow it), scaled by the ratio of
+// the two levels' texels. One region in world units for every level it is
+// read from, so the blockers found do not change where that level does.
+float virtual_search_texels(int level, int at, vec3 world) {
   GpuShadowView view = virtual_shadow.levels[level];
-  return blocker_search_width(view, light_linear_depth(view, world));
+  return blocker_search_width(view, light_linear_depth(view, world)) * view.depth_range.z /
+         virtual_shadow.levels[at].depth_range.z;
 }
+// The level the region is read from: the first at or above `level` where
+// it spans at most `window` texels.
 int virtual_search_level(int i, int level, vec3 world, float window) {
   int l = level;
-  while (l < virtual_last_level(i) && virtual_search_texels(l, world) > window) ++l;
+  while (l < virtual_last_level(i) && virtual_search_texels(level, l, world) > window) ++l;
   return l;
 }

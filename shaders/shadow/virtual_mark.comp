@@ -43,7 +43,7 @@ void main() {
       int texels = virtual_level_texels(l);
       vec2 texel = uv * float(texels);
       float reach = virtual_shadow.params.y;
-      if (window > 0.0) reach += 0.5 * min(virtual_search_texels(l, world), window);
+      if (window > 0.0) reach += 0.5 * min(virtual_search_texels(level, l, world), window);
       ivec2 last_page = ivec2(texels / VIRTUAL_PAGE_TEXELS - 1);
       ivec2 first =
           clamp(ivec2(floor((texel - reach) / float(VIRTUAL_PAGE_TEXELS))), ivec2(0), last_page);

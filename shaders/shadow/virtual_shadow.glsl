@@ -167,7 +167,7 @@ float virtual_hard(VirtualReceiver r) {
 }
 
 // PCSS (pcss.glsl's shadow_pcss()) over light i's levels: the blocker
-// search over the region the source covers from the level's nearest
+// search over the region the source covers from the receiver level's nearest
 // caster, read at the level where it fits the window
 // (virtual_search_level()); the penumbra's width in world units from the
 // blockers' mean depth (Fernando 2005, eq. 1; a light's levels share its
@@ -182,7 +182,8 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
   VirtualReceiver search = virtual_receiver(virtual_search_level(i, r.level, world, window), params,
                                             light, world, normal);
   float d_receiver = linear_depth_of(search.view, search.s.depth);
-  float search_width = min(blocker_search_width(search.view, d_receiver), float(MAX_PCF_WIDTH));
+  float search_width =
+      min(virtual_search_texels(r.level, search.level, world), float(MAX_PCF_WIDTH));
   vec2 gradient = receiver_depth_gradient(search.view, search.s, normal, params.max_slope);
   OccluderCone cone = occluder_cone(light, search.view, search.s.position, 0.0);
   vec2 found = virtual_blocker_search(
@@ -205,7 +206,7 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
 
 // Backprojection (backprojection.glsl's shadow_backprojection()) over
 // light i's levels: the cone from the receiver to the source (the sun's
-// disc, a spot's square), cut at the level's
+// disc, a spot's square), cut at the receiver's level's
 // nearest caster and then twice at the nearest depth the pages' cells find
 // in it (virtual_depth_bounds()), is read at the level where it spans at
 // most BACKPROJECTION_MAX_CELLS texels, texel by texel: the coarser
@@ -234,9 +235,7 @@ float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLig
     // At most the window (only the coarsest level can be asked for more:
     // blockers beyond it are missed there).
     float reach = min(cut >= 0.0 ? cut / view.depth_range.z
-                                       : reach_per_k * max(backprojection_k(view, view.depth_range.x,
-                                                                            r.receiver),
-                                                           0.0),
+                                 : 0.5 * virtual_search_texels(r0.level, level, world),
                       0.5 * window);
     ivec2 first, last;
     vec2 bounds = vec2(0.0);
