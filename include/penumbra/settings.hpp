@@ -78,11 +78,13 @@ inline constexpr std::array<std::pair<ShadowMapKind, std::string_view>, 2> kShad
     {ShadowMapKind::Virtual, "virtual"},
 }};
 
-// Whether a technique reads virtual shadow maps: the depth-map techniques.
-// The moment techniques filter their maps as whole textures (a blur or a
-// summed-area table across page borders), so they stay on cascades.
+// Whether a technique reads virtual shadow maps: the depth-map techniques,
+// which read texels one by one through the page table. The moment
+// techniques filter their maps as whole textures (a blur or a summed-area
+// table across page borders), so they stay on cascades.
 constexpr bool supports_virtual_maps(Technique t) {
-  return t == Technique::None || t == Technique::Hard || t == Technique::Pcf;
+  return t == Technique::None || t == Technique::Hard || t == Technique::Pcf ||
+         t == Technique::Pcss || t == Technique::Backprojection;
 }
 
 enum class View {

@@ -48,16 +48,10 @@
 // an object behind another) do not block.
 #pragma once
 #include "accumulate.glsl"
+#include "depth_map_hooks.glsl"
 #include "penumbra.glsl"
 
 #define BACKPROJECTION_SIDE 16  // source points per side (a uint holds two rows)
-// Patches per side of the blockers' region at most: a wider region is read
-// from the hierarchy's level whose cells it spans in at most this many.
-// Default scene, source 1.5, 320x180, 1024^2 maps (pcss_noise_test.cpp):
-// RMSE 0.0246 at 16, 0.0167 at 32, 0.0150 at 36, 0.0115 at 40 and 48 (a
-// silhouette moves by up to half a cell); the lighting pass takes 1.5x,
-// 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
-#define BACKPROJECTION_MAX_CELLS 40
 
 // Occluders below the receiver's tangent plane cannot block the light that
 // reaches it (the rays that count lie above the plane), within this sine
@@ -200,6 +194,74 @@ void backprojection_patch(GpuShadowView view, BackprojectionReceiver r, vec2 a0,
   if (c0 < c1 && r0 < r1) backprojection_hide(low, high, c0, c1, r0, r1);
 }
 
+// The patches of texels [first, last] and of the row and column below
+// them, whose patches may reach into the region. GATHER at a texel reads
+// it (w), its right (z) and upper (x) neighbours (textureGather at its
+// upper right corner; depth_map_hooks.glsl).
+#define BACKPROJECTION_TEXEL_PATCHES_DEFINE(NAME, MAPS, TEXELS, GATHER)                        \
+  void NAME(MAPS depth_maps, int layer, GpuShadowView view, BackprojectionReceiver r,          \
+            ivec2 first, ivec2 last, inout uvec4 low, inout uvec4 high) {                      \
+    ivec2 size = TEXELS(depth_maps, layer);                                                           \
+    for (int ty = max(first.y - 1, 0); ty <= last.y; ++ty) {                                   \
+      for (int tx = max(first.x - 1, 0); tx <= last.x; ++tx) {                                 \
+        vec4 g = GATHER(depth_maps, layer, ivec2(tx, ty));                                     \
+        BACKPROJECTION_FETCHED(1);                                                             \
+        vec2 a0 = vec2(tx, ty) - r.center;                                                     \
+        float right = tx + 1 < size.x ? g.z : 2.0, up = ty + 1 < size.y ? g.x : 2.0;           \
+        backprojection_patch(view, r, a0, a0 + 1.0, g.w, right, up, low, high);                \
+      }                                                                                        \
+    }                                                                                          \
+  }
+BACKPROJECTION_TEXEL_PATCHES_DEFINE(backprojection_texel_patches, sampler2DArray,
+                                    shadow_map_texels, shadow_map_gather)
+
+// The receiver of lookup s (biased z-bar z, receiver-plane gradient
+// `gradient` per texel, world normal `normal`) in view `view`, whose map is
+// `size` texels wide; `pixel` seeds the shift of the source's grid.
+BackprojectionReceiver backprojection_receiver(GpuShadowView view, ShadowLookup s, float z,
+                                               vec2 gradient, vec3 normal, ivec2 size,
+                                               ivec2 pixel) {
+  BackprojectionReceiver r;
+  r.center = s.uv * vec2(size);
+  r.z = z;
+  r.gradient = gradient;
+  r.p = (view.view * vec4(s.position, 1.0)).xyz;
+  r.n = normalize(mat3(view.view) * normal);
+  float d_r = -r.p.z;
+  r.receiver = view.perspective != 0 ? 1.0 / d_r : d_r;
+  r.shift = accumulate_hash(pixel, 977).xy;
+  return r;
+}
+
+// The lit fraction of the source points the mask (low, high) leaves
+// visible. `disc`: the source is a disc (a point light's sphere, the sun).
+float backprojection_lit_fraction(GpuShadowView view, BackprojectionReceiver r, uvec4 low,
+                                  uvec4 high, bool disc) {
+  // Each point weighs cos theta_receiver dw, dw its solid angle: for a
+  // point on the source's plane, facing the view's -z, (d_r / |t|) dA /
+  // |t|^2 (d_r cancels in the ratio); for a direction (x, y, 1) of the
+  // sun's, dA / |t|^3. Both are (n . t) / |t|^4. A disc keeps the points
+  // inside its circle.
+  float width = view.source_width;
+  float total = 0.0, lit = 0.0;
+  float radius2 = disc ? 0.25 * width * width : 1.0e30;
+  for (int j = 0; j < BACKPROJECTION_SIDE; ++j) {
+    uint word = j < 8 ? low[j >> 1] : high[(j - 8) >> 1];
+    uint row = word >> uint(16 * (j & 1));
+    float y = ((float(j) + r.shift.y) / float(BACKPROJECTION_SIDE) - 0.5) * width;
+    for (int i = 0; i < BACKPROJECTION_SIDE; ++i) {
+      float x = ((float(i) + r.shift.x) / float(BACKPROJECTION_SIDE) - 0.5) * width;
+      if (x * x + y * y > radius2) continue;
+      vec3 t = view.perspective != 0 ? vec3(x, y, 0.0) - r.p : vec3(x, y, 1.0);
+      float d2 = dot(t, t);
+      float weight = max(dot(r.n, t), 0.0) / (d2 * d2);
+      total += weight;
+      if (((row >> uint(i)) & 1u) == 0u) lit += weight;
+    }
+  }
+  return total > 0.0 ? lit / total : 1.0;
+}
+
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
 // gradient `gradient` per texel, world normal `normal`) in view `view`
 // (layer `layer` of depth_maps, and of `hierarchy`, its min/max depth
@@ -214,15 +276,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   float texel = view.depth_range.z;
   float width = view.source_width;
   disc = disc || view.perspective == 0;
-  BackprojectionReceiver r;
-  r.center = s.uv * vec2(size);
-  r.z = z;
-  r.gradient = gradient;
-  r.p = (view.view * vec4(s.position, 1.0)).xyz;
-  r.n = normalize(mat3(view.view) * normal);
-  float d_r = -r.p.z;
-  r.receiver = view.perspective != 0 ? 1.0 / d_r : d_r;
-  r.shift = accumulate_hash(pixel, 977).xy;
+  BackprojectionReceiver r = backprojection_receiver(view, s, z, gradient, normal, size, pixel);
   if (width <= 0.0) {  // a point source: the hard test
     return texelFetch(depth_maps, ivec3(ivec2(floor(r.center)), layer), 0).r < z ? 0.0 : 1.0;
   }
@@ -259,18 +313,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   uvec4 low = uvec4(0u), high = uvec4(0u);
   int span = max(last.x - first.x, last.y - first.y) + 1;
   if (span <= BACKPROJECTION_MAX_CELLS) {
-    // The texels themselves, and the row and column below the region,
-    // whose patches may reach into it. textureGather at a texel's upper
-    // right corner reads it (w), its right (z) and upper (x) neighbours.
-    for (int ty = max(first.y - 1, 0); ty <= last.y; ++ty) {
-      for (int tx = max(first.x - 1, 0); tx <= last.x; ++tx) {
-        vec4 g = textureGather(depth_maps, vec3(vec2(tx + 1, ty + 1) / vec2(size), float(layer)));
-        BACKPROJECTION_FETCHED(1);
-        vec2 a0 = vec2(tx, ty) - r.center;
-        float right = tx + 1 < size.x ? g.z : 2.0, up = ty + 1 < size.y ? g.x : 2.0;
-        backprojection_patch(view, r, a0, a0 + 1.0, g.w, right, up, low, high);
-      }
-    }
+    backprojection_texel_patches(depth_maps, layer, view, r, first, last, low, high);
   } else {
     // The hierarchy's cells 2^level texels wide (level - 1 of it). A cell
     // whose depths all lie in front is a patch at its nearest depth; a cell
@@ -304,26 +347,5 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     }
   }
 
-  // Each point weighs cos theta_receiver dw, dw its solid angle: for a
-  // point on the source's plane, facing the view's -z, (d_r / |t|) dA /
-  // |t|^2 (d_r cancels in the ratio); for a direction (x, y, 1) of the
-  // sun's, dA / |t|^3. Both are (n . t) / |t|^4. A disc keeps the points
-  // inside its circle.
-  float total = 0.0, lit = 0.0;
-  float radius2 = disc ? 0.25 * width * width : 1.0e30;
-  for (int j = 0; j < BACKPROJECTION_SIDE; ++j) {
-    uint word = j < 8 ? low[j >> 1] : high[(j - 8) >> 1];
-    uint row = word >> uint(16 * (j & 1));
-    float y = ((float(j) + r.shift.y) / float(BACKPROJECTION_SIDE) - 0.5) * width;
-    for (int i = 0; i < BACKPROJECTION_SIDE; ++i) {
-      float x = ((float(i) + r.shift.x) / float(BACKPROJECTION_SIDE) - 0.5) * width;
-      if (x * x + y * y > radius2) continue;
-      vec3 t = view.perspective != 0 ? vec3(x, y, 0.0) - r.p : vec3(x, y, 1.0);
-      float d2 = dot(t, t);
-      float weight = max(dot(r.n, t), 0.0) / (d2 * d2);
-      total += weight;
-      if (((row >> uint(i)) & 1u) == 0u) lit += weight;
-    }
-  }
-  return total > 0.0 ? lit / total : 1.0;
+  return backprojection_lit_fraction(view, r, low, high, disc);
 }

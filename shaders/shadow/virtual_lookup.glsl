@@ -7,6 +7,7 @@
 // they agree on every page.
 #pragma once
 #include "lookup.glsl"
+#include "penumbra.glsl"
 
 layout(std140, binding = BINDING_VIRTUAL_UBO) uniform VirtualShadowBlock {
   GpuVirtualShadow virtual_shadow;
@@ -77,4 +78,42 @@ ivec2 virtual_page_slot(ivec2 world_page) {
 // (a spot level's origin is (0, 0): its slot is the page).
 ivec2 virtual_level_slot(int level, ivec2 page) {
   return virtual_page_slot(virtual_shadow.origins[level].xy + page);
+}
+
+// The last of light i's levels.
+int virtual_last_level(int i) {
+  return virtual_shadow.lights[i].x + virtual_shadow.lights[i].y - 1;
+}
+
+// The level a window `world_width` wide at `world` around a lookup of
+// light i's level `level` reads: the first at or above `level` (coarser)
+// where it spans at most `window` texels.
+int virtual_window_level(int i, int level, vec3 world, float world_width, float window) {
+  int l = level;
+  while (l < virtual_last_level(i)) {
+    GpuShadowView view = virtual_shadow.levels[l];
+    if (world_width <= window * shadow_texel_world(view, light_linear_depth(view, world))) break;
+    ++l;
+  }
+  return l;
+}
+
+// The region where the source's blockers can lie around a receiver at
+// `world` (PCSS's blocker search, backprojection's cone cut at the nearest
+// caster), in texels of level `at` when the receiver reads level `level`:
+// blocker_search_width() from the receiver's level's nearest depth (its
+// column holds every caster that can shadow it), scaled by the ratio of
+// the two levels' texels. One region in world units for every level it is
+// read from, so the blockers found do not change where that level does.
+float virtual_search_texels(int level, int at, vec3 world) {
+  GpuShadowView view = virtual_shadow.levels[level];
+  return blocker_search_width(view, light_linear_depth(view, world)) * view.depth_range.z /
+         virtual_shadow.levels[at].depth_range.z;
+}
+// The level the region is read from: the first at or above `level` where
+// it spans at most `window` texels.
+int virtual_search_level(int i, int level, vec3 world, float window) {
+  int l = level;
+  while (l < virtual_last_level(i) && virtual_search_texels(level, l, world) > window) ++l;
+  return l;
 }

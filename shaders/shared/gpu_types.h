@@ -163,7 +163,9 @@ struct GpuVirtualShadow {
   // a lookup reads around its own (normal offset, filter, bilinear taps,
   // margin); z: the level bias, in half levels finer (0 from the host; the
   // allocation writes the one it chose, 0 .. VIRTUAL_LEVEL_BIASES - 1,
-  // before the pages are drawn); w: unused
+  // before the pages are drawn); w: the window, in texels, of the source's
+  // search region the lookup also reads (pcss: VIRTUAL_PCSS_WINDOW,
+  // backprojection: BACKPROJECTION_MAX_CELLS; 0: none)
   vec4 params;
   // x: unused; y: level count (all lights); z: pool pages; w: caster
   // draw commands (one per batch)

@@ -122,7 +122,8 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
   add_choice(app, "shadow-maps", named.shadow_maps,
              "directional and spot lights: cascades and spot maps, or virtual shadow maps (a "
              "clipmap of 16384^2-texel levels, a spot's 16384^2 map with mip levels, in 128^2 "
-             "pages, the pages the image needs rendered into --page-pool-mib; hard and pcf)",
+             "pages, the pages the image needs rendered into --page-pool-mib; hard, pcf, pcss "
+             "and backprojection)",
              shadow_map_kind_names(), OptionGroup::Lights);
   add_shadow_parameters(app, settings);
 }

@@ -48,6 +48,7 @@ VirtualShadowPass::VirtualShadowPass()
     : mark_program_(gl::Program::compute("shadow/virtual_mark.comp")),
       allocate_program_(gl::Program::compute("shadow/virtual_allocate.comp")),
       dirty_program_(gl::Program::compute("shadow/virtual_dirty.comp")),
+      bounds_program_(gl::Program::compute("shadow/virtual_bounds.comp")),
       clear_program_(
           gl::Program::graphics("shadow/virtual_clear.vert", "shadow/virtual_clear.frag")),
       page_programs_{page_program(false, false), page_program(true, false)},
@@ -73,6 +74,12 @@ void VirtualShadowPass::ensure_pool(int pages) {
                                         .height = kVirtualPageTexels,
                                         .layers = pages,
                                         .label = "virtual page pool"});
+    bounds_ = gl::Texture(gl::TextureInfo{.target = GL_TEXTURE_2D_ARRAY,
+                                          .format = GL_RG32F,
+                                          .width = VIRTUAL_BOUNDS_CELLS,
+                                          .height = VIRTUAL_BOUNDS_CELLS,
+                                          .layers = pages,
+                                          .label = "virtual page depth bounds"});
     pool_framebuffer_ = gl::Framebuffer("virtual page pool");
     pool_framebuffer_.attach_depth(pool_);  // layered: gl_Layer picks the page
     pool_framebuffer_.set_draw_buffers(0);
@@ -109,6 +116,8 @@ void VirtualShadowPass::bind() const {
   glBindSampler(UNIT_VIRTUAL_PAGE_TABLE, 0);
   glBindTextureUnit(UNIT_VIRTUAL_POOL, pool_.id());
   glBindSampler(UNIT_VIRTUAL_POOL, 0);
+  glBindTextureUnit(UNIT_VIRTUAL_BOUNDS, bounds_.id());
+  glBindSampler(UNIT_VIRTUAL_BOUNDS, 0);
 }
 
 VirtualPageStats VirtualShadowPass::read_stats() const {
@@ -181,9 +190,16 @@ void VirtualShadowPass::execute(std::span<const VirtualLightMaps> lights,
   // Phase 0 frees the pages of the levels gone since the last frame too.
   const int layers = std::max(levels, static_cast<int>(previous_levels_.size()));
   // What a lookup reads around its texel: the normal offset, PCF's window
-  // (half its width, and one texel for its floor), the bilinear taps, and
+  // (half its width, up to twice that on a footprint of two texels, and
+  // one texel for its floor; virtual_shadow.glsl), the bilinear taps, and
   // two texels for the lookups' own lift off the surface and rounding.
-  const float filter = shadow.technique == Technique::Pcf ? 0.5f * shadow.pcf_width + 1.0f : 1.0f;
+  const float filter = shadow.technique == Technique::Pcf ? shadow.pcf_width + 1.0f : 1.0f;
+  // PCSS and backprojection also read the source's search region, at
+  // coarser levels where it is wider than their window (virtual_mark.comp).
+  block_.params.w = shadow.technique == Technique::Pcss ? float(VIRTUAL_PCSS_WINDOW)
+                    : shadow.technique == Technique::Backprojection
+                        ? float(BACKPROJECTION_MAX_CELLS)
+                        : 0.0f;
   block_.params.y = shadow.normal_offset + filter + 2.0f;
   const int batch_words = static_cast<int>(commands_data_.size() - 2 * kClearCommandWords) / 2;
   block_.counts = glm::ivec4(0, levels, pool_pages_, batch_words / 5);
@@ -239,6 +255,14 @@ void VirtualShadowPass::execute(std::span<const VirtualLightMaps> lights,
                   GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
   render_pages(scene, batch_words);
+  // The rendered pages' depth bounds per cell (backprojection's cuts).
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  bounds_program_.use();
+  glBindTextureUnit(UNIT_COMPUTE_INPUT, pool_.id());
+  glBindSampler(UNIT_COMPUTE_INPUT, 0);
+  glBindImageTexture(IMAGE_OUTPUT, bounds_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glDispatchCompute(1, 1, static_cast<GLuint>(pool_pages_));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   glPopDebugGroup();
 }
 

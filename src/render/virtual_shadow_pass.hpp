@@ -61,8 +61,9 @@ class VirtualShadowPass {
   // The next execute() frees every page and renders what it needs anew.
   void invalidate() { reset_ = true; }
 
-  // Binds the block (BINDING_VIRTUAL_UBO), the page table and the pool
-  // (UNIT_VIRTUAL_PAGE_TABLE, UNIT_VIRTUAL_POOL) for the lighting pass.
+  // Binds the block (BINDING_VIRTUAL_UBO), the page table, the pool and its
+  // pages' depth bounds (UNIT_VIRTUAL_PAGE_TABLE, UNIT_VIRTUAL_POOL,
+  // UNIT_VIRTUAL_BOUNDS) for the lighting pass.
   void bind() const;
   [[nodiscard]] VirtualPageStats read_stats() const;
   [[nodiscard]] const gl::Texture& page_table() const { return page_table_; }
@@ -74,11 +75,11 @@ class VirtualShadowPass {
   void mark_dirty();
   void render_pages(const GpuScene& scene, int batch_words);
 
-  gl::Program mark_program_, allocate_program_, dirty_program_, clear_program_;
+  gl::Program mark_program_, allocate_program_, dirty_program_, bounds_program_, clear_program_;
   gl::Program page_programs_[2];          // opaque, cut-outs: orthographic levels
   gl::Program written_page_programs_[2];  // the same: perspective levels (depth written)
   gl::Buffer block_ubo_, counters_, free_list_, render_list_, commands_;
-  gl::Texture page_table_, pool_;
+  gl::Texture page_table_, pool_, bounds_;  // bounds_: each pool page's depth bounds per cell
   gl::Framebuffer pool_framebuffer_;
   gl::VertexArray empty_vertex_array_;
   gpu::GpuVirtualShadow block_{};
