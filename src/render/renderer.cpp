@@ -51,23 +51,33 @@ void set_subframe_params(gpu::GpuShadow& block, const ShadowSettings& shadow) {
 // One layer (0 for a 2D texture) of a texture as an image.
 Image read_texture(GLuint texture, int width, int height, GLenum format, int layer = 0) {
   Image image(width, height);
-  std::vector<float> raw(static_cast<std::size_t>(width) * height * 4);
-  const GLenum component = format == GL_DEPTH_COMPONENT ? GL_DEPTH_COMPONENT : GL_RGBA;
-  const std::size_t channels = component == GL_DEPTH_COMPONENT ? 1 : 4;
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureSubImage(texture, 0, 0, 0, layer, width, height, 1, component, GL_FLOAT,
+  if (format != GL_DEPTH_COMPONENT) {
+    // Straight into the image, then its rows swapped in place: a second
+    // copy of a large view (a point light's six faces tiled are 400 MB of
+    // RGBA32F) would double the read-back's memory.
+    glGetTextureSubImage(texture, 0, 0, 0, layer, width, height, 1, GL_RGBA, GL_FLOAT,
+                         static_cast<GLsizei>(image.rgba.size() * sizeof(float)),
+                         image.rgba.data());
+    // GL rows run bottom to top; images run top to bottom.
+    const std::size_t row = static_cast<std::size_t>(width) * 4;
+    for (int y = 0; y < height / 2; ++y) {
+      std::swap_ranges(image.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
+                       image.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                       image.rgba.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * row));
+    }
+    return image;
+  }
+  // A depth texture: its one channel as grey.
+  std::vector<float> raw(static_cast<std::size_t>(width) * height);
+  glGetTextureSubImage(texture, 0, 0, 0, layer, width, height, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                        static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
-  // GL rows run bottom to top; images run top to bottom.
   for (int y = 0; y < height; ++y) {
-    const float* src = raw.data() + static_cast<std::size_t>(height - 1 - y) * width * channels;
+    const float* src = raw.data() + static_cast<std::size_t>(height - 1 - y) * width;
     for (int x = 0; x < width; ++x) {
       float* dst = image.pixel(x, y);
-      if (channels == 1) {
-        dst[0] = dst[1] = dst[2] = src[x];
-        dst[3] = 1.0f;
-      } else {
-        for (int c = 0; c < 4; ++c) dst[c] = src[static_cast<std::size_t>(x) * 4 + c];
-      }
+      dst[0] = dst[1] = dst[2] = src[x];
+      dst[3] = 1.0f;
     }
   }
   return image;
@@ -504,6 +514,17 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     last_ao_ = ao;
     last_shadows_ = shadows;
   }
+}
+
+void Renderer::release_filtered_maps() {
+  resolve_pass_.release();
+  blur_pass_.release();
+  fused_pass_.release();
+  hierarchy_pass_.release();
+  sat_pass_.release();
+  tiling_pass_.release();
+  filtered_for_.reset();
+  gbuffer_current_ = false;  // shade() would read the freed maps
 }
 
 void Renderer::ensure_gbuffer(const gpu::GpuFrame& frame, const RenderSettings& render,

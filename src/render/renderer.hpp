@@ -96,6 +96,14 @@ class Renderer {
     filtered_for_.reset();
     virtual_pass_.invalidate();
   }
+  // Frees the maps made from the depth maps and the map views' image (the
+  // resolve, filter, summed-area-table, hierarchy and tiling outputs:
+  // arrays as large as the depth maps, in up to 16 bytes a texel, which a
+  // technique used once would otherwise hold until the renderer goes).
+  // The next render() makes what it needs again; the depth maps, the
+  // G-buffer and the programs stay. Until then shade() is not available,
+  // nor read_view() of a map view.
+  void release_filtered_maps();
   // The shadow views the last render() drew (0: the maps were cached).
   [[nodiscard]] int shadow_views_drawn() const { return shadow_views_drawn_; }
   // --shadow-maps virtual: the directional light that reads virtual maps

@@ -312,10 +312,12 @@ TEST_F(Report, WritesAPageWhoseImagesExist) {
 TEST_F(Report, TheCommandUnderAnImageRemakesIt) {
   ASSERT_EQ(status_, 0);
   // Spot-check a filtered technique's image under the scene's lights and
-  // under a point light alone (--light), and the foliage scene (its glTF
-  // written next to the page): its command, run in the report's folder,
-  // writing to another name.
-  for (const std::string name : {"technique-msm.png", "light-point-msm.png", "foliage.png"}) {
+  // under a point light alone (--light), a sweep's frame (the measured
+  // light alone), and the foliage scene (its glTF written next to the
+  // page): its command, run in the report's folder, writing to another
+  // name.
+  for (const std::string name :
+       {"technique-msm.png", "light-point-msm.png", "sweep-msm-w16.png", "foliage.png"}) {
     const auto chosen = std::find_if(figures_.begin(), figures_.end(),
                                      [&](const Figure& f) { return f.src == name; });
     ASSERT_NE(chosen, figures_.end()) << name;
