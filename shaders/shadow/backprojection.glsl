@@ -154,7 +154,8 @@ struct BackprojectionReceiver {
   float z;              // biased z-bar at the lookup
   vec2 gradient;        // z-bar per texel of the receiver's plane
   vec3 p;               // view space
-  vec3 n;               // view-space normal
+  vec3 n;               // view-space normal of the receiver's triangle
+  vec3 shading_n;       // view-space shading normal: the horizon the source is weighed against
   float receiver;       // 1 / d_r (perspective) or d_r (orthographic): backprojection_k()
   vec2 shift;           // the source grid's shift, in points
 };
@@ -201,15 +202,18 @@ void backprojection_patch(GpuShadowView view, BackprojectionReceiver r, vec2 a0,
 }
 
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
-// gradient `gradient` per texel, world normal `normal`) in view `view`
+// gradient `gradient` per texel, its triangle's world normal `normal`,
+// which keeps its own surface's patches out, and the shading normal
+// `shading_normal`, whose horizon weighs the source as the traced
+// reference does: docs/comparing.md, "The terminator model") in view `view`
 // (layer `layer` of depth_maps, and of `hierarchy`, its min/max depth
 // hierarchy), whose source is view.source_width wide: a square in the
 // view's x-y plane at its eye (spot), a disc there (`disc`: a point
 // light's sphere), or a disc of directions (orthographic: the sun).
 // `pixel` seeds the shift of the source's grid of points.
 float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
-                            GpuShadowView view, ShadowLookup s, float z, vec2 gradient,
-                            vec3 normal, bool disc, ivec2 pixel) {
+                            GpuShadowView view, ShadowLookup s, float z, vec2 gradient, vec3 normal,
+                            vec3 shading_normal, bool disc, ivec2 pixel) {
   ivec2 size = textureSize(depth_maps, 0).xy;
   float texel = view.depth_range.z;
   float width = view.source_width;
@@ -220,6 +224,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   r.gradient = gradient;
   r.p = (view.view * vec4(s.position, 1.0)).xyz;
   r.n = normalize(mat3(view.view) * normal);
+  r.shading_n = normalize(mat3(view.view) * shading_normal);
   float d_r = -r.p.z;
   r.receiver = view.perspective != 0 ? 1.0 / d_r : d_r;
   r.shift = accumulate_hash(pixel, 977).xy;
@@ -311,6 +316,10 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   // inside its circle.
   float total = 0.0, lit = 0.0;
   float radius2 = disc ? 0.25 * width * width : 1.0e30;
+  // Where the horizon leaves a sliver of the source that no point of the
+  // grid reaches, the point nearest above it stands for the sliver (the
+  // reference judges such a pixel by its own points in the sliver).
+  float nearest_cos = -2.0, nearest_lit = 1.0;
   for (int j = 0; j < BACKPROJECTION_SIDE; ++j) {
     uint word = j < 8 ? low[j >> 1] : high[(j - 8) >> 1];
     uint row = word >> uint(16 * (j & 1));
@@ -320,10 +329,16 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
       if (x * x + y * y > radius2) continue;
       vec3 t = view.perspective != 0 ? vec3(x, y, 0.0) - r.p : vec3(x, y, 1.0);
       float d2 = dot(t, t);
-      float weight = max(dot(r.n, t), 0.0) / (d2 * d2);
+      float weight = max(dot(r.shading_n, t), 0.0) / (d2 * d2);
+      float point_lit = float(((row >> uint(i)) & 1u) == 0u);
       total += weight;
-      if (((row >> uint(i)) & 1u) == 0u) lit += weight;
+      lit += point_lit * weight;
+      float cos_receiver = dot(r.shading_n, t) * inversesqrt(d2);
+      if (cos_receiver > nearest_cos) {
+        nearest_cos = cos_receiver;
+        nearest_lit = point_lit;
+      }
     }
   }
-  return total > 0.0 ? lit / total : 1.0;
+  return total > 0.0 ? lit / total : nearest_lit;
 }
