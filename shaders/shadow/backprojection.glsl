@@ -58,6 +58,9 @@
 // silhouette moves by up to half a cell); the lighting pass takes 1.5x,
 // 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
 #define BACKPROJECTION_MAX_CELLS 40
+// The coarsest cells (2^level texels wide) whose 2 x 2 around the receiver
+// are read as texels: up to 8 x 8 gathers.
+#define BACKPROJECTION_REFINE_LEVEL 2
 
 // Occluders below the receiver's tangent plane cannot block the light that
 // reaches it (the rays that count lie above the plane), within this sine
@@ -201,6 +204,25 @@ void backprojection_patch(GpuShadowView view, BackprojectionReceiver r, vec2 a0,
   if (c0 < c1 && r0 < r1) backprojection_hide(low, high, c0, c1, r0, r1);
 }
 
+// Hides the source points behind the patches of texels [t0, t1] (each
+// reaching to its blocking right and upper neighbours).
+// textureGather at a texel's upper right corner reads it (w), its right
+// (z) and upper (x) neighbours.
+void backprojection_texels(sampler2DArray depth_maps, int layer, GpuShadowView view,
+                           BackprojectionReceiver r, ivec2 t0, ivec2 t1, inout uvec4 low,
+                           inout uvec4 high) {
+  ivec2 size = textureSize(depth_maps, 0).xy;
+  for (int ty = t0.y; ty <= t1.y; ++ty) {
+    for (int tx = t0.x; tx <= t1.x; ++tx) {
+      vec4 g = textureGather(depth_maps, vec3(vec2(tx + 1, ty + 1) / vec2(size), float(layer)));
+      BACKPROJECTION_FETCHED(1);
+      vec2 a0 = vec2(tx, ty) - r.center;
+      float right = tx + 1 < size.x ? g.z : 2.0, up = ty + 1 < size.y ? g.x : 2.0;
+      backprojection_patch(view, r, a0, a0 + 1.0, g.w, right, up, low, high);
+    }
+  }
+}
+
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
 // gradient `gradient` per texel, its triangle's world normal `normal`,
 // which keeps its own surface's patches out, and the shading normal
@@ -265,17 +287,8 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   int span = max(last.x - first.x, last.y - first.y) + 1;
   if (span <= BACKPROJECTION_MAX_CELLS) {
     // The texels themselves, and the row and column below the region,
-    // whose patches may reach into it. textureGather at a texel's upper
-    // right corner reads it (w), its right (z) and upper (x) neighbours.
-    for (int ty = max(first.y - 1, 0); ty <= last.y; ++ty) {
-      for (int tx = max(first.x - 1, 0); tx <= last.x; ++tx) {
-        vec4 g = textureGather(depth_maps, vec3(vec2(tx + 1, ty + 1) / vec2(size), float(layer)));
-        BACKPROJECTION_FETCHED(1);
-        vec2 a0 = vec2(tx, ty) - r.center;
-        float right = tx + 1 < size.x ? g.z : 2.0, up = ty + 1 < size.y ? g.x : 2.0;
-        backprojection_patch(view, r, a0, a0 + 1.0, g.w, right, up, low, high);
-      }
-    }
+    // whose patches may reach into it.
+    backprojection_texels(depth_maps, layer, view, r, max(first - 1, ivec2(0)), last, low, high);
   } else {
     // The hierarchy's cells 2^level texels wide (level - 1 of it). A cell
     // whose depths all lie in front is a patch at its nearest depth; a cell
@@ -284,6 +297,20 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     int level = min(findMSB((span - 1) / BACKPROJECTION_MAX_CELLS) + 1,
                     backprojection_levels(hierarchy));
     ivec2 cells = backprojection_cells(hierarchy, level - 1);
+    // The 2 x 2 cells around the receiver are its texels: there a blocker
+    // is nearest, its patch hides the most of the source, and a cell the
+    // receiver's plane cuts (a contact: the box's foot) would hide all of
+    // it from the receiver inside it. Default scene, 640x360, spot, RMSE
+    // at sources 0.5 / 1.5: 0.0056 / 0.0138 with cells only, 0.0049 /
+    // 0.0116 so, 0.0045 / 0.0114 with every cut cell's texels (at 1.5x the
+    // lighting pass's time; this: 1.1x).
+    ivec2 near_cells =
+        clamp(ivec2(floor(r.center / float(1 << level) - 0.5)), ivec2(0), max(cells - 2, ivec2(0)));
+    if (level <= BACKPROJECTION_REFINE_LEVEL) {
+      ivec2 t0 = near_cells << level;
+      ivec2 t1 = mix(t0 + (2 << level), size, equal(near_cells + 1, cells - 1)) - 1;
+      backprojection_texels(depth_maps, layer, view, r, t0, t1, low, high);
+    }
     ivec2 lo = min(max(first >> level, ivec2(1)) - 1, cells - 1);
     ivec2 hi = min(last >> level, cells - 1);
     for (int cy = lo.y; cy <= hi.y; ++cy) {
@@ -299,6 +326,10 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
         float plane = z + dot(gradient, mid);
         if (m.x >= plane) continue;
         float occluder = m.x;
+        if (level <= BACKPROJECTION_REFINE_LEVEL && all(greaterThanEqual(c, near_cells)) &&
+            all(lessThanEqual(c, near_cells + 1))) {
+          continue;
+        }
         if (m.y >= plane) {
           ivec2 t = min(ivec2(floor(r.center + mid)), size - 1);
           occluder = texelFetch(depth_maps, ivec3(t, layer), 0).r;
