@@ -59,8 +59,9 @@
 // 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
 #define BACKPROJECTION_MAX_CELLS 40
 // The coarsest cells (2^level texels wide) whose 2 x 2 around the receiver
-// are read as texels: up to 8 x 8 gathers.
-#define BACKPROJECTION_REFINE_LEVEL 2
+// are read as texels: up to 16 x 16 gathers. Default scene, source 1.5,
+// 4096^2 maps (cells of 8 texels), 640x360: RMSE 0.0148 at 2, 0.0117 at 3.
+#define BACKPROJECTION_REFINE_LEVEL 3
 
 // Occluders below the receiver's tangent plane cannot block the light that
 // reaches it (the rays that count lie above the plane), within this sine
