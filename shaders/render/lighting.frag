@@ -7,8 +7,8 @@
 // (FILTER_*), MSM_QUANTIZED (0/1: moments in the quantization basis),
 // SOFT_SHADOWS (0/1: penumbra-sized filters from the summed-area table),
 // SHADOW_MIPS (0/1: the filtered map has a mip chain, read over the
-// pixel's footprint), VIRTUAL_SHADOWS (0/1: the light virtual_shadow.counts.x
-// reads virtual shadow maps, shaders/shadow/virtual_shadow.glsl).
+// pixel's footprint), VIRTUAL_SHADOWS (0/1: the lights with levels in
+// virtual_shadow.lights read virtual shadow maps, shaders/shadow/virtual_shadow.glsl).
 #include "../common/uniforms.glsl"
 #include "../common/world_position.glsl"
 #include "../shadow/lookup.glsl"
@@ -342,8 +342,8 @@ float shadow_factor(int i, vec3 world, vec3 normal, vec3 shading_normal, bool re
 #else
   GpuLight light = lights[i];
 #if VIRTUAL_SHADOWS
-  if (i == virtual_shadow.counts.x) {
-    return virtual_shadow_factor(shadow_params, light, world, normal, rotation);
+  if (virtual_shadow.lights[i].y > 0) {
+    return virtual_shadow_factor(i, shadow_params, light, world, normal, rotation);
   }
 #endif
   ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
@@ -516,18 +516,20 @@ void main() {
   }
   if (view == VIEW_PAGES) {
     // The virtual page the chosen light's lookup reads here: a colour per
-    // clipmap level, bright where the page was rendered this frame, dark
+    // level (clipmap or mip), bright where the page was rendered this frame, dark
     // where it was cached; page borders as thin dark lines; black where no
     // page holds the point (or the light has no virtual maps).
     vec3 colour = vec3(0.0);
 #if VIRTUAL_SHADOWS
-    if (frame.options.z == virtual_shadow.counts.x) {
-      int level = virtual_resident_level(world);
+    if (virtual_shadow.lights[frame.options.z].y > 0) {
+      int level = virtual_resident_level(frame.options.z, world);
       if (level >= 0) {
-        vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world) * float(VIRTUAL_PAGES);
+        vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world) *
+                  float(virtual_level_texels(level) / VIRTUAL_PAGE_TEXELS);
         uint entry = virtual_page_entry(level, ivec2(floor(uv)));
         // Hues around the wheel, one per level.
-        vec3 hue = clamp(abs(fract(float(level) * 0.2 + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0,
+        float shown = float(level - virtual_shadow.lights[frame.options.z].x);
+        vec3 hue = clamp(abs(fract(shown * 0.2 + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0,
                          0.0, 1.0);
         colour = (entry & PAGE_RENDERED) != 0u ? mix(hue, vec3(1.0), 0.15) : 0.4 * hue;
         vec2 border = min(fract(uv), 1.0 - fract(uv)) * float(VIRTUAL_PAGE_TEXELS);
@@ -545,7 +547,8 @@ void main() {
     PixelFootprint on_facet = pixel_footprint(pixel, world, facet_normal);
     ShadingTexel texel = shading_texel(light, world, camera_depth(world));
 #if VIRTUAL_SHADOWS
-    if (frame.options.z == virtual_shadow.counts.x) texel = virtual_shading_texel(world);
+    if (virtual_shadow.lights[frame.options.z].y > 0)
+      texel = virtual_shading_texel(frame.options.z, world);
 #endif
     float density = texels_per_pixel(texel, on_facet.dx, on_facet.dy, facet_normal,
                                      direction_to_light(light, world));

@@ -7,6 +7,9 @@
 //    and lists it, and each resident page marked dirty, for rendering;
 //  2 (one thread): pops what phase 1 took from the free list, and writes
 //    the number of listed pages into the indirect draws' instance counts.
+// Two lists: the orthographic levels' pages, whose casters' rasterized
+// depth is z-bar, and the perspective (spot) levels', whose fragments
+// write it (shadow_depth.frag): each has its own draws.
 // No read-back: the GPU's own counters drive the draws.
 #include "../shared/bindings.h"
 #include "../shared/gpu_types.h"
@@ -22,14 +25,17 @@ layout(std430, binding = BINDING_VIRTUAL_COUNTERS_SSBO) buffer Counters {
   uint taken;       // phase 1: pages taken from its top
   uint rendered;    // pages listed for rendering this frame
   uint unserved;    // requested pages the pool had no page for
+  uint rendered_written;  // perspective pages listed (from render_list[pool pages])
 };
 layout(std430, binding = BINDING_VIRTUAL_FREE_LIST_SSBO) buffer FreeList { uint free_list[]; };
-// x: level, yz: world page, w: pool page
+// x: level, yz: world page, w: pool page; the orthographic levels' pages
+// from 0, the perspective levels' from the pool's page count.
 layout(std430, binding = BINDING_VIRTUAL_RENDER_LIST_SSBO) buffer RenderList {
   ivec4 render_list[];
 };
-// [0, 4): the clearing draw (DrawArraysIndirectCommand); then one
-// DrawElementsIndirectCommand (5 words) per batch of casters.
+// [0, 4), [4, 8): the clearing draws (DrawArraysIndirectCommand) of the
+// two lists; then one DrawElementsIndirectCommand (5 words) per batch of
+// casters for the first list, and as many for the second.
 layout(std430, binding = BINDING_VIRTUAL_COMMANDS_SSBO) buffer Commands { uint commands[]; };
 
 // The world page slot `slot` of level l stands for, with its first page at `origin`.
@@ -38,7 +44,9 @@ ivec2 world_page_of(ivec2 slot, ivec2 origin) {
 }
 
 void list_for_rendering(int level, ivec2 slot, uint page) {
-  uint i = atomicAdd(rendered, 1u);
+  uint i = virtual_shadow.levels[level].perspective != 0
+               ? uint(virtual_shadow.counts.z) + atomicAdd(rendered_written, 1u)
+               : atomicAdd(rendered, 1u);
   render_list[i] = ivec4(level, world_page_of(slot, virtual_shadow.origins[level].xy), int(page));
 }
 
@@ -49,7 +57,12 @@ void main() {
     free_count -= popped;
     taken = 0u;
     commands[1] = rendered;
-    for (int b = 0; b < virtual_shadow.counts.w; ++b) commands[4 + 5 * b + 1] = rendered;
+    commands[4 + 1] = rendered_written;
+    int batches = virtual_shadow.counts.w;
+    for (int b = 0; b < batches; ++b) {
+      commands[8 + 5 * b + 1] = rendered;
+      commands[8 + 5 * (batches + b) + 1] = rendered_written;
+    }
     return;
   }
   ivec2 slot = ivec2(gl_GlobalInvocationID.xy);

@@ -1,11 +1,12 @@
-// hard and pcf read through a directional light's virtual shadow maps:
+// hard and pcf read through a light's virtual shadow maps:
 // every texel fetch finds its page in the page table, so a window across
 // a page border reads both pages, with no seam. Needs lookup.glsl,
 // occluder_cone.glsl and poisson.glsl, and the shadow parameters.
 #pragma once
 #include "virtual_lookup.glsl"
 
-// One layer per level of 128 x 128 entries (PAGE_* flags, pool page).
+// One layer per level of 128 x 128 entries (PAGE_* flags, pool page); a
+// spot's mip level m uses its first (128 / 2^m)^2.
 layout(binding = UNIT_VIRTUAL_PAGE_TABLE) uniform usampler2DArray virtual_page_table;
 // The physical pages: z-bar of their level, one 128^2 layer each.
 layout(binding = UNIT_VIRTUAL_POOL) uniform sampler2DArray virtual_pool;
@@ -17,7 +18,7 @@ uint virtual_page_entry(int level, ivec2 page) {
 // z-bar at virtual texel `texel` of level `level` (clamped to the level),
 // or -1 where its page is not resident.
 float virtual_texel_depth(int level, ivec2 texel) {
-  texel = clamp(texel, ivec2(0), ivec2(VIRTUAL_TEXELS - 1));
+  texel = clamp(texel, ivec2(0), ivec2(virtual_level_texels(level) - 1));
   uint entry = virtual_page_entry(level, texel / VIRTUAL_PAGE_TEXELS);
   if ((entry & PAGE_RESIDENT) == 0u) return -1.0;
   return texelFetch(virtual_pool,
@@ -27,32 +28,37 @@ float virtual_texel_depth(int level, ivec2 texel) {
 
 // Whether the page of level `level` under `world` is resident.
 bool virtual_page_resident(int level, vec3 world) {
-  vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world);
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return false;
-  ivec2 page = ivec2(floor(uv * float(VIRTUAL_PAGES)));
+  vec4 clip = virtual_shadow.levels[level].view_projection * vec4(world, 1.0);
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  if (clip.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0))))
+    return false;
+  ivec2 page = ivec2(floor(uv * float(virtual_level_texels(level) / VIRTUAL_PAGE_TEXELS)));
   return (virtual_page_entry(level, page) & PAGE_RESIDENT) != 0u;
 }
 
-// The level a lookup at `world` reads: virtual_level(), or where its page
-// is missing (the pool ran out; or the point lies within a rounding error
-// of a level's boundary and its neighbours marked the other level), the
-// nearest coarser level holding it, then the nearest finer; -1 if none.
-int virtual_resident_level(vec3 world) {
-  int level = virtual_level(world);
+// The level light i's lookup at `world` reads: virtual_level(), or where
+// its page is missing (the pool ran out; or the point lies within a
+// rounding error of a level's boundary and its neighbours marked the
+// other level), the nearest coarser level holding it, then the nearest
+// finer; -1 if none.
+int virtual_resident_level(int i, vec3 world) {
+  int level = virtual_level(i, world);
   if (virtual_page_resident(level, world)) return level;
-  for (int l = level + 1; l < virtual_shadow.counts.y; ++l) {
+  ivec4 light = virtual_shadow.lights[i];
+  for (int l = level + 1; l < light.x + light.y; ++l) {
     if (virtual_page_resident(l, world)) return l;
   }
-  for (int l = level - 1; l >= 0; --l) {
+  for (int l = level - 1; l >= light.x; --l) {
     if (virtual_page_resident(l, world)) return l;
   }
   return -1;
 }
 
-// The texel a virtual map's lookup reads at `world` (texel_density.glsl's
-// shading_texel() for the light with virtual maps): its resident level's.
-ShadingTexel virtual_shading_texel(vec3 world) {
-  int level = virtual_resident_level(world);
+// The texel light i's virtual map's lookup reads at `world`
+// (texel_density.glsl's shading_texel() for a light with virtual maps):
+// its resident level's.
+ShadingTexel virtual_shading_texel(int i, vec3 world) {
+  int level = virtual_resident_level(i, world);
   if (level < 0) return ShadingTexel(0.0, false);
   GpuShadowView view = virtual_shadow.levels[level];
   return ShadingTexel(shadow_texel_world(view, light_linear_depth(view, world)), true);
@@ -60,7 +66,8 @@ ShadingTexel virtual_shading_texel(vec3 world) {
 
 // The hard test at the texel under uv; a missing page is lit.
 float virtual_hard(int level, vec2 uv, float depth) {
-  float occluder = virtual_texel_depth(level, ivec2(floor(uv * float(VIRTUAL_TEXELS))));
+  vec2 texel = uv * float(virtual_level_texels(level));
+  float occluder = virtual_texel_depth(level, ivec2(floor(texel)));
   return occluder < 0.0 || depth <= occluder ? 1.0 : 0.0;
 }
 
@@ -68,7 +75,7 @@ float virtual_hard(int level, vec2 uv, float depth) {
 // texel by texel through the page table: the four tests weighted as
 // GL_LINEAR weighs them.
 float virtual_bilinear_compare(int level, vec2 uv, float depth) {
-  vec2 p = uv * float(VIRTUAL_TEXELS) - 0.5;
+  vec2 p = uv * float(virtual_level_texels(level)) - 0.5;
   ivec2 base = ivec2(floor(p));
   vec2 f = p - vec2(base);
   float lit[4];
@@ -82,7 +89,7 @@ float virtual_bilinear_compare(int level, vec2 uv, float depth) {
 // shadow_pcf() (pcf.glsl) over the level's virtual texels.
 float virtual_pcf(int level, GpuShadowView view, OccluderCone cone, vec2 uv, float depth,
                   vec2 gradient, float width, int samples, vec2 rotation) {
-  ivec2 size = ivec2(VIRTUAL_TEXELS);
+  ivec2 size = ivec2(virtual_level_texels(level));
   vec2 center = uv * vec2(size);
   float lit = 0.0;
   for (int i = 0; i < samples; ++i) {
@@ -97,11 +104,11 @@ float virtual_pcf(int level, GpuShadowView view, OccluderCone cone, vec2 uv, flo
   return lit / float(samples);
 }
 
-// Fraction of the light's light reaching the point through its virtual
+// Fraction of light i's light reaching the point through its virtual
 // maps, for SHADOW_TECHNIQUE hard or pcf.
-float virtual_shadow_factor(GpuShadow params, GpuLight light, vec3 world, vec3 normal,
+float virtual_shadow_factor(int i, GpuShadow params, GpuLight light, vec3 world, vec3 normal,
                             vec2 rotation) {
-  int level = virtual_resident_level(world);
+  int level = virtual_resident_level(i, world);
   if (level < 0) return 1.0;
   GpuShadowView view = virtual_shadow.levels[level];
   ShadowLookup s = shadow_lookup(view, world, normal, params.normal_offset);

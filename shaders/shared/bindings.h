@@ -10,7 +10,7 @@
 #define BINDING_PASS_UBO 3
 #define BINDING_SSAO_UBO 4
 #define BINDING_SHADOW_VIEWS_UBO 5
-#define BINDING_VIRTUAL_UBO 6  // GpuVirtualShadow: a directional light's virtual clipmap
+#define BINDING_VIRTUAL_UBO 6  // GpuVirtualShadow: the virtual lights' levels
 
 // Storage buffers
 #define BINDING_MATERIALS_SSBO 0
@@ -73,6 +73,11 @@
 #define VIRTUAL_PAGE_TEXELS 128
 #define VIRTUAL_PAGES 128
 #define MAX_VIRTUAL_LEVELS 16
+// A spot light's virtual map: mip levels of 16,384^2 down to one page.
+#define VIRTUAL_SPOT_LEVELS 8
+// Levels of all virtual lights together (one page-table layer each): a
+// directional light's clipmap and a spot map for each other light.
+#define MAX_VIRTUAL_VIEWS (MAX_VIRTUAL_LEVELS + (MAX_LIGHTS - 1) * VIRTUAL_SPOT_LEVELS)
 // A page-table entry: the pool page's index in the low bits, and flags.
 #define PAGE_INDEX_MASK 0xffffu
 #define PAGE_RESIDENT 0x80000000u   // the pool page holds the page's depths

@@ -129,6 +129,33 @@ void Renderer::set_lights(const std::vector<Light>& lights) {
   scene_.lights = lights;
 }
 
+void Renderer::fit_virtual_lights(const ShadowSettings& shadow, const CameraFrustum& camera,
+                                  int image_height) {
+  // Last frame's maps per light: a spot map keeps its depth range while
+  // it serves (fit_virtual_spot_map).
+  std::vector<VirtualLightMaps> previous = std::move(virtual_lights_);
+  virtual_lights_.clear();
+  if (shadow.shadow_maps != ShadowMapKind::Virtual) return;
+  const auto previous_of = [&](int light) -> const VirtualClipmap* {
+    for (const VirtualLightMaps& p : previous)
+      if (p.light_index == light) return &p.maps;
+    return nullptr;
+  };
+  if (virtual_light_ >= 0) {
+    virtual_lights_.push_back({virtual_light_,
+                               scene_.lights[static_cast<std::size_t>(virtual_light_)],
+                               virtual_clipmap_});
+  }
+  for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+    const Light& light = scene_.lights[i];
+    if (light.type != LightType::Spot) continue;
+    const int index = static_cast<int>(i);
+    virtual_lights_.push_back({index, with_source_size(light, shadow),
+                               fit_virtual_spot_map(light_views_[i].views.front(), camera,
+                                                    image_height, previous_of(index))});
+  }
+}
+
 Bounds Renderer::shape_bounds(std::size_t shape) const {
   if (shape >= scene_.shapes.size()) {
     throw UsageError("scene '" + scene_.name + "' has no shape " + std::to_string(shape));
@@ -296,8 +323,9 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   }
   lights_ubo_.update(lights, sizeof lights);
   views_ubo_.update(views, sizeof views);
-  // Virtual maps for the first directional light (its cascade views stay
-  // in the block, undrawn); the others keep their views.
+  // Virtual maps for the first directional light and every spot light
+  // (their conventional views stay in the block, undrawn); the others keep
+  // their views.
   virtual_light_ = -1;
   if (virtual_maps) {
     for (int i = 0; i < light_count && virtual_light_ < 0; ++i) {
@@ -313,6 +341,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
                               cascade_light_frame(light)),
         &virtual_clipmap_);
   }
+  fit_virtual_lights(shadow, camera, render.height);
   if (maps_kind_for_ != shadow.shadow_maps) {
     shadow_cache_.invalidate();
     maps_kind_for_ = shadow.shadow_maps;
@@ -347,12 +376,11 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
   shadow_views_drawn_ = 0;
   std::span<const std::uint8_t> stale;
-  if (shadows && virtual_light_ >= 0) {
+  if (shadows && !virtual_lights_.empty()) {
     // Marking reads the camera's depth: the G-buffer first.
     ensure_gbuffer(frame, render, profiler);
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
-    virtual_pass_.execute(virtual_light_, scene_.lights[static_cast<std::size_t>(virtual_light_)],
-                          virtual_clipmap_, shadow, gbuffer_pass_, gpu_scene_);
+    virtual_pass_.execute(virtual_lights_, shadow, gbuffer_pass_, gpu_scene_);
     virtual_pass_.bind();
   }
   if (shadows) {
@@ -361,12 +389,14 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     stale = shadow_cache_.stale_views(
         std::span<const gpu::GpuShadowView>(views, static_cast<std::size_t>(view_count_)),
         shadow.map_size);
-    if (virtual_light_ >= 0) {
+    if (!virtual_lights_.empty()) {
       stale_without_virtual_.assign(stale.begin(), stale.end());
       stale_without_virtual_.resize(static_cast<std::size_t>(view_count_), 1);
-      const auto light = static_cast<std::size_t>(virtual_light_);
-      for (std::size_t v = 0; v < light_views_[light].views.size(); ++v) {
-        stale_without_virtual_[static_cast<std::size_t>(first_views_[light]) + v] = 0;
+      for (const VirtualLightMaps& maps : virtual_lights_) {
+        const auto light = static_cast<std::size_t>(maps.light_index);
+        for (std::size_t v = 0; v < light_views_[light].views.size(); ++v) {
+          stale_without_virtual_[static_cast<std::size_t>(first_views_[light]) + v] = 0;
+        }
       }
       stale = stale_without_virtual_;
     }

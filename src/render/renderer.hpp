@@ -98,11 +98,15 @@ class Renderer {
   }
   // The shadow views the last render() drew (0: the maps were cached).
   [[nodiscard]] int shadow_views_drawn() const { return shadow_views_drawn_; }
-  // --shadow-maps virtual: the light that reads virtual maps in the last
-  // render() (the first directional light; -1: none), its clipmap, and the
-  // pass that holds its page table and pool.
+  // --shadow-maps virtual: the directional light that reads virtual maps
+  // in the last render() (the first; -1: none), its clipmap, every light's
+  // virtual maps (that light's and each spot light's, in the order of
+  // their levels), and the pass that holds their page table and pool.
   [[nodiscard]] int virtual_light() const { return virtual_light_; }
   [[nodiscard]] const VirtualClipmap& virtual_clipmap() const { return virtual_clipmap_; }
+  [[nodiscard]] const std::vector<VirtualLightMaps>& virtual_lights() const {
+    return virtual_lights_;
+  }
   [[nodiscard]] const VirtualShadowPass& virtual_shadows() const { return virtual_pass_; }
   // Its pages after the last render(), read back from the GPU (benchmarks, tests).
   [[nodiscard]] VirtualPageStats virtual_page_stats() const { return virtual_pass_.read_stats(); }
@@ -214,6 +218,7 @@ class Renderer {
   VirtualShadowPass virtual_pass_;
   VirtualClipmap virtual_clipmap_;
   int virtual_light_ = -1;
+  std::vector<VirtualLightMaps> virtual_lights_;
   // The kind of maps the shadow views' cache holds (a switch redraws them).
   std::optional<ShadowMapKind> maps_kind_for_;
   gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_, views_ubo_;
@@ -224,6 +229,11 @@ class Renderer {
   // reads (render() fills them; shade() reuses them).
   void bind_frame_blocks();
   void bind_reference_weights(const ShadowSettings& shadow);
+  // The lights' virtual maps for this frame (virtual_lights_): the
+  // directional light's clipmap fitted as virtual_clipmap_, and a map for
+  // each spot light over its fitted view.
+  void fit_virtual_lights(const ShadowSettings& shadow, const CameraFrustum& camera,
+                          int image_height);
   // Draws the camera's G-buffer unless it holds this frame's surfaces.
   void ensure_gbuffer(const gpu::GpuFrame& frame, const RenderSettings& render,
                       gl::GpuProfiler* profiler);
@@ -250,7 +260,7 @@ class Renderer {
   int view_count_ = 0;
   // What the shadow maps and the filtered maps hold (forget_shadow_maps()).
   ViewCache shadow_cache_;
-  // The stale views less those of the light with virtual maps (kept to
+  // The stale views less those of the lights with virtual maps (kept to
   // allocate nothing per frame).
   std::vector<std::uint8_t> stale_without_virtual_;
   std::optional<ShadowSettings> filtered_for_;

@@ -1,6 +1,8 @@
 #pragma once
-// Virtual shadow maps for one directional light (docs/rendering.md,
-// "Virtual shadow maps"): each frame, marks the pages the camera's pixels
+// Virtual shadow maps for a list of lights (docs/rendering.md, "Virtual
+// shadow maps"): a directional light's clipmap, a spot light's mip levels,
+// their pages in one pool and their levels' entries in one page table
+// (a layer per level). Each frame, marks the pages the camera's pixels
 // read (a compute pass over the G-buffer), allocates pool pages for the
 // new ones and frees the unrequested ones (compute, with a free list and
 // atomic counters), and draws the casters into only the pages listed for
@@ -30,16 +32,25 @@ struct VirtualPageStats {
   int unserved = 0;    // requested pages the pool had no room for in the last execute()
 };
 
+// One light's virtual maps in a frame: scene light `light_index`, its
+// clipmap (directional) or mip levels (spot), fitted to the frame's camera.
+struct VirtualLightMaps {
+  int light_index = -1;
+  Light light;
+  VirtualClipmap maps;
+};
+
 class VirtualShadowPass {
  public:
   VirtualShadowPass();
 
-  // One frame for light `light_index` (a directional light) fitted as
-  // `clipmap`: marks from `gbuffer` (drawn for the camera the clipmap was
-  // fitted to; the frame block must be bound), allocates, and draws
-  // `scene`'s casters into the pages that need it.
-  void execute(int light_index, const Light& light, const VirtualClipmap& clipmap,
-               const ShadowSettings& shadow, const GBufferPass& gbuffer, const GpuScene& scene);
+  // One frame for `lights` (at most one directional light, and spot
+  // lights; levels numbered in this order): marks from `gbuffer` (drawn
+  // for the camera the maps were fitted to; the frame block must be
+  // bound), allocates, and draws `scene`'s casters into the pages that
+  // need it.
+  void execute(std::span<const VirtualLightMaps> lights, const ShadowSettings& shadow,
+               const GBufferPass& gbuffer, const GpuScene& scene);
   // A caster moved from world box [lo0, hi0] to [lo1, hi1]: the resident
   // pages either touches render again in the next execute().
   void caster_moved(const glm::vec3& lo0, const glm::vec3& hi0, const glm::vec3& lo1,
@@ -58,10 +69,11 @@ class VirtualShadowPass {
  private:
   void ensure_pool(int pages);
   void mark_dirty();
-  void render_pages(const GpuScene& scene);
+  void render_pages(const GpuScene& scene, int batch_words);
 
   gl::Program mark_program_, allocate_program_, dirty_program_, clear_program_;
-  gl::Program page_programs_[2];  // opaque, cut-outs
+  gl::Program page_programs_[2];          // opaque, cut-outs: orthographic levels
+  gl::Program written_page_programs_[2];  // the same: perspective levels (depth written)
   gl::Buffer block_ubo_, counters_, free_list_, render_list_, commands_;
   gl::Texture page_table_, pool_;
   gl::Framebuffer pool_framebuffer_;

@@ -55,7 +55,7 @@ using Page = std::tuple<int, int, int>;  // level, world page x, y
 std::set<Page> resident_pages(const Renderer& renderer) {
   const gl::Texture& table = renderer.virtual_shadows().page_table();
   std::vector<GLuint> entries(static_cast<std::size_t>(kVirtualPages) * kVirtualPages *
-                              kMaxVirtualLevels);
+                              kMaxVirtualViews);
   glGetTextureImage(table.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
                     static_cast<GLsizei>(entries.size() * sizeof(GLuint)), entries.data());
   const VirtualClipmap& clipmap = renderer.virtual_clipmap();
