@@ -241,9 +241,11 @@ float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderC
 
 // Fraction of light i's light that reaches the point (1 = lit) according
 // to shadow view v. `rotation` is the pixel's (cos, sin) rotation of the
-// sample set.
-float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool reference,
-                         vec2 rotation, PixelFootprint footprint) {
+// sample set. `normal` (the triangle's) places the receiver's plane;
+// `shading_normal` is the horizon an area light's source is weighed
+// against (the terminator model, docs/comparing.md).
+float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 shading_normal,
+                         bool reference, vec2 rotation, PixelFootprint footprint) {
   GpuShadowView view = shadow_views[v];
   ShadowLookup s = shadow_lookup(view, world, normal, shadow_params.normal_offset);
   if (!s.inside) return 1.0;
@@ -302,7 +304,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
   float lit = shadow_backprojection(shadow_depth, shadow_filtered, v, view, s, z, gradient, normal,
-                                    int(light.position_type.w) == LIGHT_POINT,
+                                    shading_normal, int(light.position_type.w) == LIGHT_POINT,
                                     ivec2(gl_FragCoord.xy));
 #if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
   imageAtomicAdd(backprojection_fetch_counts, ivec2(gl_FragCoord.xy), backprojection_fetches);
@@ -333,8 +335,8 @@ float camera_depth(vec3 world) {
 // Fraction of light i's light that reaches the point (1 = lit): from the
 // shadow view the point falls in, blended with the next cascade near the
 // end of a directional light's cascade.
-float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotation,
-                    PixelFootprint footprint) {
+float shadow_factor(int i, vec3 world, vec3 normal, vec3 shading_normal, bool reference,
+                    vec2 rotation, PixelFootprint footprint) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_NONE
   return 1.0;
 #else
@@ -352,7 +354,7 @@ float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotatio
   int count = selected.blend > 0.0 ? 2 : 1;
   for (int k = 0; k < count; ++k) {
     lit[k] = view_shadow_factor(k == 0 ? selected.view : selected.next, light, world, normal,
-                                reference, rotation, footprint);
+                                shading_normal, reference, rotation, footprint);
   }
   return count == 2 ? mix(lit[0], lit[1], selected.blend) : lit[0];
 #endif
@@ -569,7 +571,7 @@ void main() {
       return;
     }
     vec3 start = lifted_point(lights[i], world, n, facet);
-    float lit = shadow_factor(i, start, facet_normal, view == VIEW_SHADOW_REFERENCE, rotation,
+    float lit = shadow_factor(i, start, facet_normal, n, view == VIEW_SHADOW_REFERENCE, rotation,
                               footprint);
     if (view == VIEW_SHADOW) lit = with_contact_shadow(lit, i, pixel, start);
     float weight = accumulate_source_weight(lights[i], world, n);
@@ -593,7 +595,7 @@ void main() {
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
     vec3 start = lifted_point(lights[i], world, n, facet);
     float lit = with_contact_shadow(
-        shadow_factor(i, start, facet_normal, false, rotation, footprint), i, pixel, start);
+        shadow_factor(i, start, facet_normal, n, false, rotation, footprint), i, pixel, start);
     color += lit * irradiance * n_dot_l * brdf;
   }
   out_color = vec4(color, 1.0);

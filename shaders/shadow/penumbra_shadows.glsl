@@ -80,7 +80,7 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
     vec2 gradient = receiver_depth_gradient(view, s, normal, params.max_slope);
     if (technique == TECHNIQUE_BACKPROJECTION) {
       return shadow_backprojection(penumbra_depth, penumbra_filtered, v, view, s, z, gradient,
-                                   normal, int(light.position_type.w) == LIGHT_POINT,
+                                   normal, normal, int(light.position_type.w) == LIGHT_POINT,
                                    ivec2(floor(pixel)));
     }
     // PCSS: the cone the light's source really subtends (its width is the

@@ -230,7 +230,7 @@ float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLig
     vec2 gradient = receiver_depth_gradient(view, v.s, normal, params.max_slope);
     ivec2 size = ivec2(virtual_level_texels(level));
     BackprojectionReceiver r =
-        backprojection_receiver(view, v.s, v.z, gradient, normal, size, pixel);
+        backprojection_receiver(view, v.s, v.z, gradient, normal, normal, size, pixel);
     // The cuts (shadow_backprojection()'s).
     float reach_per_k = 0.5 * view.source_width / view.depth_range.z;
     // At most the window (only the coarsest level can be asked for more:
@@ -259,7 +259,10 @@ float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLig
     if (bounds.x >= v.z + slope) return 1.0;  // nothing in front of the receiver
     if (bounds.y < v.z - slope) return 0.0;   // all of it in front: umbra
     uvec4 low = uvec4(0u), high = uvec4(0u);
-    virtual_backprojection_patches(virtual_pool, level, view, r, first, last, low, high);
+    // The texels themselves, and the row and column below the region,
+    // whose patches may reach into it.
+    virtual_backprojection_patches(virtual_pool, level, view, r, max(first - 1, ivec2(0)), last,
+                                   low, high);
     return backprojection_lit_fraction(view, r, low, high, view.perspective == 0);
   }
   return 1.0;
