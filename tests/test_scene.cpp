@@ -98,4 +98,24 @@ RenderSettings small_frame(int width, int height, View view) {
   return settings;
 }
 
+std::string light_type_name(const ::testing::TestParamInfo<LightType>& info) {
+  return std::string(enum_name<LightType>(kLightTypeNames, info.param));
+}
+
+PositionMesh::PositionMesh(const std::vector<glm::vec3>& triangles)
+    : buffer_(gl::Buffer::from(std::span<const glm::vec3>(triangles), "test mesh")),
+      vao_("test mesh"),
+      count_(static_cast<GLsizei>(triangles.size())) {
+  glVertexArrayVertexBuffer(vao_.id(), 0, buffer_.id(), 0, sizeof(glm::vec3));
+  glEnableVertexArrayAttrib(vao_.id(), 0);
+  glVertexArrayAttribFormat(vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao_.id(), 0, 0);
+}
+
+void PositionMesh::draw() const {
+  glBindVertexArray(vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, count_);
+  glBindVertexArray(0);
+}
+
 }  // namespace penumbra::testing

@@ -2,9 +2,14 @@
 // The one small-scene and settings builder of the GPU tests: a grey
 // diffuse material (material 0), shapes, a camera and lights, each said in
 // one line, so that a test's scene reads as what it is.
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "penumbra/gl/resources.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
@@ -47,5 +52,21 @@ Light overhead_light(LightType type);
 
 // A small frame of the given view.
 RenderSettings small_frame(int width, int height, View view = View::Shadow);
+
+// The light type's name, for tests instantiated over every light type.
+std::string light_type_name(const ::testing::TestParamInfo<LightType>& info);
+
+// A triangle list of positions at attribute 0, drawn as an engine draws its
+// meshes into ShadowMaps' views.
+class PositionMesh {
+ public:
+  explicit PositionMesh(const std::vector<glm::vec3>& triangles);
+  void draw() const;
+
+ private:
+  gl::Buffer buffer_;
+  gl::VertexArray vao_;
+  GLsizei count_;
+};
 
 }  // namespace penumbra::testing

@@ -30,6 +30,12 @@ struct CameraDepthBuffer {
   // buffer was cleared to): 1, or 0 with reversed-Z. Those pixels mark
   // no page.
   float background_depth = 1.0f;
+  // Optional: a 2D texture of the same size holding each pixel's unit
+  // world-space normal in rgb, the one the engine's lookup is given (the
+  // level a lookup reads leans on the receiver's slope to the camera and
+  // the light). 0: marking takes the surface's normal from the depth
+  // buffer's neighbouring pixels.
+  std::uint32_t normal_texture = 0;  // a GLuint
   bool operator==(const CameraDepthBuffer&) const = default;
 };
 

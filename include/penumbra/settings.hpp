@@ -65,10 +65,12 @@ constexpr bool supports_soft_shadows(Technique t, Filter f) {
   return f == Filter::Sat && (t == Technique::Vsm || t == Technique::Msm || t == Technique::Msm16);
 }
 
-// Where a directional light's shadow is stored: cascades (a fixed number
-// of maps along the camera's view), or a virtual clipmap of 16,384^2
-// texels per level in 128^2 pages, only the pages the camera's pixels need
-// resident in a physical pool (docs/rendering.md, "Virtual shadow maps").
+// Where a directional or spot light's shadow is stored: cascades (a fixed
+// number of maps along the camera's view) and one map a spot, or virtual
+// maps in 128^2 pages (a directional light's clipmap of 16,384^2 texels per
+// level, a spot light's 16,384^2 map with mip levels), only the pages the
+// camera's pixels need resident in a physical pool (docs/rendering.md,
+// "Virtual shadow maps").
 enum class ShadowMapKind { Cascades, Virtual };
 
 inline constexpr std::array<std::pair<ShadowMapKind, std::string_view>, 2> kShadowMapKindNames{{
@@ -76,11 +78,13 @@ inline constexpr std::array<std::pair<ShadowMapKind, std::string_view>, 2> kShad
     {ShadowMapKind::Virtual, "virtual"},
 }};
 
-// Whether a technique reads virtual shadow maps: the depth-map techniques.
-// The moment techniques filter their maps as whole textures (a blur or a
-// summed-area table across page borders), so they stay on cascades.
+// Whether a technique reads virtual shadow maps: the depth-map techniques,
+// which read texels one by one through the page table. The moment
+// techniques filter their maps as whole textures (a blur or a summed-area
+// table across page borders), so they stay on cascades.
 constexpr bool supports_virtual_maps(Technique t) {
-  return t == Technique::None || t == Technique::Hard || t == Technique::Pcf;
+  return t == Technique::None || t == Technique::Hard || t == Technique::Pcf ||
+         t == Technique::Pcss || t == Technique::Backprojection;
 }
 
 enum class View {
@@ -240,11 +244,14 @@ struct ShadowMapSettings {
   // reads the scene from its own face (no seams between faces).
   bool guard_band = true;
 
-  // The first directional light: cascades, or virtual shadow maps (a
-  // clipmap of 16,384^2-texel levels in 128^2 pages, only the pages the
-  // camera's pixels read resident in a page pool; hard and pcf). Virtual
-  // maps mark their pages from the camera's depth buffer, which
-  // ShadowMaps::update() then takes (CameraDepthBuffer).
+  // Directional and spot lights: cascades and spot maps, or virtual shadow
+  // maps (a directional light's clipmap of 16,384^2-texel levels, a spot's
+  // 16,384^2 map with mip levels, in 128^2 pages, only the pages the
+  // camera's pixels read resident in a page pool). Virtual maps mark their
+  // pages from the camera's depth buffer (CameraDepthBuffer). ShadowMaps
+  // draws the first directional light's virtual maps, for hard and pcf;
+  // penumbra's renderer every directional and spot light's, for pcss and
+  // backprojection too.
   ShadowMapKind shadow_maps = ShadowMapKind::Cascades;
   // Virtual shadow maps: the physical page pool's size in MiB of 32-bit
   // depth (64 KiB a page). 48: the memory of 3 cascades of 2048^2.

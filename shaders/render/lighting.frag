@@ -7,8 +7,8 @@
 // (FILTER_*), MSM_QUANTIZED (0/1: moments in the quantization basis),
 // SOFT_SHADOWS (0/1: penumbra-sized filters from the summed-area table),
 // SHADOW_MIPS (0/1: the filtered map has a mip chain, read over the
-// pixel's footprint), VIRTUAL_SHADOWS (0/1: the light virtual_shadow.counts.x
-// reads virtual shadow maps, shaders/shadow/virtual_shadow.glsl).
+// pixel's footprint), VIRTUAL_SHADOWS (0/1: the lights with levels in
+// virtual_shadow.lights read virtual shadow maps, shaders/shadow/virtual_shadow.glsl).
 #include "../common/uniforms.glsl"
 #include "../common/world_position.glsl"
 #include "../shadow/lookup.glsl"
@@ -241,9 +241,11 @@ float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderC
 
 // Fraction of light i's light that reaches the point (1 = lit) according
 // to shadow view v. `rotation` is the pixel's (cos, sin) rotation of the
-// sample set.
-float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool reference,
-                         vec2 rotation, PixelFootprint footprint) {
+// sample set. `normal` (the triangle's) places the receiver's plane;
+// `shading_normal` is the horizon an area light's source is weighed
+// against (the terminator model, docs/comparing.md).
+float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 shading_normal,
+                         bool reference, vec2 rotation, PixelFootprint footprint) {
   GpuShadowView view = shadow_views[v];
   ShadowLookup s = shadow_lookup(view, world, normal, shadow_params.normal_offset);
   if (!s.inside) return 1.0;
@@ -302,7 +304,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, bool re
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
   float lit = shadow_backprojection(shadow_depth, shadow_filtered, v, view, s, z, gradient, normal,
-                                    int(light.position_type.w) == LIGHT_POINT,
+                                    shading_normal, int(light.position_type.w) == LIGHT_POINT,
                                     ivec2(gl_FragCoord.xy));
 #if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
   imageAtomicAdd(backprojection_fetch_counts, ivec2(gl_FragCoord.xy), backprojection_fetches);
@@ -333,15 +335,16 @@ float camera_depth(vec3 world) {
 // Fraction of light i's light that reaches the point (1 = lit): from the
 // shadow view the point falls in, blended with the next cascade near the
 // end of a directional light's cascade.
-float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotation,
-                    PixelFootprint footprint) {
+float shadow_factor(int i, vec3 world, vec3 normal, vec3 shading_normal, bool reference,
+                    vec2 rotation, PixelFootprint footprint) {
 #if SHADOW_TECHNIQUE == TECHNIQUE_NONE
   return 1.0;
 #else
   GpuLight light = lights[i];
 #if VIRTUAL_SHADOWS
-  if (i == virtual_shadow.counts.x) {
-    return virtual_shadow_factor(shadow_params, light, world, normal, rotation);
+  if (virtual_shadow.lights[i].y > 0) {
+    return virtual_shadow_factor(i, shadow_params, light, world, normal, rotation,
+                                 interleaved_gradient_noise(floor(gl_FragCoord.xy)));
   }
 #endif
   ViewSelection selected = select_shadow_view(light, world, camera_depth(world));
@@ -351,7 +354,7 @@ float shadow_factor(int i, vec3 world, vec3 normal, bool reference, vec2 rotatio
   int count = selected.blend > 0.0 ? 2 : 1;
   for (int k = 0; k < count; ++k) {
     lit[k] = view_shadow_factor(k == 0 ? selected.view : selected.next, light, world, normal,
-                                reference, rotation, footprint);
+                                shading_normal, reference, rotation, footprint);
   }
   return count == 2 ? mix(lit[0], lit[1], selected.blend) : lit[0];
 #endif
@@ -514,18 +517,20 @@ void main() {
   }
   if (view == VIEW_PAGES) {
     // The virtual page the chosen light's lookup reads here: a colour per
-    // clipmap level, bright where the page was rendered this frame, dark
+    // level (clipmap or mip), bright where the page was rendered this frame, dark
     // where it was cached; page borders as thin dark lines; black where no
     // page holds the point (or the light has no virtual maps).
     vec3 colour = vec3(0.0);
 #if VIRTUAL_SHADOWS
-    if (frame.options.z == virtual_shadow.counts.x) {
-      int level = virtual_resident_level(world);
+    if (virtual_shadow.lights[frame.options.z].y > 0) {
+      int level = virtual_resident_level(frame.options.z, world, facet_normal);
       if (level >= 0) {
-        vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world) * float(VIRTUAL_PAGES);
+        vec2 uv = shadow_map_uv(virtual_shadow.levels[level], world) *
+                  float(virtual_level_texels(level) / VIRTUAL_PAGE_TEXELS);
         uint entry = virtual_page_entry(level, ivec2(floor(uv)));
         // Hues around the wheel, one per level.
-        vec3 hue = clamp(abs(fract(float(level) * 0.2 + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0,
+        float shown = float(level - virtual_shadow.lights[frame.options.z].x);
+        vec3 hue = clamp(abs(fract(shown * 0.2 + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0,
                          0.0, 1.0);
         colour = (entry & PAGE_RENDERED) != 0u ? mix(hue, vec3(1.0), 0.15) : 0.4 * hue;
         vec2 border = min(fract(uv), 1.0 - fract(uv)) * float(VIRTUAL_PAGE_TEXELS);
@@ -543,7 +548,9 @@ void main() {
     PixelFootprint on_facet = pixel_footprint(pixel, world, facet_normal);
     ShadingTexel texel = shading_texel(light, world, camera_depth(world));
 #if VIRTUAL_SHADOWS
-    if (frame.options.z == virtual_shadow.counts.x) texel = virtual_shading_texel(world);
+    if (virtual_shadow.lights[frame.options.z].y > 0) {
+      texel = virtual_shading_texel(frame.options.z, world, facet_normal);
+    }
 #endif
     float density = texels_per_pixel(texel, on_facet.dx, on_facet.dy, facet_normal,
                                      direction_to_light(light, world));
@@ -564,7 +571,7 @@ void main() {
       return;
     }
     vec3 start = lifted_point(lights[i], world, n, facet);
-    float lit = shadow_factor(i, start, facet_normal, view == VIEW_SHADOW_REFERENCE, rotation,
+    float lit = shadow_factor(i, start, facet_normal, n, view == VIEW_SHADOW_REFERENCE, rotation,
                               footprint);
     if (view == VIEW_SHADOW) lit = with_contact_shadow(lit, i, pixel, start);
     float weight = accumulate_source_weight(lights[i], world, n);
@@ -588,7 +595,7 @@ void main() {
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
     vec3 start = lifted_point(lights[i], world, n, facet);
     float lit = with_contact_shadow(
-        shadow_factor(i, start, facet_normal, false, rotation, footprint), i, pixel, start);
+        shadow_factor(i, start, facet_normal, n, false, rotation, footprint), i, pixel, start);
     color += lit * irradiance * n_dot_l * brdf;
   }
   out_color = vec4(color, 1.0);

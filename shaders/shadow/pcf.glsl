@@ -4,6 +4,7 @@
 // compared with the receiver's plane at that sample (receiver-plane depth,
 // from the per-texel depth gradient), so a wide window on a sloped
 // receiver does not shadow the receiver itself.
+#include "depth_map_hooks.glsl"
 #include "occluder_cone.glsl"
 #include "penumbra.glsl"
 #include "poisson.glsl"
@@ -33,21 +34,24 @@ vec2 receiver_depth_gradient(GpuShadowView view, ShadowLookup s, vec3 normal, fl
 // window's centre; a sample is blocked when its texel is nearer the light
 // than the receiver's plane there and inside the cone from the receiver to
 // the light (occluder_cone.glsl).
-float shadow_pcf(sampler2DArray depth_maps, int layer, GpuShadowView view, OccluderCone cone,
-                 vec2 uv, float depth, vec2 gradient, float width, int samples, vec2 rotation) {
-  ivec2 size = textureSize(depth_maps, 0).xy;
-  vec2 center = uv * vec2(size);
-  float lit = 0.0;
-  for (int i = 0; i < samples; ++i) {
-    vec2 offset = rotated_poisson(i, rotation) * (0.5 * width);  // texels
-    ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);
-    float receiver = depth + dot(gradient, offset);
-    float occluder = texelFetch(depth_maps, ivec3(texel, layer), 0).r;
-    bool blocked = receiver > occluder && texel_occludes(view, texel, size, occluder, cone);
-    lit += blocked ? 0.0 : 1.0;
+#define SHADOW_PCF_DEFINE(NAME, MAPS, TEXELS, FETCH)                                           \
+  float NAME(MAPS depth_maps, int layer, GpuShadowView view, OccluderCone cone, vec2 uv,       \
+             float depth, vec2 gradient, float width, int samples, vec2 rotation) {            \
+    ivec2 size = TEXELS(depth_maps, layer);                                                           \
+    vec2 center = uv * vec2(size);                                                             \
+    float lit = 0.0;                                                                           \
+    for (int i = 0; i < samples; ++i) {                                                        \
+      vec2 offset = rotated_poisson(i, rotation) * (0.5 * width); /* texels */                 \
+      ivec2 texel = clamp(ivec2(floor(center + offset)), ivec2(0), size - 1);                  \
+      float receiver = depth + dot(gradient, offset);                                          \
+      float occluder = FETCH(depth_maps, layer, texel);                                        \
+      bool blocked =                                                                           \
+          receiver > occluder && texel_occludes(view, texel, size, occluder, cone);            \
+      lit += blocked ? 0.0 : 1.0;                                                              \
+    }                                                                                          \
+    return lit / float(samples);                                                               \
   }
-  return lit / float(samples);
-}
+SHADOW_PCF_DEFINE(shadow_pcf, sampler2DArray, shadow_map_texels, shadow_map_fetch)
 
 // Lit fraction over the axis-aligned square window `width` texels wide
 // around uv, from `samples` points of the pixel's shifted R2 set
@@ -58,17 +62,20 @@ float shadow_pcf(sampler2DArray depth_maps, int layer, GpuShadowView view, Occlu
 // compare at uv itself. The bilinear footprint widens the kernel by a
 // one-texel tent (variance 1/6 texel^2 per axis); pcss_kernel_width()
 // takes it off.
-float shadow_pcf_bilinear(sampler2DArrayShadow maps, int layer, vec2 uv, float depth,
-                          vec2 gradient, float width, int samples, vec2 shift) {
-  vec2 size = vec2(textureSize(maps, 0).xy);
-  if (samples <= 1) return texture(maps, vec4(uv, float(layer), depth));
-  float lit = 0.0;
-  for (int i = 0; i < samples; ++i) {
-    vec2 offset = square_sample(i, shift) * (0.5 * width);  // texels
-    lit += texture(maps, vec4(uv + offset / size, float(layer), depth + dot(gradient, offset)));
+#define SHADOW_PCF_BILINEAR_DEFINE(NAME, MAPS, TEXELS, COMPARE)                                \
+  float NAME(MAPS maps, int layer, vec2 uv, float depth, vec2 gradient, float width,           \
+             int samples, vec2 shift) {                                                        \
+    vec2 size = vec2(TEXELS(maps, layer));                                                            \
+    if (samples <= 1) return COMPARE(maps, layer, uv, depth);                                  \
+    float lit = 0.0;                                                                           \
+    for (int i = 0; i < samples; ++i) {                                                        \
+      vec2 offset = square_sample(i, shift) * (0.5 * width); /* texels */                      \
+      lit += COMPARE(maps, layer, uv + offset / size, depth + dot(gradient, offset));          \
+    }                                                                                          \
+    return lit / float(samples);                                                               \
   }
-  return lit / float(samples);
-}
+SHADOW_PCF_BILINEAR_DEFINE(shadow_pcf_bilinear, sampler2DArrayShadow, shadow_map_texels,
+                           shadow_map_compare)
 
 // Width of the square of bilinear taps whose result has the spread of a
 // `width`-texel box: the box's variance w^2 / 12 per axis, less the tent's

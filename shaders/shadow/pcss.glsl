@@ -8,39 +8,50 @@
 #include "pcf.glsl"
 
 // The blocker search of PCSS over the depth map: the 2x2 texels around each
-// point of the pixel's rotated Poisson set (four depths a fetch), spread
-// over the region the light's source covers at the near plane, each tested
-// against the receiver's plane at that texel. Only texels inside the cone
-// from the receiver to the source count as blockers (occluder_cone.glsl).
-// `widen` scales the search region (and the caller's cone should follow).
-// Returns (the blockers' count, their summed relative depth).
+// of `samples` points of the pixel's rotated Poisson set (four depths a
+// fetch), spread over a region `search` texels wide around map point
+// `center` (texels), each tested against the receiver's plane at that
+// texel. Only texels inside the cone from the receiver to the source count
+// as blockers (occluder_cone.glsl). Returns (the blockers' count, their
+// summed relative depth). The hooks: depth_map_hooks.glsl.
+#define SHADOW_BLOCKER_SEARCH_DEFINE(NAME, MAPS, TEXELS, GATHER)                               \
+  vec2 NAME(MAPS depth_maps, int v, GpuShadowView view, vec2 center, float z, vec2 gradient,   \
+            OccluderCone cone, vec2 rotation, float search, int samples) {                     \
+    ivec2 size = TEXELS(depth_maps, v);                                                           \
+    /* textureGather's order of the 2x2 texels, from the lower-left one. */                    \
+    const ivec2 gathered[4] = ivec2[](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0));        \
+    float blockers = 0.0, blocker_depth = 0.0;                                                 \
+    for (int k = 0; k < samples; ++k) {                                                        \
+      vec2 sample_point = center + rotated_poisson(k, rotation) * (0.5 * search);              \
+      ivec2 lower_left = ivec2(floor(sample_point - 0.5));                                     \
+      vec4 occluders = GATHER(depth_maps, v, lower_left);                                      \
+      for (int c = 0; c < 4; ++c) {                                                            \
+        /* Each texel against the receiver's plane at that texel. */                           \
+        vec2 offset = vec2(lower_left + gathered[c]) + 0.5 - center;                           \
+        ivec2 texel = clamp(lower_left + gathered[c], ivec2(0), size - 1);                     \
+        if (occluders[c] < z + dot(gradient, offset) &&                                        \
+            texel_occludes(view, texel, size, occluders[c], cone)) {                           \
+          blockers += 1.0;                                                                     \
+          blocker_depth += occluders[c];                                                       \
+        }                                                                                      \
+      }                                                                                        \
+    }                                                                                          \
+    return vec2(blockers, blocker_depth);                                                      \
+  }
+SHADOW_BLOCKER_SEARCH_DEFINE(shadow_blocker_search, sampler2DArray, shadow_map_texels,
+                             shadow_map_gather)
+
+// The blocker search over the region the light's source covers at the
+// near plane (blocker_search_width()). `widen` scales the search region
+// (and the caller's cone should follow).
 vec2 cone_blocker_search(sampler2DArray depth_maps, int v, GpuShadowView view, ShadowLookup s,
                          float z, vec2 gradient, OccluderCone cone, vec2 rotation, int max_samples,
                          float widen) {
-  vec2 size = vec2(textureSize(depth_maps, 0).xy);
-  vec2 center = s.uv * size;
   float d_receiver = linear_depth_of(view, s.depth);
   float search = min(widen * blocker_search_width(view, d_receiver), float(MAX_PCF_WIDTH));
-  int search_samples = pcss_search_sample_count(search, max_samples);
-  // textureGather's order of the 2x2 texels, from the lower-left one.
-  const vec2 gathered[4] = vec2[](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(1.0, 0.0), vec2(0.0));
-  float blockers = 0.0, blocker_depth = 0.0;
-  for (int k = 0; k < search_samples; ++k) {
-    vec2 sample_point = center + rotated_poisson(k, rotation) * (0.5 * search);
-    vec2 lower_left = floor(sample_point - 0.5) + 0.5;  // centre of the lower-left texel
-    vec4 occluders = textureGather(depth_maps, vec3((lower_left + 0.5) / size, float(v)));
-    for (int c = 0; c < 4; ++c) {
-      // Each texel against the receiver's plane at that texel.
-      vec2 offset = lower_left + gathered[c] - center;
-      ivec2 texel = clamp(ivec2(floor(lower_left + gathered[c])), ivec2(0), ivec2(size) - 1);
-      if (occluders[c] < z + dot(gradient, offset) &&
-          texel_occludes(view, texel, ivec2(size), occluders[c], cone)) {
-        blockers += 1.0;
-        blocker_depth += occluders[c];
-      }
-    }
-  }
-  return vec2(blockers, blocker_depth);
+  return shadow_blocker_search(depth_maps, v, view, s.uv * vec2(textureSize(depth_maps, 0).xy), z,
+                               gradient, cone, rotation, search,
+                               pcss_search_sample_count(search, max_samples));
 }
 
 // PCSS: blocker search (cone_blocker_search()), penumbra estimate, PCF over

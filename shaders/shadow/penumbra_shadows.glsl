@@ -47,6 +47,7 @@
 #define VIRTUAL_PAGE_TABLE_UNIT PENUMBRA_SHADOW_PAGE_TABLE_UNIT
 #define VIRTUAL_POOL_UNIT PENUMBRA_SHADOW_PAGE_POOL_UNIT
 #define VIRTUAL_NO_TEXEL_DENSITY
+#define VIRTUAL_NO_DEPTH_BOUNDS
 #include "virtual_shadow.glsl"
 
 // The binding points are the engine's (penumbra::ShadowBindings):
@@ -89,7 +90,7 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
     vec2 gradient = receiver_depth_gradient(view, s, normal, params.max_slope);
     if (technique == TECHNIQUE_BACKPROJECTION) {
       return shadow_backprojection(penumbra_depth, penumbra_filtered, v, view, s, z, gradient,
-                                   normal, int(light.position_type.w) == LIGHT_POINT,
+                                   normal, normal, int(light.position_type.w) == LIGHT_POINT,
                                    ivec2(floor(pixel)));
     }
     // PCSS: the cone the light's source really subtends (its width is the
@@ -128,10 +129,10 @@ float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, v
   float angle = 6.28318530718 * noise;
   vec2 rotation = vec2(cos(angle), sin(angle));
   // The light with virtual maps (hard and pcf) reads them, not cascades.
-  if (light_index == virtual_shadow.counts.x &&
+  if (light_index < MAX_LIGHTS && virtual_shadow.lights[light_index].y > 0 &&
       (technique == TECHNIQUE_HARD || technique == TECHNIQUE_PCF)) {
-    return virtual_shadow_factor_of(technique, penumbra_block.params, light, world, normal,
-                                    rotation);
+    return virtual_shadow_factor_of(technique, light_index, penumbra_block.params, light, world,
+                                    normal, rotation);
   }
   float camera_depth = -(penumbra_block.camera_view * vec4(world, 1.0)).z;
   ViewSelection selected = select_shadow_view(light, world, camera_depth);

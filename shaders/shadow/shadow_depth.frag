@@ -5,7 +5,9 @@
 // continuous across faces): linear in light-space distance for every
 // light, so every technique stores and compares the same quantity.
 //
-// Only a point light's radial depth is written here (RADIAL_DEPTH 1); for
+// Only a point light's radial depth is written here (RADIAL_DEPTH 1), and
+// a spot light's virtual pages' z-bar (VIRTUAL_PAGE 1 with RADIAL_DEPTH 1:
+// the view is the page's level, virtual_page.vert); for
 // the other views the rasterizer's depth is z-bar itself (orthographic) or
 // is linearized to it once per texel after drawing (perspective: see
 // caster_position.glsl), so these fragments write no depth and keep their
@@ -27,6 +29,13 @@
 #ifndef RADIAL_DEPTH
 #define RADIAL_DEPTH 0
 #endif
+#ifndef VIRTUAL_PAGE
+#define VIRTUAL_PAGE 0
+#endif
+#if VIRTUAL_PAGE
+#include "virtual_lookup.glsl"
+flat in int v_level;
+#endif
 
 layout(location = 0) uniform int u_view;
 
@@ -41,7 +50,11 @@ void main() {
   if (is_discarded(m, base_color(m, v_texcoord, vec4(1.0, 1.0, 1.0, v_alpha)).a)) discard;
 #endif
 #if RADIAL_DEPTH
+#if VIRTUAL_PAGE
+  GpuShadowView view = virtual_shadow.levels[v_level];
+#else
   GpuShadowView view = shadow_views[u_view];
+#endif
   gl_FragDepth = clamp(relative_depth_of(view, view_space_depth(view, v_view_position)), 0.0, 1.0);
 #endif
 }

@@ -10,7 +10,7 @@
 #define BINDING_PASS_UBO 3
 #define BINDING_SSAO_UBO 4
 #define BINDING_SHADOW_VIEWS_UBO 5
-#define BINDING_VIRTUAL_UBO 6  // GpuVirtualShadow: a directional light's virtual clipmap
+#define BINDING_VIRTUAL_UBO 6  // GpuVirtualShadow: the virtual lights' levels
 
 // Storage buffers
 #define BINDING_MATERIALS_SSBO 0
@@ -25,10 +25,13 @@
 #define BINDING_VIRTUAL_FREE_LIST_SSBO 6
 #define BINDING_VIRTUAL_RENDER_LIST_SSBO 7
 #define BINDING_VIRTUAL_COMMANDS_SSBO 8
+// The GpuVirtualShadow block itself, where the allocation writes the
+// level bias it chose (params.z) for the passes after it.
+#define BINDING_VIRTUAL_BLOCK_SSBO 9
 // Per-page caster culling: each draw's world bounds (two vec4), and the
 // listed pages each draw covers (pool pages x draws entries).
-#define BINDING_VIRTUAL_DRAW_BOUNDS_SSBO 9
-#define BINDING_VIRTUAL_DRAW_PAGES_SSBO 10
+#define BINDING_VIRTUAL_DRAW_BOUNDS_SSBO 10
+#define BINDING_VIRTUAL_DRAW_PAGES_SSBO 11
 // The vertices' layout in that buffer, in floats (src/scene/mesh.hpp:
 // Vertex, whose offsets src/render/gpu_scene.cpp checks against these).
 #define SCENE_VERTEX_FLOATS 10
@@ -56,12 +59,15 @@
 // level) and the physical page pool (a depth array, one layer per page).
 #define UNIT_VIRTUAL_PAGE_TABLE 11
 #define UNIT_VIRTUAL_POOL 12
+// Each pool page's nearest and farthest depth per cell (virtual_bounds.comp)
+#define UNIT_VIRTUAL_BOUNDS 13
 #define UNIT_COMPUTE_INPUT 0
 #define UNIT_PRESENT_SOURCE 0
 
 // Uniform locations
 #define LOCATION_FIRST_INDEX 0  // GpuScene::draw: the batch's first index, for gl_PrimitiveID
 #define LOCATION_VIRTUAL_DRAW 5  // virtual_page.vert: the caster draw, for its pages
+#define LOCATION_VIRTUAL_LIST 6  // virtual_page.vert: the page list (orthographic, perspective)
 
 // Image units (compute)
 #define IMAGE_OUTPUT 0
@@ -78,15 +84,43 @@
 #define VIRTUAL_PAGE_TEXELS 128
 #define VIRTUAL_PAGES 128
 #define MAX_VIRTUAL_LEVELS 16
+// A spot light's virtual map: mip levels of 16,384^2 down to one page.
+#define VIRTUAL_SPOT_LEVELS 8
+// Levels of all virtual lights together (one page-table layer each): a
+// directional light's clipmap and a spot map for each other light.
+#define MAX_VIRTUAL_VIEWS (MAX_VIRTUAL_LEVELS + (MAX_LIGHTS - 1) * VIRTUAL_SPOT_LEVELS)
+// Cells per page side of the pages' depth bounds (16 x 16 texels each).
+#define VIRTUAL_BOUNDS_CELLS 8
 // A page-table entry: the pool page's index in the low bits, and flags.
 #define PAGE_INDEX_MASK 0xffffu
 #define PAGE_RESIDENT 0x80000000u   // the pool page holds the page's depths
 #define PAGE_REQUESTED 0x40000000u  // a pixel of this frame reads it (marking)
 #define PAGE_RENDERED 0x20000000u   // drawn this frame (else cached)
 #define PAGE_DIRTY 0x10000000u      // a caster over it moved: draw it again
+// Level biases the marking tries: bias k reads levels k/2 finer than the
+// footprint's (k = 0: at least one texel per pixel); a pixel marks the
+// page it reads under each with PAGE_WANTED(k), and the allocation keeps
+// the finest bias whose pages fit the pool.
+#define VIRTUAL_LEVEL_BIASES 5
+#define PAGE_WANTED(k) (0x10000u << (k))
+#define PAGE_WANTED_ALL 0x1f0000u
 
 // Widest PCF / PCSS window, in texels.
 #define MAX_PCF_WIDTH 128
+// Backprojection (shaders/shadow/backprojection.glsl): patches per side
+// of the blockers' region at most: a wider region is read from the
+// hierarchy's level whose cells it spans in at most this many.
+// Default scene, source 1.5, 320x180, 1024^2 maps (pcss_noise_test.cpp):
+// RMSE 0.0246 at 16, 0.0167 at 32, 0.0150 at 36, 0.0115 at 40 and 48 (a
+// silhouette moves by up to half a cell); the lighting pass takes 1.5x,
+// 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
+#define BACKPROJECTION_MAX_CELLS 40
+// Virtual shadow maps: PCSS reads its blocker search and its filter from
+// a level where each is at most this many texels wide (half a page, so a
+// window reads at most 2 x 2 pages; a wider penumbra is read from a
+// coarser level), and backprojection its region where it spans at most
+// BACKPROJECTION_MAX_CELLS texels (shaders/shadow/virtual_shadow.glsl).
+#define VIRTUAL_PCSS_WINDOW 64
 // Largest box radius read from a summed-area table (its fixed-point scale
 // is chosen so that a box this size cannot overflow 32 bits).
 #define MAX_SOFT_RADIUS 64

@@ -141,22 +141,34 @@ struct GpuSsao {
   float unused1;
 };
 
-// A directional light's virtual shadow maps (src/shadow/virtual_clipmap.hpp):
-// one orthographic view per clipmap level over its 128 x 128 pages.
+// The lights' virtual shadow maps (src/shadow/virtual_clipmap.hpp): one
+// view per level, light after light: a directional light's orthographic
+// clipmap levels over their 128 x 128 pages, a spot light's perspective
+// mip levels (level m: 16,384 / 2^m texels, depth_range.w, its pages from
+// (0, 0)). A level's page-table layer is its index here.
 struct GpuVirtualShadow {
-  GpuShadowView levels[MAX_VIRTUAL_LEVELS];
+  GpuShadowView levels[MAX_VIRTUAL_VIEWS];
   // xy: the world page of level l's first page; z: 1 when the level's
   // pages are stale as a whole (its texel or depth range changed); w: 1
   // when its origin moved (pages that scrolled out are freed).
-  ivec4 origins[MAX_VIRTUAL_LEVELS];
+  ivec4 origins[MAX_VIRTUAL_VIEWS];
   // The origins of the last frame, for the pages that scrolled out.
-  ivec4 previous_origins[MAX_VIRTUAL_LEVELS];
-  vec4 camera;  // xyz: where footprints are measured from; w: footprint per unit distance
-  // x: level 0's texel (world units); y: texels a lookup reads around its
-  // own (normal offset, filter, bilinear taps, margin); zw: unused
+  ivec4 previous_origins[MAX_VIRTUAL_VIEWS];
+  // Per scene light: x: its first level, y: its level count (0: the light
+  // reads no virtual maps); zw: unused
+  ivec4 lights[MAX_LIGHTS];
+  vec4 camera;     // xyz: where footprints are measured from; w: footprint per unit distance
+  vec4 view_axis;  // xyz: the camera's unit view direction; w: unused
+  // x: level 0's texel of the directional light (world units); y: texels
+  // a lookup reads around its own (normal offset, filter, bilinear taps,
+  // margin); z: the level bias, in half levels finer (0 from the host; the
+  // allocation writes the one it chose, 0 .. VIRTUAL_LEVEL_BIASES - 1,
+  // before the pages are drawn); w: the window, in texels, of the source's
+  // search region the lookup also reads (pcss: VIRTUAL_PCSS_WINDOW,
+  // backprojection: BACKPROJECTION_MAX_CELLS; 0: none)
   vec4 params;
-  // x: the light that reads virtual maps (-1: none); y: level count;
-  // z: pool pages; w: caster draw commands (one per batch)
+  // x: unused; y: level count (all lights); z: pool pages; w: caster
+  // draw commands (one per batch)
   ivec4 counts;
 };
 

@@ -79,7 +79,7 @@ std::string describe(const ShadowSettings& s) {
   }
   out << ", map " << s.map_size;
   if (s.shadow_maps == ShadowMapKind::Virtual) {
-    out << ", virtual maps for the sun (pool " << s.page_pool_mib << " MiB)";
+    out << ", virtual maps for the sun and spots (pool " << s.page_pool_mib << " MiB)";
   }
   if (depth_samples(s) > 1) out << ", msaa " << depth_samples(s);
   if (s.accumulate > 1) out << ", accumulate " << s.accumulate << " (a frame is one sub-frame)";
@@ -336,8 +336,8 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
   args.named.shadow_maps =
       std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, args.shadow.shadow_maps));
   add_choice(command, "shadow-maps", args.named.shadow_maps,
-             "directional lights: cascades, or virtual shadow maps (pages allocated and rendered "
-             "per frame, pool occupancy)",
+             "directional and spot lights: cascades and spot maps, or virtual shadow maps (pages "
+             "allocated and rendered per frame, pool occupancy)",
              shadow_map_kind_names(), OptionGroup::Lights);
   add_shadow_parameters(command, args.shadow);
   add_accumulate_option(command, args.shadow);
@@ -425,7 +425,7 @@ int run_bench_command(BenchArgs& args) {
     }
     cached_runs.push_back(cached);
     std::optional<std::vector<VirtualOrbitFrame>> orbit;
-    if (settings.shadow_maps == ShadowMapKind::Virtual && renderer.virtual_light() >= 0) {
+    if (settings.shadow_maps == ShadowMapKind::Virtual && !renderer.virtual_lights().empty()) {
       orbit = orbit_virtual_pages(renderer, args.render, settings, kOrbitFrames, kOrbitDegrees);
       print_orbit(*orbit);
     }

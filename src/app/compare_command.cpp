@@ -23,6 +23,7 @@
 #include "penumbra/gl/context.hpp"
 #include "reference/distance_halves.hpp"
 #include "reference/error_image.hpp"
+#include "reference/ground_pixels.hpp"
 #include "reference/reference_cache.hpp"
 #include "reference/shadow_metrics.hpp"
 #include "reference/shadow_ray_tracer.hpp"
@@ -50,6 +51,8 @@ struct Item {
   // Against the traced reference within 2 pixels of its edges (where it
   // steps by more than a half): where the maps' texels alias.
   std::optional<ShadowMetrics> traced_edges;
+  // --shadow-maps virtual: the page pool after the item's frame.
+  std::optional<VirtualPageStats> pages;
   json images = json::object();
 };
 
@@ -227,6 +230,12 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
              "reuse a traced reference cached by an earlier run (--no-cache: trace it again)",
              args.cache, OptionGroup::Reference);
   add_render_parameters(command, args.render);
+  args.shadow_maps =
+      std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, args.shadow.shadow_maps));
+  add_choice(command, "shadow-maps", args.shadow_maps,
+             "directional lights: cascades, or virtual shadow maps (hard and pcf; the other "
+             "techniques in the list are skipped)",
+             shadow_map_kind_names(), OptionGroup::Lights);
   add_shadow_parameters(command, args.shadow);
   add_accumulate_option(command, args.shadow);
   add_reference_options(command, args.reference);
@@ -305,6 +314,7 @@ void measure_items(Renderer& renderer, const CompareArgs& args, const Image& tra
     const std::string stem = item_stem(item.settings);
     view.view = View::Shadow;
     Image shadow = render_accumulated(renderer, view, item.settings);
+    if (!renderer.virtual_lights().empty()) item.pages = renderer.virtual_page_stats();
     restrict_to(shadow, traced);
     item.traced = compare_shadow(shadow, traced);
     item.traced_near = compare_shadow(only_half(shadow, halves, false), traced);
@@ -337,6 +347,7 @@ struct ViewMeasures {
 // over the reference's pixels; with a folder, their false colour image too.
 TexelDensityStats measure_texel_density(Renderer& renderer, const CompareArgs& args,
                                         const std::vector<Item>& items, const Image& traced,
+                                        const std::vector<std::uint8_t>& ground,
                                         const StagedFolder* folder) {
   ShadowSettings shadow = args.shadow;
   for (const Item& item : items) {
@@ -350,7 +361,7 @@ TexelDensityStats measure_texel_density(Renderer& renderer, const CompareArgs& a
     write_png(renderer.read_view(), (fs::path(folder->path()) / "texel-density.png").string(),
               PngEncoding::Linear);
   }
-  return texel_density_stats(renderer.read_texel_density(), traced);
+  return texel_density_stats(renderer.read_texel_density(), traced, ground);
 }
 
 json share_json(const TexelDensityShare& s) {
@@ -435,6 +446,18 @@ void print_report(const CompareArgs& args, const Scene& scene, const TracedRefer
       "%s of the compared pixels and on %s of the %ld shadowed ones (reference < 1).\n",
       fixed(d.judged.median, 3).c_str(), percent(d.judged.at_least_one).c_str(),
       percent(d.shadowed.at_least_one).c_str(), d.shadowed.pixels);
+  if (d.shadowed_ground.pixels > 0) {
+    std::printf("On the ground (its plane): at least 1 on %s of the %ld shadowed pixels.\n",
+                percent(d.shadowed_ground.at_least_one).c_str(), d.shadowed_ground.pixels);
+  }
+  for (const Item& item : items) {
+    if (!item.pages) continue;
+    std::printf(
+        "virtual pages after %s: %d of the pool's %d resident, %d rendered in its frame, %d "
+        "requested pages left without one; levels %g finer than one texel per pixel.\n",
+        technique_name(item.settings.technique).c_str(), item.pages->resident,
+        item.pages->pool_pages, item.pages->rendered, item.pages->unserved, 0.5 * item.pages->bias);
+  }
   std::fflush(stdout);
 }
 
@@ -459,6 +482,12 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       r["filtered"] = item.filtered ? metrics_json(*item.filtered) : json(nullptr);
       r["traced_near"] = metrics_json(*item.traced_near);
       r["traced_far"] = metrics_json(*item.traced_far);
+      r["virtual_pages"] = item.pages ? json{{"pool", item.pages->pool_pages},
+                                             {"resident", item.pages->resident},
+                                             {"rendered", item.pages->rendered},
+                                             {"unserved", item.pages->unserved},
+                                             {"level_bias", 0.5 * item.pages->bias}}
+                                      : json(nullptr);
       if (!args.output_dir.empty()) r["images"] = item.images;
     }
     results.push_back(r);
@@ -476,6 +505,8 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"height", args.render.height},
       {"shadow_map_size", args.shadow.map_size},
       {"shadow_msaa", args.shadow.shadow_msaa},
+      {"shadow_maps", args.shadow_maps},
+      {"page_pool_mib", args.shadow.page_pool_mib},
       // The judged light's own source size, under --light-size/--sun-angle.
       {"light_size",
        with_source_size(scene.lights[static_cast<std::size_t>(light_index)], args.shadow)
@@ -513,6 +544,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"texel_density",
        {{"judged", share_json(measures.density.judged)},
         {"shadowed", share_json(measures.density.shadowed)},
+        {"shadowed_ground", share_json(measures.density.shadowed_ground)},
         {"image", args.output_dir.empty()
                       ? json(nullptr)
                       : json((fs::path(args.output_dir) / "texel-density.png").string())}}},
@@ -526,6 +558,7 @@ int run_compare_command(CompareArgs& args) {
   // Every usage error first, so that none leaves output behind. The
   // technique, filter and --soft are checked per item (plan_items).
   validate(args.render);
+  args.shadow.shadow_maps = parse_shadow_map_kind(args.shadow_maps);
   ShadowSettings common = args.shadow;
   common.soft = false;
   validate(common);
@@ -554,12 +587,14 @@ int run_compare_command(CompareArgs& args) {
   std::optional<StagedFolder> folder;
   if (!args.output_dir.empty()) folder.emplace(args.output_dir);
   ViewMeasures measures;
-  measures.halves = split_at_median_distance(renderer.read_surfaces(),
-                                             renderer.scene().camera.position, reference.image);
+  const SurfacePoints surfaces = renderer.read_surfaces();
+  measures.halves =
+      split_at_median_distance(surfaces, renderer.scene().camera.position, reference.image);
+  const std::vector<std::uint8_t> ground = ground_pixels(renderer.scene(), surfaces);
   measure_items(renderer, args, reference.image, measures.halves, items,
                 folder ? &*folder : nullptr);
-  measures.density =
-      measure_texel_density(renderer, args, items, reference.image, folder ? &*folder : nullptr);
+  measures.density = measure_texel_density(renderer, args, items, reference.image, ground,
+                                           folder ? &*folder : nullptr);
   if (context->error_count() > 0) {
     throw RuntimeError("OpenGL reported " + std::to_string(context->error_count()) +
                        " error(s); last: " + context->last_error());

@@ -30,6 +30,7 @@ struct CompareArgs {
   // --by-distance: the table also measures the near and far halves of the
   // compared pixels (reference/distance_halves.hpp); the JSON always does.
   bool by_distance = false;
+  std::string shadow_maps = "cascades";  // --shadow-maps, parsed into shadow.shadow_maps
   RenderSettings render;
   ShadowSettings shadow;
   ReferenceSettings reference;

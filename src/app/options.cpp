@@ -120,9 +120,10 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
   named.shadow_maps =
       std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, settings.shadow_maps));
   add_choice(app, "shadow-maps", named.shadow_maps,
-             "directional lights: cascades, or virtual shadow maps (a clipmap of 16384^2-texel "
-             "levels in 128^2 pages, the pages the image needs rendered into --page-pool-mib; "
-             "hard and pcf)",
+             "directional and spot lights: cascades and spot maps, or virtual shadow maps (a "
+             "clipmap of 16384^2-texel levels, a spot's 16384^2 map with mip levels, in 128^2 "
+             "pages, the pages the image needs rendered into --page-pool-mib; hard, pcf, pcss "
+             "and backprojection)",
              shadow_map_kind_names(), OptionGroup::Lights);
   add_shadow_parameters(app, settings);
 }
@@ -181,14 +182,15 @@ void add_ssao_options(CLI::App& app, SsaoSettings& settings) {
   add_params(app, settings, kSsaoFloatParams, OptionGroup::Ssao);
 }
 
+ShadowMapKind parse_shadow_map_kind(const std::string& name) {
+  return parse_name(name, "--shadow-maps", "shadow-map kind", kShadowMapKindNames);
+}
+
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow,
                          RenderSettings& render) {
   shadow.technique = parse_name(named.technique, "--technique", "technique", kTechniqueNames);
   shadow.filter = parse_name(named.filter, "--filter", "filter", kFilterNames);
-  if (!named.shadow_maps.empty()) {
-    shadow.shadow_maps =
-        parse_name(named.shadow_maps, "--shadow-maps", "shadow-map kind", kShadowMapKindNames);
-  }
+  if (!named.shadow_maps.empty()) shadow.shadow_maps = parse_shadow_map_kind(named.shadow_maps);
   render.view = parse_name(named.view, "--view", "view", kViewNames);
 }
 

@@ -42,6 +42,9 @@ std::vector<std::string> shadow_map_kind_names();
 std::vector<Technique> parse_technique_list(const std::string& list, const std::string& flag);
 std::vector<Filter> parse_filter_list(const std::string& list, const std::string& flag);
 
+// --shadow-maps NAME; throws UsageError for an unknown name.
+ShadowMapKind parse_shadow_map_kind(const std::string& name);
+
 // Throws UsageError for an unknown name.
 void parse_named_options(const NamedOptions& named, ShadowSettings& shadow, RenderSettings& render);
 

@@ -50,9 +50,9 @@ void validate(const ShadowMapSettings& settings) {
   if (settings.shadow_maps == ShadowMapKind::Virtual &&
       !supports_virtual_maps(settings.technique)) {
     throw UsageError(
-        "--shadow-maps virtual needs --technique hard or pcf: the other techniques filter or "
-        "search their maps as whole textures (moments blurred or summed across page borders), "
-        "so they use --shadow-maps cascades");
+        "--shadow-maps virtual needs --technique hard, pcf, pcss or backprojection: the "
+        "moment techniques filter their maps as whole textures (blurred or summed across page "
+        "borders), so they use --shadow-maps cascades");
   }
   if ((settings.shadow_msaa & (settings.shadow_msaa - 1)) != 0) {
     throw UsageError("--shadow-msaa must be 1, 2, 4 or 8 (got " +

@@ -28,6 +28,13 @@ static_assert(sizeof(gpu::GpuShadow) == 144, "GpuShadow must match std140");
 
 namespace {
 
+// The lighting pass's virtual maps: penumbra's own bindings, with the
+// pages' depth bounds backprojection reads.
+const VirtualBindings kVirtualBindings{.block = BINDING_VIRTUAL_UBO,
+                                       .page_table_unit = UNIT_VIRTUAL_PAGE_TABLE,
+                                       .pool_unit = UNIT_VIRTUAL_POOL,
+                                       .bounds_unit = UNIT_VIRTUAL_BOUNDS};
+
 // The shadow block's fields for --accumulate's sub-frame (the renderer's
 // own: ShadowMaps leaves them 0).
 void set_subframe_params(gpu::GpuShadow& block, const ShadowSettings& shadow) {
@@ -51,23 +58,33 @@ void set_subframe_params(gpu::GpuShadow& block, const ShadowSettings& shadow) {
 // One layer (0 for a 2D texture) of a texture as an image.
 Image read_texture(GLuint texture, int width, int height, GLenum format, int layer = 0) {
   Image image(width, height);
-  std::vector<float> raw(static_cast<std::size_t>(width) * height * 4);
-  const GLenum component = format == GL_DEPTH_COMPONENT ? GL_DEPTH_COMPONENT : GL_RGBA;
-  const std::size_t channels = component == GL_DEPTH_COMPONENT ? 1 : 4;
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureSubImage(texture, 0, 0, 0, layer, width, height, 1, component, GL_FLOAT,
+  if (format != GL_DEPTH_COMPONENT) {
+    // Straight into the image, then its rows swapped in place: a second
+    // copy of a large view (a point light's six faces tiled are 400 MB of
+    // RGBA32F) would double the read-back's memory.
+    glGetTextureSubImage(texture, 0, 0, 0, layer, width, height, 1, GL_RGBA, GL_FLOAT,
+                         static_cast<GLsizei>(image.rgba.size() * sizeof(float)),
+                         image.rgba.data());
+    // GL rows run bottom to top; images run top to bottom.
+    const std::size_t row = static_cast<std::size_t>(width) * 4;
+    for (int y = 0; y < height / 2; ++y) {
+      std::swap_ranges(image.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
+                       image.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                       image.rgba.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * row));
+    }
+    return image;
+  }
+  // A depth texture: its one channel as grey.
+  std::vector<float> raw(static_cast<std::size_t>(width) * height);
+  glGetTextureSubImage(texture, 0, 0, 0, layer, width, height, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                        static_cast<GLsizei>(raw.size() * sizeof(float)), raw.data());
-  // GL rows run bottom to top; images run top to bottom.
   for (int y = 0; y < height; ++y) {
-    const float* src = raw.data() + static_cast<std::size_t>(height - 1 - y) * width * channels;
+    const float* src = raw.data() + static_cast<std::size_t>(height - 1 - y) * width;
     for (int x = 0; x < width; ++x) {
       float* dst = image.pixel(x, y);
-      if (channels == 1) {
-        dst[0] = dst[1] = dst[2] = src[x];
-        dst[3] = 1.0f;
-      } else {
-        for (int c = 0; c < 4; ++c) dst[c] = src[static_cast<std::size_t>(x) * 4 + c];
-      }
+      dst[0] = dst[1] = dst[2] = src[x];
+      dst[3] = 1.0f;
     }
   }
   return image;
@@ -128,6 +145,33 @@ void Renderer::set_lights(const std::vector<Light>& lights) {
                      " lights; at most " + std::to_string(MAX_LIGHTS) + " are supported");
   }
   scene_.lights = lights;
+}
+
+void Renderer::fit_virtual_lights(const ShadowSettings& shadow, const CameraFrustum& camera,
+                                  int image_height) {
+  // Last frame's maps per light: a spot map keeps its depth range while
+  // it serves (fit_virtual_spot_map).
+  std::vector<VirtualLightMaps> previous = std::move(virtual_lights_);
+  virtual_lights_.clear();
+  if (shadow.shadow_maps != ShadowMapKind::Virtual) return;
+  const auto previous_of = [&](int light) -> const VirtualClipmap* {
+    for (const VirtualLightMaps& p : previous)
+      if (p.light_index == light) return &p.maps;
+    return nullptr;
+  };
+  if (virtual_light_ >= 0) {
+    virtual_lights_.push_back({virtual_light_,
+                               scene_.lights[static_cast<std::size_t>(virtual_light_)],
+                               virtual_clipmap_});
+  }
+  for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+    const Light& light = scene_.lights[i];
+    if (light.type != LightType::Spot) continue;
+    const int index = static_cast<int>(i);
+    virtual_lights_.push_back({index, with_source_size(light, shadow),
+                               fit_virtual_spot_map(light_views_[i].views.front(), camera,
+                                                    image_height, previous_of(index))});
+  }
 }
 
 Bounds Renderer::shape_bounds(std::size_t shape) const {
@@ -301,8 +345,9 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   }
   lights_ubo_.update(lights, sizeof lights);
   views_ubo_.update(views, sizeof views);
-  // Virtual maps for the first directional light (its cascade views stay
-  // in the block, undrawn); the others keep their views.
+  // Virtual maps for the first directional light and every spot light
+  // (their conventional views stay in the block, undrawn); the others keep
+  // their views.
   virtual_light_ = -1;
   if (virtual_maps) {
     for (int i = 0; i < light_count && virtual_light_ < 0; ++i) {
@@ -318,6 +363,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
                               cascade_light_frame(light)),
         &virtual_clipmap_);
   }
+  fit_virtual_lights(shadow, camera, render.height);
   if (maps_kind_for_ != shadow.shadow_maps) {
     shadow_cache_.invalidate();
     maps_kind_for_ = shadow.shadow_maps;
@@ -352,21 +398,25 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   const bool shadows = shadow.technique != Technique::None || is_map_view(render.view);
   shadow_views_drawn_ = 0;
   std::span<const std::uint8_t> stale;
-  if (shadows && virtual_light_ >= 0) {
+  if (shadows && !virtual_lights_.empty()) {
     // Marking reads the camera's depth: the G-buffer first.
     ensure_gbuffer(frame, render, profiler);
-    // Marked from the G-buffer's reversed-Z depth (render/camera_depth.hpp).
+    // Marked from the G-buffer's reversed-Z depth (render/camera_depth.hpp)
+    // and its facet normals, the ones the lighting's lookup is given.
     const CameraDepthBuffer depth{.texture = gbuffer_pass_.depth().id(),
                                   .width = render.width,
                                   .height = render.height,
                                   .view_projection = frame.projection * frame.view,
                                   .clip_depth = ClipDepth::ZeroToOne,
-                                  .background_depth = static_cast<float>(CAMERA_FAR_DEPTH)};
-    virtual_pass_.update(virtual_light_, scene_.lights[static_cast<std::size_t>(virtual_light_)],
-                         virtual_clipmap_, shadow, depth, profiler);
-    gl::GpuPassScope timed(profiler, gl::GpuPass::VirtualPages);
-    draw_virtual_pages();
-    virtual_pass_.bind();
+                                  .background_depth = static_cast<float>(CAMERA_FAR_DEPTH),
+                                  .normal_texture = gbuffer_pass_.facet().id()};
+    virtual_pass_.update(virtual_lights_, shadow, depth, profiler);
+    {
+      gl::GpuPassScope timed(profiler, gl::GpuPass::VirtualPages);
+      draw_virtual_pages();
+    }
+    virtual_pass_.build_bounds();
+    virtual_pass_.bind(kVirtualBindings);
   }
   if (shadows) {
     // Only the views whose depths changed (view_cache.hpp); a light with
@@ -374,12 +424,14 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     stale = shadow_cache_.stale_views(
         std::span<const gpu::GpuShadowView>(views, static_cast<std::size_t>(view_count_)),
         shadow.map_size);
-    if (virtual_light_ >= 0) {
+    if (!virtual_lights_.empty()) {
       stale_without_virtual_.assign(stale.begin(), stale.end());
       stale_without_virtual_.resize(static_cast<std::size_t>(view_count_), 1);
-      const auto light = static_cast<std::size_t>(virtual_light_);
-      for (std::size_t v = 0; v < light_views_[light].views.size(); ++v) {
-        stale_without_virtual_[static_cast<std::size_t>(first_views_[light]) + v] = 0;
+      for (const VirtualLightMaps& maps : virtual_lights_) {
+        const auto light = static_cast<std::size_t>(maps.light_index);
+        for (std::size_t v = 0; v < light_views_[light].views.size(); ++v) {
+          stale_without_virtual_[static_cast<std::size_t>(first_views_[light]) + v] = 0;
+        }
       }
       stale = stale_without_virtual_;
     }
@@ -490,22 +542,45 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
 }
 
 void Renderer::draw_virtual_pages() {
-  if (!virtual_page_programs_[0]) {
-    for (int cut_outs = 0; cut_outs < 2; ++cut_outs) {
-      virtual_page_programs_[cut_outs] =
-          gl::Program::graphics("shadow/virtual_page.vert", "shadow/shadow_depth.frag",
-                                {{"RADIAL_DEPTH", "0"}, {"CUT_OUTS", cut_outs != 0 ? "1" : "0"}});
+  if (!virtual_page_programs_[0][0]) {
+    // The orthographic levels' pages keep the rasterizer's depth; the
+    // perspective levels' fragments write their z-bar (virtual_page.vert).
+    for (int list = 0; list < 2; ++list) {
+      for (int cut_outs = 0; cut_outs < 2; ++cut_outs) {
+        const char* written = list != 0 ? "1" : "0";
+        virtual_page_programs_[list][cut_outs] =
+            gl::Program::graphics("shadow/virtual_page.vert", "shadow/shadow_depth.frag",
+                                  {{"RADIAL_DEPTH", written},
+                                   {"VIRTUAL_PAGE", written},
+                                   {"CUT_OUTS", cut_outs != 0 ? "1" : "0"}});
+      }
     }
   }
   virtual_pass_.begin_pages();
-  virtual_pass_.clear_listed_pages();
-  const std::size_t offset = VirtualShadowPass::draws_offset();
-  virtual_page_programs_[0].use();
-  gpu_scene_.draw_indirect(SurfaceSet::Opaque, offset, LOCATION_VIRTUAL_DRAW);
-  virtual_page_programs_[1].use();
-  gpu_scene_.draw_indirect(SurfaceSet::CutOut, offset, LOCATION_VIRTUAL_DRAW);
+  for (int list = 0; list < 2; ++list) {
+    virtual_pass_.clear_listed_pages(list);
+    const std::size_t offset = virtual_pass_.draws_offset(list);
+    for (int cut_outs = 0; cut_outs < 2; ++cut_outs) {
+      const gl::Program& program = virtual_page_programs_[list][cut_outs];
+      program.use();
+      glProgramUniform1i(program.id(), LOCATION_VIRTUAL_LIST, list);
+      gpu_scene_.draw_indirect(cut_outs == 0 ? SurfaceSet::Opaque : SurfaceSet::CutOut, offset,
+                               LOCATION_VIRTUAL_DRAW);
+    }
+  }
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   virtual_pass_.end_pages();
+}
+
+void Renderer::release_filtered_maps() {
+  resolve_pass_.release();
+  blur_pass_.release();
+  fused_pass_.release();
+  hierarchy_pass_.release();
+  sat_pass_.release();
+  tiling_pass_.release();
+  filtered_for_.reset();
+  gbuffer_current_ = false;  // shade() would read the freed maps
 }
 
 void Renderer::ensure_gbuffer(const gpu::GpuFrame& frame, const RenderSettings& render,
@@ -567,7 +642,7 @@ void Renderer::shade_as(int define, bool ambient_occlusion) {
   last_frame_.options.w = ambient_occlusion ? 1 : 0;
   frame_ubo_.update(&last_frame_, sizeof last_frame_);
   bind_frame_blocks();
-  if (last_shadow_.shadow_maps == ShadowMapKind::Virtual) virtual_pass_.bind();
+  if (last_shadow_.shadow_maps == ShadowMapKind::Virtual) virtual_pass_.bind(kVirtualBindings);
   if (define == VIEW_SHADOW_REFERENCE) bind_reference_weights(last_shadow_);
   lighting_pass_.execute(gbuffer_pass_, last_shadows_ ? &shadow_pass_.depth_maps() : nullptr,
                          last_filtered_, last_shadow_, ambient_occlusion ? last_ao_ : 0,
@@ -660,6 +735,25 @@ Image read_view_source(const ViewSource& source) {
     }
   }
   return image;
+}
+
+std::vector<glm::vec3> Renderer::read_facet_normals() const {
+  if (!gbuffer_current_) {
+    throw std::logic_error("read_facet_normals() needs a camera view rendered");
+  }
+  const int width = gbuffer_pass_.facet().width(), height = gbuffer_pass_.facet().height();
+  const Image facet = read_texture(gbuffer_pass_.facet().id(), width, height, GL_RGBA);
+  std::vector<glm::vec3> normals(static_cast<std::size_t>(width) * height, glm::vec3(0.0f));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float* n = facet.pixel(x, y);
+      const glm::vec3 v(n[0], n[1], n[2]);
+      if (glm::length(v) > 0.0f) {
+        normals[static_cast<std::size_t>(y) * width + x] = glm::normalize(v);
+      }
+    }
+  }
+  return normals;
 }
 
 SurfacePoints Renderer::read_surfaces() const {

@@ -96,13 +96,25 @@ class Renderer {
     filtered_for_.reset();
     virtual_pass_.invalidate();
   }
+  // Frees the maps made from the depth maps and the map views' image (the
+  // resolve, filter, summed-area-table, hierarchy and tiling outputs:
+  // arrays as large as the depth maps, in up to 16 bytes a texel, which a
+  // technique used once would otherwise hold until the renderer goes).
+  // The next render() makes what it needs again; the depth maps, the
+  // G-buffer and the programs stay. Until then shade() is not available,
+  // nor read_view() of a map view.
+  void release_filtered_maps();
   // The shadow views the last render() drew (0: the maps were cached).
   [[nodiscard]] int shadow_views_drawn() const { return shadow_views_drawn_; }
-  // --shadow-maps virtual: the light that reads virtual maps in the last
-  // render() (the first directional light; -1: none), its clipmap, and the
-  // pass that holds its page table and pool.
+  // --shadow-maps virtual: the directional light that reads virtual maps
+  // in the last render() (the first; -1: none), its clipmap, every light's
+  // virtual maps (that light's and each spot light's, in the order of
+  // their levels), and the pass that holds their page table and pool.
   [[nodiscard]] int virtual_light() const { return virtual_light_; }
   [[nodiscard]] const VirtualClipmap& virtual_clipmap() const { return virtual_clipmap_; }
+  [[nodiscard]] const std::vector<VirtualLightMaps>& virtual_lights() const {
+    return virtual_lights_;
+  }
   [[nodiscard]] const VirtualShadowPass& virtual_shadows() const { return virtual_pass_; }
   // Its pages after the last render(), read back from the GPU (benchmarks, tests).
   [[nodiscard]] VirtualPageStats virtual_page_stats() const { return virtual_pass_.read_stats(); }
@@ -157,6 +169,10 @@ class Renderer {
   // rebuilt from the G-buffer depth (through the inverse view-projection,
   // in double) and normals. Throws std::logic_error after a map view.
   [[nodiscard]] SurfacePoints read_surfaces() const;
+  // The G-buffer's triangle normals (unit; 0 where no geometry), ordered as
+  // read_surfaces()' points: what the virtual maps pick each pixel's level
+  // with.
+  [[nodiscard]] std::vector<glm::vec3> read_facet_normals() const;
 
   // Every shadow view's map as the filters see it, one layer per view: the
   // technique's representation for vsm/esm/msm/msm16 (filtered, when the
@@ -212,9 +228,12 @@ class Renderer {
   LightingPass lighting_pass_;
   ViewTilingPass tiling_pass_;
   VirtualShadowPass virtual_pass_;
-  gl::Program virtual_page_programs_[2];  // the scene's casters into the pages: opaque, cut-outs
+  // The scene's casters into the pages: [list: orthographic, perspective
+  // levels][opaque, cut-outs].
+  gl::Program virtual_page_programs_[2][2];
   VirtualClipmap virtual_clipmap_;
   int virtual_light_ = -1;
+  std::vector<VirtualLightMaps> virtual_lights_;
   // The kind of maps the shadow views' cache holds (a switch redraws them).
   std::optional<ShadowMapKind> maps_kind_for_;
   gl::Buffer frame_ubo_, lights_ubo_, shadow_ubo_, views_ubo_;
@@ -225,6 +244,11 @@ class Renderer {
   // reads (render() fills them; shade() reuses them).
   void bind_frame_blocks();
   void bind_reference_weights(const ShadowSettings& shadow);
+  // The lights' virtual maps for this frame (virtual_lights_): the
+  // directional light's clipmap fitted as virtual_clipmap_, and a map for
+  // each spot light over its fitted view.
+  void fit_virtual_lights(const ShadowSettings& shadow, const CameraFrustum& camera,
+                          int image_height);
   // Draws the camera's G-buffer unless it holds this frame's surfaces.
   void ensure_gbuffer(const gpu::GpuFrame& frame, const RenderSettings& render,
                       gl::GpuProfiler* profiler);
@@ -254,7 +278,7 @@ class Renderer {
   int view_count_ = 0;
   // What the shadow maps and the filtered maps hold (forget_shadow_maps()).
   ViewCache shadow_cache_;
-  // The stale views less those of the light with virtual maps (kept to
+  // The stale views less those of the lights with virtual maps (kept to
   // allocate nothing per frame).
   std::vector<std::uint8_t> stale_without_virtual_;
   std::optional<ShadowSettings> filtered_for_;

@@ -22,6 +22,9 @@ class ViewTilingPass {
   // Tiles per row for `count` views.
   static int columns(int count);
 
+  // Frees the output (execute() makes it again).
+  void release() { output_ = gl::Texture(); }
+
  private:
   gl::Program program_;
   gl::Texture output_;

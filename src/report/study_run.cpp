@@ -1,9 +1,11 @@
 #include "report/study_run.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
 #include "app/command_line.hpp"
+#include "app/light_choice.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "penumbra/error.hpp"
@@ -107,6 +109,9 @@ std::string Study::path_of(const std::string& file) const {
 }
 
 void Study::section(HtmlPage& page, const std::string& id, const std::string& title) {
+  // What the last section's techniques left (their filtered arrays) is
+  // made again where this one needs it.
+  renderer_.release_filtered_maps();
   page.section(id, title);
   progress_.step(title, items_, total_items());
 }
@@ -135,6 +140,26 @@ ShadowSettings Study::soft(Technique t) const {
   s.soft = true;
   s.blur = 1;
   return s;
+}
+
+const Study::LightAlone& Study::measured_light_alone() {
+  if (light_alone_) return *light_alone_;
+  LightAlone alone{options_.light_choice, scene_.lights};
+  const auto index = static_cast<std::size_t>(base_render_.light_index);
+  if (scene_.lights.size() > 1 && index < scene_.lights.size()) {
+    // --light TYPE takes the scene's first light of that type.
+    const LightType type = scene_.lights[index].type;
+    const auto first = std::find_if(scene_.lights.begin(), scene_.lights.end(),
+                                    [&](const Light& l) { return l.type == type; });
+    if (first - scene_.lights.begin() == static_cast<std::ptrdiff_t>(index)) {
+      alone.choice = std::string(enum_name<LightType>(kLightTypeNames, type));
+      Scene scene = scene_;
+      apply_light_choice(alone.choice, scene);
+      alone.lights = scene.lights;
+    }
+  }
+  light_alone_ = std::move(alone);
+  return *light_alone_;
 }
 
 const TracedReference* Study::base_traced() {

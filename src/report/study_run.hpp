@@ -78,6 +78,23 @@ auto with_light_alone(Renderer& renderer, int light, Render&& render) {
   return render(0);
 }
 
+// Lights `renderer` with `lights` until the end of the scope, then gives
+// it back the lights it had.
+class ScopedLights {
+ public:
+  ScopedLights(Renderer& renderer, const std::vector<Light>& lights)
+      : renderer_(renderer), saved_(renderer.scene().lights) {
+    renderer.set_lights(lights);
+  }
+  ~ScopedLights() { renderer_.set_lights(saved_); }
+  ScopedLights(const ScopedLights&) = delete;
+  ScopedLights& operator=(const ScopedLights&) = delete;
+
+ private:
+  Renderer& renderer_;
+  std::vector<Light> saved_;
+};
+
 class Study {
  public:
   Study(const Scene& scene, const StudyOptions& options, gl::Context& context);
@@ -176,6 +193,17 @@ class Study {
   // The traced reference of the spot light at the base settings (light
   // size included), traced once (one item, the first time).
   const TracedReference* base_traced();
+  // The light the study measures (base_render_.light_index) alone: the
+  // --light choice that lights the scene with it alone (the study's own
+  // when the scene has no other light) and the lights that choice gives.
+  // The sweeps measure that light's shadow factor and show its frames: the
+  // other lights' maps (a sun's cascades) would be filtered again at every
+  // setting for images no number reads.
+  struct LightAlone {
+    std::string choice;
+    std::vector<Light> lights;
+  };
+  const LightAlone& measured_light_alone();
   [[nodiscard]] int traced_samples() const {
     return (options_.quick ? kQuickSize : kFullSize).samples;
   }
@@ -212,6 +240,7 @@ class Study {
   std::vector<std::pair<std::string, double>> total_ms_;
   std::list<std::pair<ShadowSettings, Image>> filtered_references_;
   std::vector<std::pair<Technique, Image>> technique_shadows_;  // section 1's, at with(t)
+  std::optional<LightAlone> light_alone_;
   // The foliage scene (section 8), once written and read.
   std::optional<Scene> foliage_scene_;
   // What the verdict is drawn from (a foliage section sets its line).

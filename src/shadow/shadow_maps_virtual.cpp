@@ -13,12 +13,9 @@ namespace penumbra {
 
 namespace {
 
-// The block bind() binds when no light has virtual maps: counts.x -1.
-const gpu::GpuVirtualShadow kNoVirtualLight = [] {
-  gpu::GpuVirtualShadow block{};
-  block.counts = glm::ivec4(-1, 0, 0, 0);
-  return block;
-}();
+// The block bind() binds when no light has virtual maps: every light's
+// level count 0.
+const gpu::GpuVirtualShadow kNoVirtualLight{};
 
 // World -> clip of virtual page `page` (level, world page xy): an
 // orthographic box over the page's square in the level's light frame,
@@ -40,15 +37,16 @@ ShadowMapsVirtual::ShadowMapsVirtual(const ShadowBindings& bindings)
                         "penumbra no virtual maps") {}
 
 std::span<const GLuint> ShadowMapsVirtual::storage_buffers() {
-  static constexpr std::array<GLuint, 6> kBuffers{
+  static constexpr std::array<GLuint, 7> kBuffers{
       BINDING_VIRTUAL_COUNTERS_SSBO,    BINDING_VIRTUAL_FREE_LIST_SSBO,
       BINDING_VIRTUAL_RENDER_LIST_SSBO, BINDING_VIRTUAL_COMMANDS_SSBO,
-      BINDING_VIRTUAL_DRAW_BOUNDS_SSBO, BINDING_VIRTUAL_DRAW_PAGES_SSBO};
+      BINDING_VIRTUAL_BLOCK_SSBO,       BINDING_VIRTUAL_DRAW_BOUNDS_SSBO,
+      BINDING_VIRTUAL_DRAW_PAGES_SSBO};
   return kBuffers;
 }
 
 std::span<const GLuint> ShadowMapsVirtual::texture_2d_units() {
-  static constexpr std::array<GLuint, 1> kUnits{UNIT_GBUFFER_DEPTH};
+  static constexpr std::array<GLuint, 2> kUnits{UNIT_GBUFFER_DEPTH, UNIT_GBUFFER_FACET};
   return kUnits;
 }
 
@@ -62,6 +60,11 @@ void ShadowMapsVirtual::fit(std::span<const Light> lights, const CameraFrustum& 
     if (lights[i].type == LightType::Directional) light_ = static_cast<int>(i);
   }
   if (light_ < 0) return;
+  if (settings.technique == Technique::Pcss || settings.technique == Technique::Backprojection) {
+    throw UsageError(
+        "ShadowMaps: virtual shadow maps take --technique hard or pcf (pcss and backprojection "
+        "through virtual maps are penumbra's renderer's); use cascades");
+  }
   if (depth.texture == 0 || depth.width <= 0 || depth.height <= 0) {
     throw UsageError(
         "ShadowMaps: virtual shadow maps mark their pages from the camera's depth buffer: "
@@ -93,7 +96,8 @@ int ShadowMapsVirtual::render(const DrawCasters& draw, const ShadowMapSettings& 
     caster_program_ =
         gl::Program::graphics("shadow/virtual_caster.vert", "shadow/caster_depth.frag", defines);
   }
-  pass_->update(light_, light_data_, *clipmap_, settings, depth_);
+  const VirtualLightMaps maps{.light_index = light_, .light = light_data_, .maps = *clipmap_};
+  pass_->update(std::span(&maps, 1), settings, depth_);
   const std::vector<glm::ivec4> pages = pass_->read_render_list();
   if (pages.empty()) return 0;
   set_caster_pass_state();
@@ -123,7 +127,8 @@ void ShadowMapsVirtual::bind() const {
   if (pass_ && light_ >= 0) {
     pass_->bind(VirtualBindings{.block = bindings_.virtual_block,
                                 .page_table_unit = bindings_.page_table_unit,
-                                .pool_unit = bindings_.page_pool_unit});
+                                .pool_unit = bindings_.page_pool_unit,
+                                .bounds_unit = std::nullopt});
     return;
   }
   glBindBufferBase(GL_UNIFORM_BUFFER, bindings_.virtual_block, no_virtual_block_.id());

@@ -274,7 +274,8 @@ PanelActions draw_panel(ViewerState& state, const PanelStatus& status, float wid
     }
     if (offer("shadow-maps")) {
       choice_combo(state, "shadow-maps", state.shadow.shadow_maps, kShadowMapKindNames,
-                   "directional lights: cascades, or virtual shadow maps (hard, pcf)");
+                   "directional and spot lights: cascades and spot maps, or virtual shadow maps "
+                   "(hard, pcf)");
     }
     for (const auto& p : kShadowFlagParams) {
       if (!offer(p.name)) continue;

@@ -204,7 +204,8 @@ FrameInput frame_input(const ViewerState& state, int width, int height, int max_
   }
   if (s.shadow_maps == ShadowMapKind::Virtual && !supports_virtual_maps(s.technique)) {
     s.shadow_maps = ShadowMapKind::Cascades;
-    f.notes.push_back("shadow maps: cascades (virtual maps serve hard and pcf)");
+    f.notes.push_back(
+        "shadow maps: cascades (virtual maps serve hard, pcf, pcss and backprojection)");
   }
   if (s.shadow_maps == ShadowMapKind::Virtual && is_map_view(r.view)) {
     f.notes.push_back(name_of(r.view) + ": virtual maps have no whole map; showing pages");

@@ -312,10 +312,12 @@ TEST_F(Report, WritesAPageWhoseImagesExist) {
 TEST_F(Report, TheCommandUnderAnImageRemakesIt) {
   ASSERT_EQ(status_, 0);
   // Spot-check a filtered technique's image under the scene's lights and
-  // under a point light alone (--light), and the foliage scene (its glTF
-  // written next to the page): its command, run in the report's folder,
-  // writing to another name.
-  for (const std::string name : {"technique-msm.png", "light-point-msm.png", "foliage.png"}) {
+  // under a point light alone (--light), a sweep's frame (the measured
+  // light alone), and the foliage scene (its glTF written next to the
+  // page): its command, run in the report's folder, writing to another
+  // name.
+  for (const std::string name :
+       {"technique-msm.png", "light-point-msm.png", "sweep-msm-w16.png", "foliage.png"}) {
     const auto chosen = std::find_if(figures_.begin(), figures_.end(),
                                      [&](const Figure& f) { return f.src == name; });
     ASSERT_NE(chosen, figures_.end()) << name;
@@ -744,25 +746,38 @@ TEST_F(Report, TexelDensityOfEachLayoutAgainstDistance) {
   const Table table = tables_of(section).front();
   const int share = column_of(table, "at least 1 texel");
   ASSERT_GE(share, 0);
-  ASSERT_EQ(table.size(), 2u) << "one layout: the cascades";
+  ASSERT_EQ(table.size(), 3u) << "two layouts: the cascades, virtual maps";
   EXPECT_NE(table[1][0].find("cascades"), std::string::npos);
+  EXPECT_NE(table[2][0].find("virtual"), std::string::npos);
   const double percent = std::stod(table[1][static_cast<std::size_t>(share)]);
   EXPECT_GT(percent, 0.0);
   EXPECT_LE(percent, 100.0);
+  // Virtual maps give (almost) every pixel a texel of its own; the
+  // remainder are faces turned along the light's rays.
+  EXPECT_GE(std::stod(table[2][static_cast<std::size_t>(share)]), 95.0);
   const std::vector<Plot> plots = plots_of(section);
   ASSERT_EQ(plots.size(), 1u);
   std::map<std::string, std::vector<PlotPoint>> series;
   for (const PlotPoint& p : plots.front().points) series[p.series].push_back(p);
-  ASSERT_EQ(series.size(), 2u) << "the cascades and the one-texel line, no empty series";
-  const std::vector<PlotPoint>& cascades = series[table[1][0]];
-  ASSERT_GE(cascades.size(), 4u);
-  for (std::size_t i = 0; i < cascades.size(); ++i) {
-    EXPECT_GT(cascades[i].y, 0.0);
-    if (i > 0) {
-      EXPECT_GT(cascades[i].x, cascades[i - 1].x) << "in order of distance";
+  ASSERT_EQ(series.size(), 3u) << "both layouts and the one-texel line, no empty series";
+  for (std::size_t row : {1u, 2u}) {
+    const std::vector<PlotPoint>& layout = series[table[row][0]];
+    ASSERT_GE(layout.size(), 4u) << table[row][0];
+    for (std::size_t i = 0; i < layout.size(); ++i) {
+      EXPECT_GT(layout[i].y, 0.0);
+      if (row == 2) {
+        EXPECT_GE(layout[i].y, 1.0) << "virtual maps' median at every distance";
+      }
+      if (i > 0) {
+        EXPECT_GT(layout[i].x, layout[i - 1].x) << "in order of distance";
+      }
     }
   }
   for (const PlotPoint& p : series["one texel per pixel"]) EXPECT_EQ(p.y, 1.0);
+  // Each layout's density and hard shadow.
+  for (int i = 1; i < 4; ++i) {
+    EXPECT_TRUE(fs::exists(dir_ / ("texel-density-" + std::to_string(i) + ".png"))) << i;
+  }
   EXPECT_TRUE(fs::exists(dir_ / "texel-density-0.png"));
 }
 

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <utility>
 
 #include "gpu_fixture.hpp"
 #include "penumbra/shadow/view_cache.hpp"
@@ -111,6 +113,34 @@ TEST_F(GpuTest, MovedShapeDrawsTheViewsThatSeeIt) {
     EXPECT_EQ(renderer.shadow_views_drawn(), 0);
   }
   EXPECT_GT(fewer, 0) << "every move drew every view: the test shows no caching";
+}
+
+// Renderer::release_filtered_maps: the next frame makes the freed arrays
+// again and equals the frame before (a fused filter, a summed-area table, a
+// hierarchy, and a map view's resolve and tiled image); shade() waits for
+// that frame.
+TEST_F(GpuTest, ReleasedFilteredMapsAreMadeAgain) {
+  Renderer renderer(*builtin_scene("default"));
+  ShadowSettings soft = small_maps(Technique::Msm);
+  soft.filter = Filter::Sat;
+  soft.soft = true;
+  soft.blur = 1;
+  const std::pair<RenderSettings, ShadowSettings> frames[] = {
+      {small_view(), small_maps(Technique::Msm)},
+      {small_view(), soft},
+      {small_view(), small_maps(Technique::Backprojection)},
+      {small_view(View::Moments), small_maps(Technique::Esm)},
+      {small_view(View::MomentsFiltered), small_maps(Technique::Vsm)}};
+  for (const auto& [render, shadow] : frames) {
+    renderer.render(render, shadow);
+    const Image before = renderer.read_view();
+    renderer.release_filtered_maps();
+    EXPECT_THROW(renderer.shade(View::Shadow), std::logic_error);
+    renderer.render(render, shadow);
+    EXPECT_EQ(renderer.shadow_views_drawn(), 0) << "the depth maps are kept";
+    EXPECT_EQ(before.rgba, renderer.read_view().rgba)
+        << enum_name<Technique>(kTechniqueNames, shadow.technique);
+  }
 }
 
 }  // namespace

@@ -94,6 +94,7 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       {"shadow/virtual_mark.comp", {{}}},
       {"shadow/virtual_allocate.comp", {{}}},
       {"shadow/virtual_dirty.comp", {{}}},
+      {"shadow/virtual_bounds.comp", {{}}},
       {"test/shadow_math.comp", {{}}},
       {"test/sat_rectangle.comp", {{}}},
       {"render/ssao.comp", {{}}},
@@ -116,6 +117,13 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
                             {{"SHADOW_TECHNIQUE", std::to_string(TECHNIQUE_BACKPROJECTION)},
                              {"BACKPROJECTION_COUNT_FETCHES", "1"}}));
+  // The lookups through virtual maps (shaders/shadow/virtual_shadow.glsl).
+  for (int technique : {TECHNIQUE_HARD, TECHNIQUE_PCF, TECHNIQUE_PCSS, TECHNIQUE_BACKPROJECTION}) {
+    EXPECT_NO_THROW(gl::Program::graphics(
+        "common/fullscreen.vert", "render/lighting.frag",
+        {{"SHADOW_TECHNIQUE", std::to_string(technique)}, {"VIRTUAL_SHADOWS", "1"}}))
+        << "virtual lighting, technique " << technique;
+  }
   const char* pairs[][2] = {{"shadow/shadow_depth.vert", "shadow/shadow_depth.frag"},
                             {"scene/gbuffer.vert", "scene/gbuffer.frag"}};
   for (auto& pair : pairs) {

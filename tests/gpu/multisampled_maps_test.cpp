@@ -63,30 +63,12 @@ struct EdgeScene {
   }
 };
 
-// Draws the scene's triangles at attribute 0.
-class EdgeMesh {
- public:
-  explicit EdgeMesh(const EdgeScene& scene) : vao_("edge scene") {
-    std::vector<glm::vec3> triangles;
-    for (std::uint32_t i : scene.indices) triangles.push_back(scene.positions[i]);
-    buffer_ = gl::Buffer::from(std::span<const glm::vec3>(triangles), "edge scene");
-    count_ = static_cast<GLsizei>(triangles.size());
-    glVertexArrayVertexBuffer(vao_.id(), 0, buffer_.id(), 0, sizeof(glm::vec3));
-    glEnableVertexArrayAttrib(vao_.id(), 0);
-    glVertexArrayAttribFormat(vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao_.id(), 0, 0);
-  }
-  void draw() const {
-    glBindVertexArray(vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, count_);
-    glBindVertexArray(0);
-  }
-
- private:
-  gl::Buffer buffer_;
-  gl::VertexArray vao_;
-  GLsizei count_ = 0;
-};
+// The scene's triangles at attribute 0.
+testing::PositionMesh edge_mesh(const EdgeScene& scene) {
+  std::vector<glm::vec3> triangles;
+  for (std::uint32_t i : scene.indices) triangles.push_back(scene.positions[i]);
+  return testing::PositionMesh(triangles);
+}
 
 std::vector<float> read_layer0(GLuint texture, GLenum format, int channels) {
   GLint layers = 0;
@@ -106,7 +88,7 @@ struct Maps {
 
 Maps render_maps(const ShadowSettings& settings, int channels = 2) {
   const EdgeScene scene;
-  const EdgeMesh mesh(scene);
+  const testing::PositionMesh mesh = edge_mesh(scene);
   ShadowMaps maps;
   maps.update(scene.lights, scene.camera, CasterGeometry{scene.positions, scene.indices}, settings);
   maps.render([&](const CasterView&) { mesh.draw(); });
@@ -328,9 +310,7 @@ TEST_P(MultisampledLightTypes, ShadowMatchesOneSampleAwayFromEdges) {
 INSTANTIATE_TEST_SUITE_P(EveryLightType, MultisampledLightTypes,
                          ::testing::Values(LightType::Spot, LightType::Directional,
                                            LightType::Point),
-                         [](const ::testing::TestParamInfo<LightType>& info) {
-                           return std::string(enum_name<LightType>(kLightTypeNames, info.param));
-                         });
+                         testing::light_type_name);
 
 }  // namespace
 }  // namespace penumbra

@@ -4,6 +4,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gpu_fixture.hpp"
+#include "reference/shadow_metrics.hpp"
+#include "reference/shadow_ray_tracer.hpp"
 #include "render/renderer.hpp"
 #include "shadow/cube_views.hpp"
 #include "test_scene.hpp"
@@ -111,6 +113,49 @@ TEST_F(GpuTest, PointLightShadowFallsOnTheWallBehindTheCaster) {
       EXPECT_LE(s.lit_darkened, s.lit / 1000) << "caster " << caster_face << ", wall " << wall;
     }
   }
+}
+
+// A caster beside the light, nearer to it than anything else and far off
+// the axis of the cube faces that see it: the faces' shared depth range
+// starts at its distance, while its depth along a face's axis is smaller
+// (its nearest point, 1.9 from the light, is 1.4 along +x). Clipping the
+// caster pass at the radial z0 cut it away, and its shadow with it (the
+// default scene's high slab under a point light). The map's hard shadow
+// against the traced hard shadow: they disagree only on edge pixels, and
+// the shadow is there.
+TEST_F(GpuTest, PointLightMapsKeepCastersFarOffTheFaceAxes) {
+  const Scene scene = testing::TestScene("caster beside the light")
+                          .ground(16.0f)
+                          .box({1.8f, 2.3f, 0.0f}, glm::vec3(0.8f))
+                          .light(point_light({0.0f, 4.0f, 0.0f}))
+                          .camera({3.5f, 6.0f, 4.0f}, {3.8f, 0.0f, 0.0f}, 50.0f);
+  Renderer renderer(scene);
+  const RenderSettings rs = testing::small_frame(160, 120);
+  ShadowSettings hard;
+  hard.technique = Technique::Hard;
+  hard.map_size = 1024;
+  hard.light_size = 0.0f;  // the traced hard shadow
+  renderer.render(rs, hard);
+  const Image technique = renderer.read_view();
+  const ShadowRayTracer tracer(renderer.mesh());
+  const Image traced =
+      tracer.trace(renderer.read_surfaces(),
+                   make_reference_light(scene.lights[0], renderer.light_view(0), hard), 1);
+  long compared = 0, shadowed = 0, disagree = 0;
+  for (int y = 0; y < traced.height; ++y) {
+    for (int x = 0; x < traced.width; ++x) {
+      if (traced.pixel(x, y)[3] < 0.5f || technique.pixel(x, y)[3] < 0.5f) continue;
+      ++compared;
+      shadowed += traced.pixel(x, y)[0] < 0.5f;
+      disagree += std::abs(technique.pixel(x, y)[0] - traced.pixel(x, y)[0]) > 0.5f;
+    }
+  }
+  const ShadowMetrics m = compare_shadow(technique, traced);
+  std::printf("%ld of %ld pixels in the traced shadow; %ld disagree; RMSE %.4f\n", shadowed,
+              compared, disagree, m.rmse);
+  EXPECT_GT(shadowed, compared / 20) << "the caster's shadow must be in view";
+  EXPECT_LE(disagree, compared / 100);
+  EXPECT_LT(m.rmse, 0.1);
 }
 
 // The seam measurement: a point light 2 above a large ground plane, a bar

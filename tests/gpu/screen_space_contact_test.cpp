@@ -115,11 +115,7 @@ TEST_P(ScreenSpaceContactTest, DarkenTheContactLineTheMapLetsLightUnder) {
 INSTANTIATE_TEST_SUITE_P(LightTypes, ScreenSpaceContactTest,
                          ::testing::Values(LightType::Spot, LightType::Directional,
                                            LightType::Point),
-                         [](const ::testing::TestParamInfo<LightType>& info) {
-                           return info.param == LightType::Spot          ? std::string("Spot")
-                                  : info.param == LightType::Directional ? std::string("Sun")
-                                                                         : std::string("Point");
-                         });
+                         testing::light_type_name);
 
 }  // namespace
 }  // namespace penumbra

@@ -39,8 +39,9 @@ struct Hit {
 };
 
 // The nearest triangle the ray from `origin` along `direction` meets at a
-// view depth of at least z0 (what the near plane keeps), by Moller and
-// Trumbore's test in double.
+// depth of at least z0 (the view's own depth: along its axis, or for a cube
+// face the distance from the light, whose shared z0 is a distance too), by
+// Moller and Trumbore's test in double.
 Hit trace(const TriangleMesh& mesh, const LightView& view, const glm::dvec3& origin,
           const glm::dvec3& direction) {
   const glm::dmat4 to_view(view.view);
@@ -60,10 +61,11 @@ Hit trace(const TriangleMesh& mesh, const LightView& view, const glm::dvec3& ori
     const double hit_t = glm::dot(e2, q) / det;
     if (u < 0.0 || v < 0.0 || u + v > 1.0 || hit_t <= 0.0 || hit_t >= nearest_t) continue;
     const glm::dvec3 in_view(to_view * glm::dvec4(origin + hit_t * direction, 1.0));
-    if (-in_view.z < view.z0) continue;  // clipped by the near plane
+    const double depth = view.radial ? glm::length(in_view) : -in_view.z;
+    if (depth < view.z0) continue;  // before the view's depth range
     nearest_t = hit_t;
     nearest.plane = static_cast<int>(t / (mesh.indices.size() / kPlanes));
-    nearest.depth = view.radial ? glm::length(in_view) : -in_view.z;
+    nearest.depth = depth;
   }
   return nearest;
 }
@@ -133,7 +135,10 @@ class ShadowMapDepth : public GpuTest, public ::testing::WithParamInterface<Ligh
 // z-bar. The cube faces' fragments write their depth as every caster's
 // did before (measured: up to 6.6 units); the rasterizer's own depth
 // (cascades: up to 3.5) and the spot's linearized reciprocal (2.5) are as
-// close, so the maps every technique reads are what they were.
+// close, so the maps every technique reads are what they were. Under the
+// point light the planes nearest to it lie off the -y face's axis (their
+// normals tilt by about 20 degrees), at a depth along it below the
+// faces' radial z0: a caster pass clipped at z0 left them out.
 TEST_P(ShadowMapDepth, MapsHoldTheTracedRelativeDepth) {
   const Scene scene = plane_stack(light_of(GetParam()));
   Renderer renderer(scene);
@@ -159,9 +164,7 @@ TEST_P(ShadowMapDepth, MapsHoldTheTracedRelativeDepth) {
 INSTANTIATE_TEST_SUITE_P(EveryLightType, ShadowMapDepth,
                          ::testing::Values(LightType::Spot, LightType::Directional,
                                            LightType::Point),
-                         [](const ::testing::TestParamInfo<LightType>& info) {
-                           return std::string(enum_name<LightType>(kLightTypeNames, info.param));
-                         });
+                         testing::light_type_name);
 
 }  // namespace
 }  // namespace penumbra

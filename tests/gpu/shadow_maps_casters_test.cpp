@@ -13,34 +13,13 @@
 #include "penumbra/error.hpp"
 #include "penumbra/gl/resources.hpp"
 #include "penumbra/shadow_maps.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
 
 using testing::GpuTest;
-
-// A triangle list of positions at attribute 0, as an engine's mesh.
-class Mesh {
- public:
-  explicit Mesh(const std::vector<glm::vec3>& positions)
-      : buffer_(gl::Buffer::from(std::span<const glm::vec3>(positions), "test mesh")),
-        vao_("test mesh"),
-        count_(static_cast<GLsizei>(positions.size())) {
-    glVertexArrayVertexBuffer(vao_.id(), 0, buffer_.id(), 0, sizeof(glm::vec3));
-    glEnableVertexArrayAttrib(vao_.id(), 0);
-    glVertexArrayAttribFormat(vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao_.id(), 0, 0);
-  }
-  void draw() const {
-    glBindVertexArray(vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, count_);
-  }
-
- private:
-  gl::Buffer buffer_;
-  gl::VertexArray vao_;
-  GLsizei count_;
-};
+using Mesh = testing::PositionMesh;
 
 // The twelve triangles of the box lo..hi.
 std::vector<glm::vec3> box_triangles(const glm::vec3& lo, const glm::vec3& hi) {

@@ -34,7 +34,7 @@ using testing::GpuTest;
 constexpr int kUnits = 16;
 constexpr int kImageUnits = 4;
 constexpr int kUniformBuffers = 10;
-constexpr int kStorageBuffers = 11;
+constexpr int kStorageBuffers = 12;
 // Clip distances, viewports and draw buffers every GL 4.5 device has.
 constexpr GLenum kClipDistances = 8;
 constexpr GLuint kViewports = 2;

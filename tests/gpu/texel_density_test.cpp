@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 #include "gpu_fixture.hpp"
@@ -46,6 +47,25 @@ bool ground_hit(const glm::dmat4& inverse_view_projection, glm::dvec2 ndc, glm::
   return true;
 }
 
+// Where pixel (x, gl_row) of a width x height frame sees the ground, and
+// the area of its footprint there (from its neighbours' rays).
+struct GroundPixel {
+  glm::dvec3 point;
+  double area;
+};
+std::optional<GroundPixel> ground_pixel(const glm::dmat4& inverse_view_projection, int x,
+                                        int gl_row, int width, int height) {
+  const glm::dvec2 step(2.0 / width, 2.0 / height);
+  const glm::dvec2 ndc((x + 0.5) * step.x - 1.0, (gl_row + 0.5) * step.y - 1.0);
+  glm::dvec3 p, px, py;
+  if (!ground_hit(inverse_view_projection, ndc, p) ||
+      !ground_hit(inverse_view_projection, ndc + glm::dvec2(step.x, 0.0), px) ||
+      !ground_hit(inverse_view_projection, ndc + glm::dvec2(0.0, step.y), py)) {
+    return std::nullopt;
+  }
+  return GroundPixel{p, glm::length(glm::cross(px - p, py - p))};
+}
+
 TEST_F(GpuTest, TexelDensityOnAGroundIsWhatTheCascadesPredict) {
   const Scene scene = long_ground();
   Renderer renderer(scene);
@@ -71,14 +91,10 @@ TEST_F(GpuTest, TexelDensityOnAGroundIsWhatTheCascadesPredict) {
   int compared = 0, drops_within = 0, drops_at_splits = 0;
   // Rows from the bottom of the image (near) up (far), in GL's pixel rows.
   for (int gl_row = 0; gl_row < rs.height; ++gl_row) {
-    const glm::dvec2 step(2.0 / rs.width, 2.0 / rs.height);
-    const glm::dvec2 ndc((x + 0.5) * step.x - 1.0, (gl_row + 0.5) * step.y - 1.0);
-    glm::dvec3 p, px, py;
-    if (!ground_hit(inverse_view_projection, ndc, p) ||
-        !ground_hit(inverse_view_projection, ndc + glm::dvec2(step.x, 0.0), px) ||
-        !ground_hit(inverse_view_projection, ndc + glm::dvec2(0.0, step.y), py)) {
-      continue;
-    }
+    const std::optional<GroundPixel> ground =
+        ground_pixel(inverse_view_projection, x, gl_row, rs.width, rs.height);
+    if (!ground) continue;
+    const glm::dvec3 p = ground->point;
     if (p.z < -289.0) continue;  // beyond the ground's far edge
     const double camera_depth = -(view * glm::dvec4(p, 1.0)).z;
     std::size_t c = 0;
@@ -86,8 +102,7 @@ TEST_F(GpuTest, TexelDensityOnAGroundIsWhatTheCascadesPredict) {
     // The cascade's orthographic extent across its map, over the map size.
     const double extent = 2.0 / views.views[c].projection[0][0];
     const double texel = extent / shadow.map_size;
-    const double pixel_area = glm::length(glm::cross(px - p, py - p));
-    const double expected = pixel_area * cos_sun / (texel * texel);
+    const double expected = ground->area * cos_sun / (texel * texel);
     const float* measured = density.pixel(x, rs.height - 1 - gl_row);
     ASSERT_EQ(measured[3], 1.0f) << "row " << gl_row << " sees the ground";
     EXPECT_NEAR(measured[0], expected, 0.02 * expected)
@@ -136,14 +151,10 @@ TEST_F(GpuTest, TexelDensityUnderASpotLightFollowsItsFrustum) {
   double nearest = INFINITY, farthest = 0.0;
   for (int gl_row = 0; gl_row < rs.height; gl_row += 3) {
     for (int x = 0; x < rs.width; x += 3) {
-      const glm::dvec2 step(2.0 / rs.width, 2.0 / rs.height);
-      const glm::dvec2 ndc((x + 0.5) * step.x - 1.0, (gl_row + 0.5) * step.y - 1.0);
-      glm::dvec3 p, px, py;
-      if (!ground_hit(inverse_view_projection, ndc, p) ||
-          !ground_hit(inverse_view_projection, ndc + glm::dvec2(step.x, 0.0), px) ||
-          !ground_hit(inverse_view_projection, ndc + glm::dvec2(0.0, step.y), py)) {
-        continue;
-      }
+      const std::optional<GroundPixel> ground =
+          ground_pixel(inverse_view_projection, x, gl_row, rs.width, rs.height);
+      if (!ground) continue;
+      const glm::dvec3 p = ground->point;
       const glm::dvec4 clip = glm::dmat4(spot.view_projection) * glm::dvec4(p, 1.0);
       const glm::dvec2 uv = glm::dvec2(clip) / clip.w;
       const float* measured = density.pixel(x, rs.height - 1 - gl_row);
@@ -152,7 +163,7 @@ TEST_F(GpuTest, TexelDensityUnderASpotLightFollowsItsFrustum) {
       const double texel = 2.0 * depth * tan_half_fov / shadow.map_size;
       const double cos_light =
           glm::normalize(glm::dvec3(scene.lights[0].position) - p).y;  // ground normal +y
-      const double expected = glm::length(glm::cross(px - p, py - p)) * cos_light / (texel * texel);
+      const double expected = ground->area * cos_light / (texel * texel);
       EXPECT_NEAR(measured[0], expected, 0.02 * expected) << "pixel " << x << ", " << gl_row;
       nearest = std::min(nearest, expected);
       farthest = std::max(farthest, expected);

@@ -100,6 +100,30 @@ TEST_F(GpuTest, ShadowBlockMatchesItsCppMirror) {
   EXPECT_EQ(size, GLint(sizeof(gpu::GpuShadowBlock)));
 }
 
+// The virtual shadow maps' block (every virtual light's levels), as the
+// marking and allocation passes read it.
+TEST_F(GpuTest, VirtualShadowBlockMatchesItsCppMirror) {
+  gl::Program mark = gl::Program::compute("shadow/virtual_mark.comp");
+  gl::Program allocate = gl::Program::compute("shadow/virtual_allocate.comp");
+  EXPECT_EQ(driver_offset(mark.id(), "virtual_shadow.levels[0].view_projection"),
+            GLint(offsetof(gpu::GpuVirtualShadow, levels) +
+                  offsetof(gpu::GpuShadowView, view_projection)));
+  EXPECT_EQ(driver_offset(mark.id(), "virtual_shadow.levels[1].view_projection"),
+            GLint(offsetof(gpu::GpuVirtualShadow, levels) + sizeof(gpu::GpuShadowView) +
+                  offsetof(gpu::GpuShadowView, view_projection)));
+  EXPECT_OFFSET(mark.id(), "virtual_shadow", GpuVirtualShadow, lights);
+  EXPECT_OFFSET(mark.id(), "virtual_shadow", GpuVirtualShadow, camera);
+  EXPECT_OFFSET(mark.id(), "virtual_shadow", GpuVirtualShadow, params);
+  EXPECT_OFFSET(allocate.id(), "virtual_shadow", GpuVirtualShadow, origins);
+  EXPECT_OFFSET(allocate.id(), "virtual_shadow", GpuVirtualShadow, previous_origins);
+  EXPECT_OFFSET(allocate.id(), "virtual_shadow", GpuVirtualShadow, counts);
+  GLint size = 0;
+  const GLuint block = glGetProgramResourceIndex(mark.id(), GL_UNIFORM_BLOCK, "VirtualShadowBlock");
+  const GLenum property = GL_BUFFER_DATA_SIZE;
+  glGetProgramResourceiv(mark.id(), GL_UNIFORM_BLOCK, block, 1, &property, 1, nullptr, &size);
+  EXPECT_EQ(size, GLint(sizeof(gpu::GpuVirtualShadow)));
+}
+
 TEST_F(GpuTest, SsaoBlockMatchesItsCppMirror) {
   gl::Program ssao = gl::Program::compute("render/ssao.comp");
   const GLuint p = ssao.id();

@@ -1,7 +1,8 @@
 // Virtual shadow maps (--shadow-maps virtual, docs/rendering.md): the
 // pages the GPU marks against a CPU computation of the pages each pixel
 // reads; a page's texels against a conventional orthographic map of the
-// same projection; the shadow across page borders; the page cache.
+// same projection; the page cache. (The shadow across page and level
+// borders: virtual_seam_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,7 +56,7 @@ using Page = std::tuple<int, int, int>;  // level, world page x, y
 std::set<Page> resident_pages(const Renderer& renderer) {
   const gl::Texture& table = renderer.virtual_shadows().page_table();
   std::vector<GLuint> entries(static_cast<std::size_t>(kVirtualPages) * kVirtualPages *
-                              kMaxVirtualLevels);
+                              kMaxVirtualViews);
   glGetTextureImage(table.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
                     static_cast<GLsizei>(entries.size() * sizeof(GLuint)), entries.data());
   const VirtualClipmap& clipmap = renderer.virtual_clipmap();
@@ -108,13 +109,14 @@ TEST_F(GpuTest, VirtualPagesMarkedAreThoseThePixelsRead) {
     const VirtualClipmap& clipmap = renderer.virtual_clipmap();
     const float reach = renderer.virtual_shadows().block().params.y;
     const SurfacePoints surfaces = renderer.read_surfaces();
+    const std::vector<glm::vec3> facets = renderer.read_facet_normals();
     std::set<Page> needed, allowed, levels_seen;
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
       if (surfaces.covered[i] == 0) continue;
       const glm::vec3 p = surfaces.position[i];
-      const int level = virtual_level_of(clipmap, p);
+      const int level = virtual_level_of(clipmap, p, facets[i], stats.bias);
       const float f =
-          std::log2(glm::length(p - clipmap.camera) * clipmap.pixel_angle / clipmap.texel0);
+          virtual_level_coordinate(clipmap, p, facets[i]) - 0.5f * static_cast<float>(stats.bias);
       const bool boundary = std::abs(f - std::round(f)) < 1e-3f;
       if (!boundary) add_pages(clipmap, level, p, reach - 0.5f, needed);
       add_pages(clipmap, level, p, reach + 0.5f, allowed);
@@ -205,7 +207,10 @@ TEST_F(GpuTest, VirtualPageTexelsEqualAConventionalMap) {
 // Virtual maps shade as the cascades do where both have texels enough:
 // the default scene's shadow factor under the sun, hard and pcf, against
 // the cascades' at 4096^2 (whose texels there are as small as the
-// levels'), differing only along the shadows' edges.
+// levels'), differing only along the shadows' edges. (Virtual pcf's
+// window is pcf_width pixel footprints, 1 to 2 texels each, so that it
+// does not double at a level border: its penumbrae are up to twice the
+// cascades', and more of their pixels differ.)
 TEST_F(GpuTest, VirtualShadowsAgreeWithFineCascades) {
   Renderer renderer(sun_scene());
   const RenderSettings render = shadow_view(96, 64);
@@ -225,7 +230,8 @@ TEST_F(GpuTest, VirtualShadowsAgreeWithFineCascades) {
       differing += std::abs(expected.rgba[p] - actual.rgba[p]) > 0.5f ? 1 : 0;
     }
     EXPECT_GT(shadowed, compared / 50) << "the view shows shadows";
-    EXPECT_LE(differing, compared / 100) << enum_name<Technique>(kTechniqueNames, t);
+    EXPECT_LE(differing, compared / (t == Technique::Pcf ? 40 : 100))
+        << enum_name<Technique>(kTechniqueNames, t);
   }
 }
 
@@ -243,9 +249,11 @@ TEST_F(GpuTest, VirtualPagesAreCachedUntilACasterOverThemMoves) {
   renderer.render(render, shadow);
   EXPECT_EQ(renderer.virtual_page_stats().rendered, 0) << "a static frame";
   EXPECT_EQ(renderer.virtual_page_stats().resident, first.resident);
+  const std::set<Page> resident_before = resident_pages(renderer);
 
-  // The sphere (shape 2) moves a little: the pages its boxes touch, at
-  // each level, are all that render.
+  // The sphere (shape 2) moves a little: of the pages cached before, those
+  // its boxes touch, at each level, are all that render again (besides the
+  // pages the pixels it uncovered or covered ask for anew).
   const std::size_t sphere = 2;
   const Bounds before = renderer.shape_bounds(sphere);
   renderer.move_shape(sphere, {0.3f, 0.0f, 0.0f});
@@ -263,81 +271,19 @@ TEST_F(GpuTest, VirtualPagesAreCachedUntilACasterOverThemMoves) {
       for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) pages.emplace(static_cast<int>(l), x, y);
     }
-    for (const Page& p : pages) touched += resident.count(p);
+    for (const Page& p : pages) touched += resident.count(p) * resident_before.count(p);
   }
+  int allocated = 0;  // pages this frame asked for that were not resident before
+  for (const Page& p : resident) allocated += resident_before.count(p) == 0 ? 1 : 0;
+  EXPECT_EQ(moved.bias, first.bias);
   EXPECT_GT(moved.rendered, 0);
-  EXPECT_LE(moved.rendered, touched) << "only the resident pages the sphere touches";
+  EXPECT_LE(allocated, moved.rendered);
+  EXPECT_LE(moved.rendered - allocated, touched) << "only the cached pages the sphere touches";
   EXPECT_LT(touched, moved.resident) << "the sphere's boxes miss some resident pages";
   renderer.forget_shadow_maps();
   renderer.render(render, shadow);
   EXPECT_EQ(renderer.virtual_page_stats().rendered, renderer.virtual_page_stats().resident);
   EXPECT_EQ(cached.rgba, renderer.read_view().rgba);
-}
-
-// Filtering across a page border has no seam: PCF windows near a border
-// read the neighbouring page through the page table. The mean step of the
-// shadow factor between neighbouring ground pixels in the penumbra whose
-// lookups fall in different pages of a level is no larger than between
-// neighbours inside one page, as the cube-face seam test measures
-// (point_light_test.cpp). (A window whose neighbour page was missing would
-// read it as lit: a step of up to 1 at the border.)
-TEST_F(GpuTest, PcfHasNoSeamAcrossVirtualPageBorders) {
-  Renderer renderer(sun_scene());
-  const RenderSettings render = shadow_view(384, 240);
-  ShadowSettings shadow = virtual_maps(Technique::Pcf);
-  shadow.pcf_width = 24.0f;
-  shadow.pcf_samples = 64;
-  renderer.render(render, shadow);
-  const Image image = renderer.read_view();
-  const SurfacePoints surfaces = renderer.read_surfaces();
-  const VirtualClipmap& clipmap = renderer.virtual_clipmap();
-  // Each covered pixel's level and page (-1: not covered).
-  std::vector<glm::ivec3> page(surfaces.size(), glm::ivec3(-1));
-  for (std::size_t i = 0; i < surfaces.size(); ++i) {
-    if (surfaces.covered[i] == 0) continue;
-    const int level = virtual_level_of(clipmap, surfaces.position[i]);
-    const glm::vec4 clip = clipmap.levels[static_cast<std::size_t>(level)].view.view_projection *
-                           glm::vec4(surfaces.position[i], 1.0f);
-    const glm::ivec2 p =
-        glm::ivec2(glm::floor((glm::vec2(clip) * 0.5f + 0.5f) * float(kVirtualPages)));
-    page[i] = glm::ivec3(level, p);
-  }
-  double across = 0.0, inside = 0.0;
-  int across_pairs = 0, inside_pairs = 0;
-  const int w = image.width, h = image.height;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      for (const glm::ivec2 d : {glm::ivec2(1, 0), glm::ivec2(0, 1)}) {
-        if (x + d.x >= w || y + d.y >= h) continue;
-        const std::size_t a = static_cast<std::size_t>(y) * w + x;
-        const std::size_t b = static_cast<std::size_t>(y + d.y) * w + x + d.x;
-        if (page[a].x < 0 || page[b].x < 0 || page[a].x != page[b].x) continue;
-        // Both on the ground (y = 0, facing up): no silhouette between
-        // them, only the shadow's own gradient and the samples' noise.
-        if (std::abs(surfaces.position[a].y) > 1e-3f || std::abs(surfaces.position[b].y) > 1e-3f ||
-            surfaces.normal[a].y < 0.99f || surfaces.normal[b].y < 0.99f) {
-          continue;
-        }
-        const float sa = image.pixel(x, y)[0], sb = image.pixel(x + d.x, y + d.y)[0];
-        if (std::min(sa, sb) > 0.98f || std::max(sa, sb) < 0.02f) continue;  // not penumbra
-        const double step = std::abs(sa - sb);
-        if (page[a] == page[b]) {
-          inside += step;
-          ++inside_pairs;
-        } else {
-          across += step;
-          ++across_pairs;
-        }
-      }
-    }
-  }
-  ASSERT_GE(across_pairs, 20) << "penumbra neighbours across page borders";
-  ASSERT_GE(inside_pairs, 200);
-  across /= across_pairs;
-  inside /= inside_pairs;
-  std::printf("mean step across page borders %.3f (%d pairs), inside pages %.3f (%d pairs)\n",
-              across, across_pairs, inside, inside_pairs);
-  EXPECT_LE(across, 1.5 * inside + 0.01);
 }
 
 // An orbiting camera over a static scene: after the first frame, the

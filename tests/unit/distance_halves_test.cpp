@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "penumbra/error.hpp"
+#include "reference/ground_pixels.hpp"
 #include "reference/shadow_metrics.hpp"
 #include "reference/texel_density_stats.hpp"
 
@@ -78,6 +79,45 @@ TEST(TexelDensityStats, SharesOverJudgedAndShadowedPixels) {
   EXPECT_EQ(seen.pixels, 5);
   EXPECT_DOUBLE_EQ(seen.at_least_one, 0.6);
   EXPECT_THROW(texel_density_stats(density, Image(4, 1)), RuntimeError);
+  EXPECT_EQ(s.shadowed_ground.pixels, 0) << "no ground given";
+
+  // The second shadowed pixel and a lit one on the ground.
+  const std::vector<std::uint8_t> ground = {0, 1, 1, 0, 0};
+  const TexelDensityStats g = texel_density_stats(density, reference, ground);
+  EXPECT_EQ(g.shadowed_ground.pixels, 1);
+  EXPECT_DOUBLE_EQ(g.shadowed_ground.at_least_one, 1.0);
+  EXPECT_THROW(texel_density_stats(density, reference, {1, 0}), RuntimeError);
+}
+
+// The ground's pixels: points on a plane shape (tilted and moved here),
+// within its rectangle, with its normal; not a box's side standing on
+// it, nor a point above it or past its edge.
+TEST(GroundPixels, PointsOnAPlaneShapeWithItsNormal) {
+  Scene scene;
+  Shape plane;
+  plane.kind = ShapeKind::Plane;
+  plane.size = {10.0f, 0.0f, 4.0f};
+  plane.position = {1.0f, 2.0f, 3.0f};
+  plane.rotation_degrees = {0.0f, 0.0f, 30.0f};  // about z: the x side tilts up
+  scene.shapes = {plane};
+  const glm::vec3 up(-0.5f, std::sqrt(3.0f) / 2.0f, 0.0f);  // the plane's normal
+  const glm::vec3 side(std::sqrt(3.0f) / 2.0f, 0.5f, 0.0f);
+  const glm::vec3 centre = plane.position;
+  SurfacePoints s(6, 1);
+  const glm::vec3 positions[] = {centre + 4.0f * side,  // on it
+                                 centre + 4.0f * side + 1.5f * glm::vec3(0, 0, 1),
+                                 centre + 6.0f * side,  // past its edge
+                                 centre + 0.01f * up,   // above it
+                                 centre,                // a side standing on it
+                                 centre};               // not covered
+  const glm::vec3 normals[] = {up, -up, up, up, side, up};
+  for (int i = 0; i < 6; ++i) {
+    s.position[i] = positions[i];
+    s.normal[i] = normals[i];
+    s.covered[i] = i < 5 ? 1 : 0;
+  }
+  const std::vector<std::uint8_t> expected = {1, 1, 0, 0, 0, 0};
+  EXPECT_EQ(ground_pixels(scene, s), expected);
 }
 
 }  // namespace

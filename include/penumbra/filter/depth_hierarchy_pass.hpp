@@ -28,6 +28,9 @@ class DepthHierarchyPass {
   // below, and every level is written once (8 bytes a texel).
   static TexelTraffic texel_traffic(GLenum depth_format, int width, int height);
 
+  // Frees the hierarchy (execute() makes it again), keeping the program.
+  void release() { hierarchy_ = gl::Texture(); }
+
  private:
   gl::Program from_depth_ =
       gl::Program::compute("filter/depth_hierarchy.comp", {{"FROM_DEPTH", "1"}});

@@ -58,6 +58,9 @@ class FusedFilterPass {
   static TexelTraffic texel_traffic(GLenum format, int radius, int width, int height,
                                     int shared_bytes, int samples = 1);
 
+  // Frees the output (execute() makes it again), keeping the programs.
+  void release() { output_ = gl::Texture(); }
+
  private:
   // (technique, quantized, radius, tile rows, samples per depth texel)
   std::map<std::tuple<Technique, bool, int, int, int>, gl::Program> programs_;

@@ -38,6 +38,13 @@ class GaussianBlurPass {
   // and one write.
   static TexelTraffic texel_traffic(GLenum format, int radius, int axis, int width, int height);
 
+  // Frees the output and the intermediate (execute() makes them again),
+  // keeping the programs.
+  void release() {
+    intermediate_ = gl::Texture();
+    output_ = gl::Texture();
+  }
+
  private:
   const gl::Program& program(GLenum format, int axis, int radius);
   void dispatch(const gl::Program& program, const gl::Texture& from, const gl::Texture& to,

@@ -63,6 +63,13 @@ class SummedAreaTablePass {
   // read from the table: an RGBA32F 2D array. For views and tests.
   const gl::Texture& box_filtered(int radius);
 
+  // Frees the table and the box averages (execute() and box_filtered()
+  // make them again), keeping the programs.
+  void release() {
+    table_ = gl::Texture();
+    box_filtered_ = gl::Texture();
+  }
+
  private:
   // axis: the AXIS define, or -1 for none.
   const gl::Program& program(const char* path, GLenum format, int axis = -1);

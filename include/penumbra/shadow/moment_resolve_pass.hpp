@@ -30,6 +30,10 @@ class MomentResolvePass {
   // A 2D array like the depth maps. Valid after execute().
   [[nodiscard]] const gl::Texture& representation() const { return maps_; }
 
+  // Frees the representation (execute() makes it again), keeping the
+  // programs.
+  void release() { maps_ = gl::Texture(); }
+
  private:
   // (technique, quantized, samples per depth texel)
   std::map<std::tuple<Technique, bool, int>, gl::Program> programs_;

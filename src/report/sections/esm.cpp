@@ -61,12 +61,15 @@ void Study::esm_section(HtmlPage& page) {
   std::vector<std::vector<std::string>> rows = {
       {"c", "mean abs. error", "light leaking", "over-darkening", "max error"}};
   std::vector<EsmPoint> points;
+  // The measured light alone, as in section 4.
+  const LightAlone& alone = measured_light_alone();
+  const ScopedLights lit(renderer_, alone.lights);
   for (float c : cs) {
     ShadowSettings s = with(Technique::Esm);
     s.esm_c = c;
     std::optional<Image> image;
-    figures.push_back(
-        figure("esm-c" + fixed(c, 0) + ".png", "esm, c = " + fixed(c, 0), base_render_, s, &image));
+    figures.push_back(figure(renderer_, alone.choice, "esm-c" + fixed(c, 0) + ".png",
+                             "esm, c = " + fixed(c, 0), base_render_, s, &image));
     step();
     if (auto m = measure_against_filtered(s, image)) {
       points.push_back({c, *m});
@@ -82,7 +85,10 @@ void Study::esm_section(HtmlPage& page) {
       " where exp(-c) would leave the normal float range. Measured on the spot light's shadow "
       "factor (W = 4) against the filtered hard reference; light leaking counts pixels the "
       "reference has in shadow (< 0.1) that the technique lights (> 0.3), over-darkening "
-      "the reverse (reference > 0.9, technique < 0.7).");
+      "the reverse (reference > 0.9, technique < 0.7)." +
+      (alone.choice != options_.light_choice ? " The images: the scene under its " + alone.choice +
+                                                   " light alone (--light " + alone.choice + ")."
+                                             : std::string()));
   page.table(rows);
   LinePlot plot{.title = "ESM: leaking and over-darkening against c",
                 .x = {"ESM exponent c", false},

@@ -34,6 +34,14 @@ void Study::sweeps_section(HtmlPage& page) {
       "W = 1 or 2 only anti-aliases the edge; W = 16 and 32 simulate a wide light. A fixed "
       "filter widens every penumbra alike, contact shadows included; PCSS widens them with "
       "the blocker-receiver distance (sharp at the box's foot, wide under the high slab).");
+  // Every frame of the sweeps under the measured light alone (as section 5's):
+  // its shadow is what they measure.
+  const LightAlone& alone = measured_light_alone();
+  const ScopedLights lit(renderer_, alone.lights);
+  if (alone.choice != options_.light_choice) {
+    page.paragraph("The scene under its " + alone.choice + " light alone (--light " + alone.choice +
+                   "), whose shadow the numbers measure.");
+  }
   const TracedReference* traced = base_traced();
   const std::vector<int> widths = swept_widths(options_.quick);
   const std::vector<Technique> swept = width_swept_techniques(options_.quick);
@@ -51,7 +59,8 @@ void Study::sweeps_section(HtmlPage& page) {
       ShadowSettings s = with(t);
       s.blur = w;
       std::optional<Image> image;
-      figures.push_back(figure("sweep-" + name_of(t) + "-w" + std::to_string(w) + ".png",
+      figures.push_back(figure(renderer_, alone.choice,
+                               "sweep-" + name_of(t) + "-w" + std::to_string(w) + ".png",
                                name_of(t) + ", W = " + std::to_string(w), base_render_, s, &image));
       step();
       if (traced && image) {

@@ -23,7 +23,8 @@ int Study::light_size_items() const {
 }
 
 // PCSS at each light size, and every soft technique's error against the
-// traced reference of the same light size.
+// traced reference of the same light size (under the measured light alone,
+// which sweeps_section sets).
 void Study::light_size_sweep(HtmlPage& page) {
   page.heading("Light sizes", 3);
   const std::vector<float> sizes(std::begin(kLightSizes), std::end(kLightSizes));
@@ -50,9 +51,9 @@ void Study::light_size_sweep(HtmlPage& page) {
     ShadowSettings pcss = with(Technique::Pcss);
     pcss.light_size = size;
     std::optional<Image> pcss_shadow;
-    figures.push_back(figure("sweep-pcss-light" + fixed(size, 2) + ".png",
-                             "pcss, light size " + fixed(size, 2), base_render_, pcss,
-                             &pcss_shadow));
+    figures.push_back(figure(
+        renderer_, measured_light_alone().choice, "sweep-pcss-light" + fixed(size, 2) + ".png",
+        "pcss, light size " + fixed(size, 2), base_render_, pcss, &pcss_shadow));
     step();
     ShadowSettings light = base_shadow_;
     light.light_size = size;

@@ -87,6 +87,10 @@ void Study::light_types_section(HtmlPage& page) {
       figures.push_back(figure(renderer, choice, "light-" + choice + "-" + name_of(t) + ".png",
                                choice + ", " + name_of(t), base_render_, with(t), &shadows[i]));
     }
+    // The map views read the depth maps alone: the techniques' filtered
+    // arrays (a point light's six faces of them) go before the tiled
+    // image of the maps is made and read.
+    renderer.release_filtered_maps();
     for (View view : map_views(type)) {
       RenderSettings r = base_render_;
       r.view = view;

@@ -18,16 +18,21 @@ struct MapLayout {
   ShadowSettings shadow;
 };
 
-// The layouts compared, each one figure, one table row and one plotted
-// series: the directional light's cascades (the --cascades and
-// --shadow-map-size the study runs at). For cascades only the views are
-// fitted: texel density reads the view a pixel's lookup selects, not the
-// map's depths, so no map is drawn (technique none).
+// The layouts compared, each two figures (texel density, hard shadow),
+// one table row and one plotted series: the directional light's cascades
+// (the --cascades and --shadow-map-size the study runs at), and virtual
+// maps in a page pool of --page-pool-mib (48 MiB by default: the memory of
+// 3 cascades of 2048^2). Both draw the hard shadow, which reads each
+// pixel's texel as the density view counts it.
 std::vector<MapLayout> map_layouts(const ShadowSettings& base) {
   ShadowSettings cascades = base;
-  cascades.technique = Technique::None;
+  cascades.technique = Technique::Hard;
+  cascades.shadow_maps = ShadowMapKind::Cascades;
+  ShadowSettings virtual_maps = cascades;
+  virtual_maps.shadow_maps = ShadowMapKind::Virtual;
   return {
-      {std::to_string(base.cascades) + " cascades of " + map_size_text(base.map_size), cascades}};
+      {std::to_string(base.cascades) + " cascades of " + map_size_text(base.map_size), cascades},
+      {"virtual maps, " + std::to_string(base.page_pool_mib) + " MiB page pool", virtual_maps}};
 }
 
 // The median density over distance bins of equal ratio (log-spaced), one
@@ -99,10 +104,14 @@ void Study::texel_density_section(HtmlPage& page) {
       "cascade the density grows with distance (a pixel covers more of the receiver, a texel "
       "does not), at each split it drops by the ratio of the two cascades' texel areas, so it "
       "is lowest where each cascade begins, and on receivers turned away from the light (a "
-      "texel stretches over them). Virtual shadow maps aim at one texel per pixel everywhere. The "
+      "texel stretches over them). Virtual shadow maps (--shadow-maps virtual) give every pixel "
+      "at least one texel: each pixel reads the clipmap level whose texel fits its footprint on "
+      "the receiver, and the levels are made finer by the most half-level steps whose pages "
+      "still fit the page pool, so they spend the cascades' memory where the camera looks. The "
       "scene under its sun alone "
       "(--light directional); false colour on a log scale: red 1/4 or less, orange 1/2, green "
-      "1, cyan 2, blue 4 or more, black where no map covers the point.");
+      "1, cyan 2, blue 4 or more, black where no map covers the point; beside each, the hard "
+      "shadow of the same frame.");
   if (!lit_by_the_sun(options_.light_choice)) {
     page.paragraph("This report was made with --light " + options_.light_choice +
                    ": without --light, or with --light directional, this section measures the "
@@ -126,8 +135,9 @@ void Study::texel_density_section(HtmlPage& page) {
   plot.x = {"distance from the camera (world units)", true};
   plot.y = {"texels per pixel (median of the pixels at that distance)", true};
   std::vector<std::vector<std::string>> data = {{"layout", "distance", "texels per pixel"}};
-  std::vector<std::vector<std::string>> rows = {
-      {"layout", "pixels seeing geometry", "median texels per pixel", "at least 1 texel"}};
+  std::vector<std::vector<std::string>> rows = {{"layout", "pixels seeing geometry",
+                                                 "median texels per pixel", "at least 1 texel",
+                                                 "pages resident of the pool (level bias)"}};
   std::vector<HtmlFigure> figures;
   double nearest = 0.0, farthest = 0.0;
   for (const MapLayout& layout : map_layouts(base_shadow_)) {
@@ -138,8 +148,21 @@ void Study::texel_density_section(HtmlPage& page) {
     const bool drawn = !figures.back().image.empty();
     std::optional<Image> density;
     std::optional<SurfacePoints> surfaces;
+    std::string pages = "-";
     if (drawn) {
       density = image_or_failure([&] { return renderer_.read_texel_density(); });
+      if (!renderer_.virtual_lights().empty()) {
+        const VirtualPageStats stats = renderer_.virtual_page_stats();
+        pages = std::to_string(stats.resident) + " of " + std::to_string(stats.pool_pages) + " (" +
+                fixed(0.5 * stats.bias, 1) + " levels finer)";
+      }
+      // The hard shadow of the same frame (its maps are not drawn again).
+      if (const std::optional<Image> shadow = shaded(renderer_, View::Shadow)) {
+        figures.push_back(
+            written_figure(*shadow, "texel-density-" + std::to_string(figures.size()) + ".png",
+                           layout.name + ": the hard shadow (--view shadow --technique hard)",
+                           PngEncoding::Linear));
+      }
       try {
         surfaces = renderer_.read_surfaces();
       } catch (const std::exception&) {
@@ -152,7 +175,7 @@ void Study::texel_density_section(HtmlPage& page) {
     }
     const TexelDensityShare share = texel_density_share(*density);
     rows.push_back({layout.name, std::to_string(share.pixels), fixed(share.median, 3),
-                    fixed(100.0 * share.at_least_one, 1) + " %"});
+                    fixed(100.0 * share.at_least_one, 1) + " %", pages});
     PlotSeries series{layout.name,
                       density_over_distance(*density, *surfaces, scene.camera.position), true};
     for (const PlotPoint& p : series.points) {
