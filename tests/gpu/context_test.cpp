@@ -95,6 +95,7 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       {"shadow/virtual_allocate.comp", {{}}},
       {"shadow/virtual_dirty.comp", {{}}},
       {"shadow/virtual_bounds.comp", {{}}},
+      {"shadow/virtual_cull.comp", {{}}},
       {"test/shadow_math.comp", {{}}},
       {"test/sat_rectangle.comp", {{}}},
       {"render/ssao.comp", {{}}},
