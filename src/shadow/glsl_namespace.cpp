@@ -118,6 +118,7 @@ class Parser {
       if (t.directive || t.kind == Kind::Space || t.kind == Kind::Comment) continue;
       code_.push_back(i);
     }
+    find_function_defining_macros();
   }
 
   Declarations declarations;
@@ -126,6 +127,10 @@ class Parser {
   void parse() {
     std::size_t p = 0;
     while (p < code_.size()) {
+      if (const std::optional<std::size_t> next = macro_defined_function(p)) {
+        p = *next;
+        continue;
+      }
       const std::size_t end = statement_end(p);
       if (text(end) == ";") {
         declaration(p, end);
@@ -146,6 +151,84 @@ class Parser {
   [[nodiscard]] bool identifier(std::size_t k) const {
     return k < code_.size() && tokens_[code_[k]].kind == Kind::Identifier;
   }
+  // Function-like macros whose body defines a function named by one of
+  // their parameters (`#define X_DEFINE(NAME, ...) float NAME(...) {...}`,
+  // the shadow techniques' loops written once over several maps): the
+  // parameter's index, per macro name.
+  std::map<std::string, std::size_t, std::less<>> function_macros_;
+
+  void find_function_defining_macros() {
+    std::vector<std::size_t> directive;  // one directive's non-space tokens
+    const auto read = [&] {
+      // # define NAME ( p0 , p1 , ... ) body: the parameter list must touch
+      // the name (a function-like macro).
+      if (directive.size() < 5 || tokens_[directive[1]].text != "define") return;
+      const std::size_t name = directive[2], open = directive[3];
+      if (tokens_[open].text != "(" || open != name + 1) return;
+      std::vector<std::string_view> parameters;
+      std::size_t k = 4;
+      for (; k < directive.size() && tokens_[directive[k]].text != ")"; ++k) {
+        if (tokens_[directive[k]].kind == Kind::Identifier) {
+          parameters.push_back(tokens_[directive[k]].text);
+        }
+      }
+      for (++k; k + 2 < directive.size(); ++k) {
+        const Token &type = tokens_[directive[k]], &named = tokens_[directive[k + 1]];
+        if (type.kind != Kind::Identifier || tokens_[directive[k + 2]].text != "(") continue;
+        for (std::size_t p = 0; p < parameters.size(); ++p) {
+          if (named.text == parameters[p]) {
+            function_macros_.emplace(std::string(tokens_[name].text), p);
+            return;
+          }
+        }
+      }
+    };
+    for (std::size_t i = 0; i < tokens_.size(); ++i) {
+      const Token& t = tokens_[i];
+      if (!t.directive) {
+        if (!directive.empty()) read();
+        directive.clear();
+        continue;
+      }
+      if (t.kind == Kind::Space || t.kind == Kind::Comment) continue;
+      if (t.text == "#" && !directive.empty()) {
+        read();
+        directive.clear();
+      }
+      directive.push_back(i);
+    }
+    if (!directive.empty()) read();
+  }
+
+  // At p, an invocation of a function-defining macro at global scope: the
+  // function it defines is declared; returns where the next statement
+  // starts (after its ')' and an optional ';').
+  std::optional<std::size_t> macro_defined_function(std::size_t p) {
+    if (!identifier(p) || text(p + 1) != "(") return std::nullopt;
+    const auto macro = function_macros_.find(text(p));
+    if (macro == function_macros_.end()) return std::nullopt;
+    int depth = 0;
+    std::size_t argument = 0;
+    bool named = false;
+    for (std::size_t k = p + 1; k < code_.size(); ++k) {
+      const std::string_view t = text(k);
+      if (t == "(") {
+        ++depth;
+      } else if (t == ")") {
+        if (--depth == 0) {
+          if (!named) fail(p, "a function-defining macro without the function's name");
+          return text(k + 1) == ";" ? k + 2 : k + 1;
+        }
+      } else if (depth == 1 && t == ",") {
+        ++argument;
+      } else if (depth == 1 && argument == macro->second && !named) {
+        add(declarations.functions, k);
+        named = true;
+      }
+    }
+    fail(p, "a macro invocation without its ')'");
+  }
+
   [[noreturn]] void fail(std::size_t k, const std::string& what) const {
     const int line = k < code_.size() ? tokens_[code_[k]].line : tokens_.back().line;
     throw RuntimeError("shadow lookup GLSL, line " + std::to_string(line) + ": " + what);
