@@ -102,6 +102,24 @@ std::string light_type_name(const ::testing::TestParamInfo<LightType>& info) {
   return std::string(enum_name<LightType>(kLightTypeNames, info.param));
 }
 
+void EngineMesh::quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+  const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+  const auto first = static_cast<std::uint32_t>(positions.size());
+  for (glm::vec3 p : {a, b, c, d}) {
+    positions.push_back(p);
+    vertices.insert(vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+  }
+  indices.insert(indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+}
+
+void EngineMesh::box(glm::vec3 lo, glm::vec3 hi) {
+  quad({lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z});  // top
+  quad({lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z});  // +z
+  quad({hi.x, lo.y, lo.z}, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z});  // -z
+  quad({hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z});  // +x
+  quad({lo.x, lo.y, lo.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {lo.x, hi.y, lo.z});  // -x
+}
+
 PositionMesh::PositionMesh(const std::vector<glm::vec3>& triangles)
     : buffer_(gl::Buffer::from(std::span<const glm::vec3>(triangles), "test mesh")),
       vao_("test mesh"),

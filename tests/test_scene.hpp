@@ -4,6 +4,7 @@
 // one line, so that a test's scene reads as what it is.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
@@ -55,6 +56,20 @@ RenderSettings small_frame(int width, int height, View view = View::Shadow);
 
 // The light type's name, for tests instantiated over every light type.
 std::string light_type_name(const ::testing::TestParamInfo<LightType>& info);
+
+// An engine's own indexed mesh of quads with flat normals per face:
+// interleaved position xyz and normal xyz, the positions again for
+// ShadowMaps' casters, and the indices.
+struct EngineMesh {
+  std::vector<float> vertices;
+  std::vector<glm::vec3> positions;
+  std::vector<std::uint32_t> indices;
+
+  // The quad a, b, c, d, counter-clockwise seen from its front.
+  void quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
+  // The box lo..hi without its bottom face.
+  void box(glm::vec3 lo, glm::vec3 hi);
+};
 
 // A triangle list of positions at attribute 0, drawn as an engine draws its
 // meshes into ShadowMaps' views.

@@ -19,6 +19,7 @@
 #include "penumbra/error.hpp"
 #include "penumbra/gl/resources.hpp"
 #include "penumbra/shadow_maps.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
@@ -74,27 +75,7 @@ const std::string kFragment =
 
 // A 24 x 24 ground and three boxes on it, flat normals per face; the
 // casters are the same triangles.
-struct Scene {
-  std::vector<float> vertices;  // position xyz, normal xyz
-  std::vector<glm::vec3> positions;
-  std::vector<std::uint32_t> indices;
-
-  void quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
-    const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
-    const auto first = static_cast<std::uint32_t>(positions.size());
-    for (glm::vec3 p : {a, b, c, d}) {
-      positions.push_back(p);
-      vertices.insert(vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
-    }
-    indices.insert(indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
-  }
-  void box(glm::vec3 lo, glm::vec3 hi) {
-    quad({lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z});  // top
-    quad({lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z});  // +z
-    quad({hi.x, lo.y, lo.z}, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z});  // -z
-    quad({hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z});  // +x
-    quad({lo.x, lo.y, lo.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {lo.x, hi.y, lo.z});  // -x
-  }
+struct Scene : testing::EngineMesh {
   Scene() {
     quad({-12, 0, 12}, {12, 0, 12}, {12, 0, -12}, {-12, 0, -12});
     box({-1.0f, 0.0f, -1.0f}, {1.0f, 2.0f, 1.0f});
