@@ -431,7 +431,7 @@ struct Config {
   Filter filter;
   bool fused;
   const char* name;
-  int samples = 1;  // --shadow-msaa
+  int samples = 1;            // --shadow-msaa
   bool virtual_maps = false;  // the sun's virtual maps, marked from the engine's depth
 };
 // Depth maps alone; the resolve pass and a Gaussian (storage-buffer

@@ -22,8 +22,8 @@ enum class GpuPass {
   FilterVertical,
   SatRows,
   SatColumns,
-  Mips,            // the filtered map's mip chain (MipChainPass, --shadow-mips)
-  DepthHierarchy,  // the depth maps' min/max hierarchy (DepthHierarchyPass, backprojection)
+  Mips,               // the filtered map's mip chain (MipChainPass, --shadow-mips)
+  DepthHierarchy,     // the depth maps' min/max hierarchy (DepthHierarchyPass, backprojection)
   VirtualMarking,     // virtual shadow maps: the pages the camera's pixels read
   VirtualAllocation,  // virtual shadow maps: allocation and per-page caster culling
   VirtualPages,       // virtual shadow maps: the casters drawn into the listed pages
