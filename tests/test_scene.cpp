@@ -1,5 +1,6 @@
 #include "test_scene.hpp"
 
+#include <array>
 #include <utility>
 
 namespace penumbra::testing {
@@ -118,6 +119,46 @@ void EngineMesh::box(glm::vec3 lo, glm::vec3 hi) {
   quad({hi.x, lo.y, lo.z}, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z});  // -z
   quad({hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z});  // +x
   quad({lo.x, lo.y, lo.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {lo.x, hi.y, lo.z});  // -x
+}
+
+const std::string kEngineSceneVertex =
+    "#version 450 core\n"
+    "layout(location = 0) in vec3 in_position;\n"
+    "layout(location = 1) in vec3 in_normal;\n"
+    "layout(location = 0) uniform mat4 u_view_projection;\n"
+    "out vec3 v_world;\n"
+    "out vec3 v_normal;\n"
+    "void main() {\n"
+    "  v_world = in_position;\n"
+    "  v_normal = in_normal;\n"
+    "  gl_Position = u_view_projection * vec4(in_position, 1.0);\n"
+    "}\n";
+
+GLuint link_program(const std::string& vertex, const std::string& fragment, std::string& log) {
+  const GLuint program = glCreateProgram();
+  std::vector<GLuint> shaders;
+  for (auto [stage, source] :
+       {std::pair{GL_VERTEX_SHADER, &vertex}, {GL_FRAGMENT_SHADER, &fragment}}) {
+    const GLuint shader = glCreateShader(stage);
+    const char* text = source->c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    std::array<char, 8192> info{};
+    glGetShaderInfoLog(shader, static_cast<GLsizei>(info.size()), nullptr, info.data());
+    log += info.data();
+    glAttachShader(program, shader);
+    shaders.push_back(shader);
+  }
+  glLinkProgram(program);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  for (GLuint shader : shaders) glDeleteShader(shader);
+  if (ok == GL_TRUE) return program;
+  std::array<char, 8192> text{};
+  glGetProgramInfoLog(program, static_cast<GLsizei>(text.size()), nullptr, text.data());
+  log += text.data();
+  glDeleteProgram(program);
+  return 0;
 }
 
 PositionMesh::PositionMesh(const std::vector<glm::vec3>& triangles)

@@ -71,6 +71,14 @@ struct EngineMesh {
   void box(glm::vec3 lo, glm::vec3 hi);
 };
 
+// An engine's vertex shader for EngineMesh: position and normal at
+// attributes 0 and 1, the view-projection at uniform location 0, the world
+// position and normal out as v_world and v_normal.
+extern const std::string kEngineSceneVertex;
+
+// A linked program of the two stages, or 0 with the logs in `log`.
+GLuint link_program(const std::string& vertex, const std::string& fragment, std::string& log);
+
 // A triangle list of positions at attribute 0, drawn as an engine draws its
 // meshes into ShadowMaps' views.
 class PositionMesh {

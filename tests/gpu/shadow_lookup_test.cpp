@@ -42,34 +42,6 @@ Compiled compile(GLenum stage, const std::string& source) {
   return {ok == GL_TRUE, log.c_str()};
 }
 
-// A linked program, or 0 with the logs in `log`.
-GLuint link(const std::string& vertex, const std::string& fragment, std::string& log) {
-  const GLuint program = glCreateProgram();
-  std::vector<GLuint> shaders;
-  for (auto [stage, source] :
-       {std::pair{GL_VERTEX_SHADER, &vertex}, {GL_FRAGMENT_SHADER, &fragment}}) {
-    const GLuint shader = glCreateShader(stage);
-    const char* text = source->c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    std::array<char, 8192> info{};
-    glGetShaderInfoLog(shader, static_cast<GLsizei>(info.size()), nullptr, info.data());
-    log += info.data();
-    glAttachShader(program, shader);
-    shaders.push_back(shader);
-  }
-  glLinkProgram(program);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  for (GLuint shader : shaders) glDeleteShader(shader);
-  if (ok == GL_TRUE) return program;
-  std::array<char, 8192> text{};
-  glGetProgramInfoLog(program, static_cast<GLsizei>(text.size()), nullptr, text.data());
-  log += text.data();
-  glDeleteProgram(program);
-  return 0;
-}
-
 // An engine's fragment shader (its lines 2 on) that declares what the
 // lookup's own shaders declare: MAX_LIGHTS (as a macro, or with
 // `constant` a const int), a struct GpuLight, functions shadow_bias and
@@ -121,7 +93,8 @@ TEST_F(GpuTest, ShadowLookupKeepsToItsNamespaceInAnEngineShader) {
     SCOPED_TRACE(std::string(constant ? "const int" : "#define") + " MAX_LIGHTS, " +
                  (inserted ? "insert_shadow_lookup()" : "pasted after #version"));
     std::string log;
-    const GLuint program = link(kEngineVertex, engine_fragment(constant, inserted, ""), log);
+    const GLuint program =
+        testing::link_program(kEngineVertex, engine_fragment(constant, inserted, ""), log);
     EXPECT_NE(program, 0u) << log;
     glDeleteProgram(program);
   }
@@ -164,19 +137,6 @@ struct Scene : testing::EngineMesh {
   }
 };
 
-const std::string kSceneVertex =
-    "#version 450 core\n"
-    "layout(location = 0) in vec3 in_position;\n"
-    "layout(location = 1) in vec3 in_normal;\n"
-    "layout(location = 0) uniform mat4 u_view_projection;\n"
-    "out vec3 v_world;\n"
-    "out vec3 v_normal;\n"
-    "void main() {\n"
-    "  v_world = in_position;\n"
-    "  v_normal = in_normal;\n"
-    "  gl_Position = u_view_projection * vec4(in_position, 1.0);\n"
-    "}\n";
-
 const std::string kSceneFragment =
     "in vec3 v_world;\n"
     "in vec3 v_normal;\n"
@@ -199,8 +159,9 @@ class EngineFrame {
       glVertexArrayAttribBinding(vao_.id(), attribute, 0);
     }
     std::string log;
-    program_ = link(kSceneVertex,
-                    insert_shadow_lookup("#version 450 core\n" + kSceneFragment, bindings), log);
+    program_ = testing::link_program(
+        testing::kEngineSceneVertex,
+        insert_shadow_lookup("#version 450 core\n" + kSceneFragment, bindings), log);
     EXPECT_NE(program_, 0u) << log;
     framebuffer_.attach_color(0, color_);
     framebuffer_.attach_depth(depth_);

@@ -28,44 +28,6 @@ using testing::GpuTest;
 
 constexpr int kSize = 128;
 
-GLuint link(const std::string& vertex, const std::string& fragment, std::string& log) {
-  const GLuint program = glCreateProgram();
-  for (auto [stage, source] :
-       {std::pair{GL_VERTEX_SHADER, &vertex}, {GL_FRAGMENT_SHADER, &fragment}}) {
-    const GLuint shader = glCreateShader(stage);
-    const char* text = source->c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    std::array<char, 8192> info{};
-    glGetShaderInfoLog(shader, static_cast<GLsizei>(info.size()), nullptr, info.data());
-    log += info.data();
-    glAttachShader(program, shader);
-    glDeleteShader(shader);
-  }
-  glLinkProgram(program);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok == GL_TRUE) return program;
-  std::array<char, 8192> text{};
-  glGetProgramInfoLog(program, static_cast<GLsizei>(text.size()), nullptr, text.data());
-  log += text.data();
-  glDeleteProgram(program);
-  return 0;
-}
-
-const std::string kVertex =
-    "#version 450 core\n"
-    "layout(location = 0) in vec3 in_position;\n"
-    "layout(location = 1) in vec3 in_normal;\n"
-    "layout(location = 0) uniform mat4 u_view_projection;\n"
-    "out vec3 v_world;\n"
-    "out vec3 v_normal;\n"
-    "void main() {\n"
-    "  v_world = in_position;\n"
-    "  v_normal = in_normal;\n"
-    "  gl_Position = u_view_projection * vec4(in_position, 1.0);\n"
-    "}\n";
-
 const std::string kFragment =
     "#version 450 core\n"
     "in vec3 v_world;\n"
@@ -99,7 +61,8 @@ class Engine {
       glVertexArrayAttribBinding(vao_.id(), attribute, 0);
     }
     std::string log;
-    program_ = link(kVertex, insert_shadow_lookup(kFragment), log);
+    program_ =
+        testing::link_program(testing::kEngineSceneVertex, insert_shadow_lookup(kFragment), log);
     EXPECT_NE(program_, 0u) << log;
     framebuffer_.attach_color(0, color_);
     framebuffer_.attach_depth(depth_);
