@@ -558,45 +558,51 @@ void main() {
                      1.0);
     return;
   }
-  if (view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE) {
-    // Where no point of the source is above the horizon of the shading
-    // normal no light arrives, occluders or not: 0, and alpha 0 (not
-    // judged, as the traced reference marks it). Elsewhere the technique
-    // decides, also on surfaces turned away from the light's centre, which
-    // an area light's source still reaches over their horizon, and below
-    // their triangle's plane (from the point the terminator model lifts).
-    int i = frame.options.z;
-    if (!source_above_horizon(lights[i], world, n)) {
-      out_color = vec4(0.0);
-      return;
-    }
-    vec3 start = lifted_point(lights[i], world, n, facet);
-    float lit = shadow_factor(i, start, facet_normal, n, view == VIEW_SHADOW_REFERENCE, rotation,
-                              footprint);
-    if (view == VIEW_SHADOW) lit = with_contact_shadow(lit, i, pixel, start);
-    float weight = accumulate_source_weight(lights[i], world, n);
-    out_color = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)
-                                                       : vec4(vec3(lit), 1.0);
-    return;
-  }
-
+  // The shadow views read the chosen light alone; the lit image sums every
+  // light. One loop, so that the technique's lookup (shadow_factor) and
+  // the contact shadows have one call site: the shader compiler inlines
+  // each call, and two call sites would double the shader.
+  bool shadow_view = view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE;
+  int first_light = shadow_view ? frame.options.z : 0;
+  int light_end = shadow_view ? first_light + 1 : frame.options.x;
   vec3 specular = texelFetch(gbuffer_specular, pixel, 0).rgb;
   float shininess = normal_shininess.w;
   vec3 to_eye = normalize(frame.camera_position.xyz - world);
   vec3 color = frame.ambient.rgb * albedo * ao;
-  for (int i = 0; i < frame.options.x; ++i) {
-    vec3 to_light;
-    vec3 irradiance = incident_light(i, world, to_light);
-    float n_dot_l = dot(n, to_light);
-    if (n_dot_l <= 0.0 || all(equal(irradiance, vec3(0.0)))) continue;
+  for (int i = first_light; i < light_end; ++i) {
+    vec3 to_light = vec3(0.0);
+    vec3 irradiance = vec3(0.0);
+    if (shadow_view) {
+      // Where no point of the source is above the horizon of the shading
+      // normal no light arrives, occluders or not: 0, and alpha 0 (not
+      // judged, as the traced reference marks it). Elsewhere the technique
+      // decides, also on surfaces turned away from the light's centre,
+      // which an area light's source still reaches over their horizon, and
+      // below their triangle's plane (from the point the terminator model
+      // lifts).
+      if (!source_above_horizon(lights[i], world, n)) {
+        out_color = vec4(0.0);
+        return;
+      }
+    } else {
+      irradiance = incident_light(i, world, to_light);
+      if (dot(n, to_light) <= 0.0 || all(equal(irradiance, vec3(0.0)))) continue;
+    }
+    vec3 start = lifted_point(lights[i], world, n, facet);
+    float lit = shadow_factor(i, start, facet_normal, n, view == VIEW_SHADOW_REFERENCE, rotation,
+                              footprint);
+    if (view != VIEW_SHADOW_REFERENCE) lit = with_contact_shadow(lit, i, pixel, start);
+    if (shadow_view) {
+      float weight = accumulate_source_weight(lights[i], world, n);
+      out_color = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)
+                                                         : vec4(vec3(lit), 1.0);
+      return;
+    }
     vec3 h = normalize(to_light + to_eye);
     // Normalized Blinn-Phong: (s + 8) / 8 keeps the highlight's energy
     // constant as the exponent changes (Akenine-Moller et al., RTR 4th ed.).
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
-    vec3 start = lifted_point(lights[i], world, n, facet);
-    float lit = with_contact_shadow(
-        shadow_factor(i, start, facet_normal, n, false, rotation, footprint), i, pixel, start);
-    color += lit * irradiance * n_dot_l * brdf;
+    color += lit * irradiance * dot(n, to_light) * brdf;
   }
   out_color = vec4(color, 1.0);
 }
