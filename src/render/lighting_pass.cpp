@@ -49,6 +49,10 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
   if (width != width_ || height != height_) {
     output_ = gl::Texture(gl::TextureInfo{
         .format = GL_RGBA32F, .width = width, .height = height, .label = "lighting output"});
+    unoccluded_ = gl::Texture(gl::TextureInfo{
+        .format = GL_R32F, .width = width, .height = height, .label = "no ambient occlusion"});
+    const float one = 1.0f;
+    glClearTexImage(unoccluded_.id(), 0, GL_RED, GL_FLOAT, &one);
     framebuffer_ = gl::Framebuffer("lighting");
     framebuffer_.attach_color(0, output_);
     framebuffer_.set_draw_buffers(1);
@@ -66,7 +70,8 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
   glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
   glBindTextureUnit(UNIT_GBUFFER_ALBEDO, gbuffer.albedo().id());
   glBindTextureUnit(UNIT_GBUFFER_SPECULAR, gbuffer.specular().id());
-  glBindTextureUnit(UNIT_AMBIENT_OCCLUSION, ambient_occlusion);
+  glBindTextureUnit(UNIT_AMBIENT_OCCLUSION,
+                    ambient_occlusion != 0 ? ambient_occlusion : unoccluded_.id());
   glBindTextureUnit(UNIT_GBUFFER_FACET, gbuffer.facet().id());
   for (int unit : {UNIT_GBUFFER_DEPTH, UNIT_GBUFFER_NORMAL, UNIT_GBUFFER_ALBEDO,
                    UNIT_GBUFFER_SPECULAR, UNIT_AMBIENT_OCCLUSION, UNIT_GBUFFER_FACET}) {

@@ -49,6 +49,12 @@ class LightingPass {
   bool cpu_rasterizer_ = false;  // llvmpipe and the like (see execute())
   gl::Sampler compare_;
   gl::Texture output_;
+  // Bound as the AO texture where there is none (never read then): an
+  // R32F texture at the output's size, as SSAO's output is. A software
+  // rasterizer (llvmpipe) compiles a shader variant per bound textures'
+  // format and size class; with nothing bound, each technique's lighting
+  // shader would be compiled twice, once with AO and once without.
+  gl::Texture unoccluded_;
   gl::Framebuffer framebuffer_;
   int width_ = 0, height_ = 0;
 };
