@@ -76,19 +76,13 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
   const auto key = std::make_tuple(technique, quantized, radius, rows, samples);
   auto it = programs_.find(key);
   if (it == programs_.end()) {
-    std::string weight_list;
-    for (float w : gaussian_weights(radius)) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%s%.9g", weight_list.empty() ? "" : ", ", w);
-      weight_list += text;  // 9 significant digits: the float itself, exactly
-    }
     gl::Defines defines = {{"REPRESENTATION", std::to_string(technique_define(technique))},
                            {"MSM_QUANTIZED", quantized ? "1" : "0"},
                            {"IMAGE_FORMAT", image_format_qualifier(format)},
                            {"RADIUS", std::to_string(radius)},
                            {"TILE_Y", std::to_string(rows)},
                            {"EVSM4_STAGE_WARPS", stage_warps ? "1" : "0"},
-                           {"GAUSSIAN_WEIGHTS", weight_list},
+                           {"GAUSSIAN_WEIGHTS", gaussian_weight_list(radius)},
                            {"SAMPLES", std::to_string(samples)}};
     it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;
   }

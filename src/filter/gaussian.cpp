@@ -1,6 +1,7 @@
 #include "penumbra/filter/gaussian.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace penumbra {
 
@@ -16,6 +17,16 @@ std::vector<float> gaussian_weights(int w) {
   std::vector<float> result(weights.size());
   for (std::size_t k = 0; k < weights.size(); ++k) result[k] = float(weights[k] / sum);
   return result;
+}
+
+std::string gaussian_weight_list(int w) {
+  std::string list;
+  for (float weight : gaussian_weights(w)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%s%.9g", list.empty() ? "" : ", ", weight);
+    list += text;
+  }
+  return list;
 }
 
 }  // namespace penumbra

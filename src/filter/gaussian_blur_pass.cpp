@@ -4,6 +4,7 @@
 
 #include "penumbra/filter/gaussian.hpp"
 #include "penumbra/filter/layer_runs.hpp"
+#include "penumbra/gl/context.hpp"
 #include "penumbra/settings.hpp"
 #include "penumbra/shadow/representation.hpp"
 #include "penumbra/shared/bindings.h"
@@ -25,8 +26,14 @@ bool ensure_like(gl::Texture& texture, const gl::Texture& like, const char* labe
 
 }  // namespace
 
-GaussianBlurPass::GaussianBlurPass()
-    : weights_(sizeof(float) * (2 * kMaxBlur + 1), nullptr, true, "gaussian weights") {}
+GaussianBlurPass::GaussianBlurPass(Staging staging) {
+  if (staging == Staging::Automatic) {
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    shared_memory_ = renderer == nullptr || !gl::is_cpu_rasterizer(renderer);
+  } else {
+    shared_memory_ = staging == Staging::SharedMemory;
+  }
+}
 
 const gl::Program& GaussianBlurPass::program(GLenum format, int axis, int radius) {
   auto key = std::make_tuple(format, axis, radius);
@@ -34,6 +41,8 @@ const gl::Program& GaussianBlurPass::program(GLenum format, int axis, int radius
   if (it == programs_.end()) {
     gl::Defines defines = {{"AXIS", std::to_string(axis)},
                            {"RADIUS", std::to_string(radius)},
+                           {"GAUSSIAN_WEIGHTS", gaussian_weight_list(radius)},
+                           {"STAGE_IN_SHARED_MEMORY", shared_memory_ ? "1" : "0"},
                            {"IMAGE_FORMAT", image_format_qualifier(format)}};
     it = programs_.emplace(key, gl::Program::compute("filter/gaussian_blur.comp", defines)).first;
   }
@@ -73,16 +82,10 @@ TexelTraffic GaussianBlurPass::texel_traffic(GLenum format, int radius, int axis
 
 void GaussianBlurPass::execute(const gl::Texture& source, int radius, gl::GpuProfiler* profiler,
                                int levels, std::span<const std::uint8_t> layers) {
-  if (radius != weights_radius_) {
-    std::vector<float> weights = gaussian_weights(radius);
-    weights_.update(weights.data(), weights.size() * sizeof(float));
-    weights_radius_ = radius;
-  }
   ensure_like(intermediate_, source, "blur intermediate");
   const bool all = ensure_like(output_, source, "blurred shadow maps", levels);
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "gaussian blur");
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BINDING_FILTER_WEIGHTS_SSBO, weights_.id());
   {
     gl::GpuPassScope timed(profiler, gl::GpuPass::FilterHorizontal);
     dispatch(program(source.format(), 0, radius), source, intermediate_, 0, layers, all);

@@ -4,6 +4,7 @@
 
 #include "gl/embedded_shaders.hpp"
 #include "gpu_fixture.hpp"
+#include "penumbra/filter/gaussian.hpp"
 #include "penumbra/gl/program.hpp"
 #include "penumbra/shared/bindings.h"
 
@@ -77,8 +78,16 @@ TEST_F(GpuTest, EveryShaderCompiles) {
          {"TILE_Y", "8"},
          {"GAUSSIAN_WEIGHTS", "0.1, 0.2, 0.4, 0.2, 0.1"}}}},
       {"filter/gaussian_blur.comp",
-       {{{"AXIS", "0"}, {"RADIUS", "1"}, {"IMAGE_FORMAT", "rgba16"}},
-        {{"AXIS", "1"}, {"RADIUS", "64"}, {"IMAGE_FORMAT", "rgba32f"}}}},
+       {{{"AXIS", "0"},
+         {"RADIUS", "1"},
+         {"GAUSSIAN_WEIGHTS", gaussian_weight_list(1)},
+         {"STAGE_IN_SHARED_MEMORY", "1"},
+         {"IMAGE_FORMAT", "rgba16"}},
+        {{"AXIS", "1"},
+         {"RADIUS", "64"},
+         {"GAUSSIAN_WEIGHTS", gaussian_weight_list(64)},
+         {"STAGE_IN_SHARED_MEMORY", "0"},
+         {"IMAGE_FORMAT", "rgba32f"}}}},
       {"filter/sat_rows.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "rg32ui"}}}},
       {"filter/sat_columns.comp", {{{"IMAGE_FORMAT", "rgba32ui"}}, {{"IMAGE_FORMAT", "r32ui"}}}},
       {"filter/sat_scan.comp",

@@ -17,7 +17,12 @@ namespace penumbra {
 
 class GaussianBlurPass {
  public:
-  GaussianBlurPass();
+  // How each workgroup reads its taps (shaders/filter/gaussian_blur.comp):
+  // through a tile staged in shared memory (GPUs), or straight from the
+  // source (CPU rasterizers, where the staging costs more than it saves).
+  // Both give the same floats.
+  enum class Staging { Automatic, SharedMemory, Direct };
+  explicit GaussianBlurPass(Staging staging = Staging::Automatic);
 
   // Blurs every layer of the 2D array `source` with 2 radius + 1 taps per
   // direction into output() (same size, layers and format). radius >= 1.
@@ -29,7 +34,6 @@ class GaussianBlurPass {
 
   // Valid after execute().
   [[nodiscard]] const gl::Texture& output() const { return output_; }
-
   // Per texel of a width x height map of `format`, one direction (axis 0:
   // along x): each workgroup reads its tile (shared/filter_tiles.h; the
   // tiles that overhang the map read clamped border texels) with `radius`
@@ -37,7 +41,6 @@ class GaussianBlurPass {
   // texels inside the map: about 1 + 2 radius / GAUSSIAN_TILE_ALONG reads
   // and one write.
   static TexelTraffic texel_traffic(GLenum format, int radius, int axis, int width, int height);
-
   // Frees the output and the intermediate (execute() makes them again),
   // keeping the programs.
   void release() {
@@ -49,10 +52,8 @@ class GaussianBlurPass {
   const gl::Program& program(GLenum format, int axis, int radius);
   void dispatch(const gl::Program& program, const gl::Texture& from, const gl::Texture& to,
                 int axis, std::span<const std::uint8_t> layers, bool all);
-
   std::map<std::tuple<GLenum, int, int>, gl::Program> programs_;
-  gl::Buffer weights_;
-  int weights_radius_ = -1;
+  bool shared_memory_ = true;
   gl::Texture intermediate_;
   gl::Texture output_;
 };
