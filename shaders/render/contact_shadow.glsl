@@ -69,11 +69,40 @@ bool contact_behind(ivec2 q, vec3 point, out ContactSurface surface) {
   return surface.in_front > surface.uncertainty && surface.in_front < frame.contact_thickness;
 }
 
+// The part of a source that lies above the horizon of the shading normal
+// n, as a disc of directions again: its centre `to_light` and the tangent
+// of its angular radius `source_tan`, changed in place. Only that part
+// sends the point light (the traced reference gives what lies below the
+// horizon no weight, occluded or not), so the march looks for occluders
+// of that part. A disc whose centre lies at an elevation e above the
+// horizon, less than its radius r, shows the span of elevations from 0 to
+// e + r: the march aims at its middle, (e + r) / 2, as wide as half of it.
+// Aimed at the centre, the march of a surface the centre lies just below
+// (the default scene's box under an 8.45-degree sun, lit over the horizon
+// by the disc's upper half) went into the surface itself, which hid the
+// centre from every step: the whole face black where the reference
+// lights it (backprojection's RMSE 0.0101 -> 0.111). False where no part
+// of the source is above the horizon.
+bool contact_visible_source(vec3 n, inout vec3 to_light, inout float source_tan) {
+  float radius = atan(source_tan);
+  float elevation = asin(clamp(dot(n, to_light), -1.0, 1.0));
+  if (elevation >= radius) return true;
+  if (elevation + radius <= 0.0) return false;
+  vec3 along = to_light - dot(n, to_light) * n;  // not 0: the elevation is under 90 degrees
+  float middle = 0.5 * (elevation + radius);
+  to_light = cos(middle) * normalize(along) + sin(middle) * n;
+  source_tan = tan(middle);
+  return true;
+}
+
 // Fraction of the light that the march lets through from `start` (the
-// shaded point, lifted as the light's shadow lookups are) along the unit
-// direction `to_light`, at most `reach` world units (a spot or point
-// light's distance): 1 where nothing is met. `source_tan` is the tangent
-// of the source's angular radius seen from the point (0: a point source).
+// shaded point, lifted as the light's shadow lookups are, with shading
+// normal n) towards the source seen from it in the unit direction
+// `to_light`, at most `reach` world units (a spot or point light's
+// distance): 1 where nothing is met. `source_tan` is the tangent of the
+// source's angular radius seen from the point (0: a point source). The
+// march aims at the part of the source above n's horizon
+// (contact_visible_source()).
 //
 // A step behind a surface finds an occluder of the source's centre. The
 // surface's point on the camera's ray through the step lies at an angle
@@ -86,10 +115,12 @@ bool contact_behind(ivec2 q, vec3 point, out ContactSurface surface) {
 // The most hidden over the steps is kept, and an occluder met at a
 // fraction t of the march hides 1 - smoothstep(0.5, 1, t) of that: the
 // march's end fades instead of cutting a line where its length runs out.
-float contact_lit_fraction(ivec2 pixel, vec3 start, vec3 to_light, float reach, float source_tan) {
+float contact_lit_fraction(ivec2 pixel, vec3 start, vec3 n, vec3 to_light, float reach,
+                           float source_tan) {
   float len = min(frame.contact_length, reach);
   int steps = frame.contact_steps;
   if (!(len > 0.0) || steps <= 0) return 1.0;
+  if (!contact_visible_source(n, to_light, source_tan)) return 1.0;
   mat4 view_projection = frame.projection * frame.view;
   vec2 size = frame.viewport.xy;
   vec3 camera = frame.camera_position.xyz;
