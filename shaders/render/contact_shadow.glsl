@@ -61,9 +61,7 @@ ContactSurface contact_surface(ivec2 q, vec3 point) {
 
 // Whether `point` lies behind the surface seen at pixel q, along the
 // camera's ray through it, by more than that surface's uncertainty and
-// less than the thickness (a step that far behind a surface it went
-// through is one the camera sees nearly edge-on, where its plane proves
-// the least). Background hides nothing.
+// less than the thickness. Background hides nothing.
 bool contact_behind(ivec2 q, vec3 point, out ContactSurface surface) {
   surface = ContactSurface(0.0, 0.0);
   if (texelFetch(gbuffer_normal, q, 0).w == 0.0) return false;
@@ -71,21 +69,11 @@ bool contact_behind(ivec2 q, vec3 point, out ContactSurface surface) {
   return surface.in_front > surface.uncertainty && surface.in_front < frame.contact_thickness;
 }
 
-// The plane of the triangle seen at pixel q: its unit normal turned
-// towards the camera (xyz) and its offset (w), so that dot(xyz, p) + w is
-// p's distance from it, positive on the camera's side.
-vec4 contact_plane(ivec2 q) {
-  vec3 surface = world_position(q, texelFetch(gbuffer_depth, q, 0).r);
-  vec3 normal = normalize(texelFetch(gbuffer_facet, q, 0).xyz);
-  if (dot(normal, frame.camera_position.xyz - surface) < 0.0) normal = -normal;
-  return vec4(normal, -dot(normal, surface));
-}
-
-// Whether the depth buffer holds a surface at `point`: the surface seen at
-// its pixel lies there along the camera's ray, within a pixel's worth of
-// that surface's slope (four times contact_surface()'s quarter pixel: the
-// planes of neighbouring pixels of a curved surface differ by that much).
-bool contact_seen_at(vec3 point) {
+// The surface the depth buffer holds at the pixel `point` falls in, as
+// contact_surface() takes it; false off screen and on background, where
+// the buffer holds none.
+bool contact_surface_at(vec3 point, out ContactSurface surface) {
+  surface = ContactSurface(0.0, 0.0);
   vec4 clip = frame.projection * frame.view * vec4(point, 1.0);
   if (clip.w <= 0.0) return false;
   vec2 size = frame.viewport.xy;
@@ -93,45 +81,38 @@ bool contact_seen_at(vec3 point) {
   if (any(lessThan(window, vec2(0.0))) || any(greaterThanEqual(window, size))) return false;
   ivec2 q = ivec2(window);
   if (texelFetch(gbuffer_normal, q, 0).w == 0.0) return false;
-  ContactSurface surface = contact_surface(q, point);
-  return abs(surface.in_front) <= 4.0 * surface.uncertainty;
+  surface = contact_surface(q, point);
+  return true;
 }
 
-// Whether the march's ray from `start` went into a
-// surface the camera sees before reaching `point` (seen at q, at `window`
-// in the viewport), and the surface seen in front of `point` along the
-// camera's ray. A step behind a surface has left the space the camera sees
-// empty, and that alone proves no occluder: the ray may pass behind a thin
-// one (under the foliage scene's fence rails, 2 cm deep, or behind its
-// leaf cards, which have no depth at all) where a depth thickness guessed
-// solid matter. It proves one where the ray crossed the surface's plane,
-// from the camera's side at the start to behind it at the step, at a
-// point the depth buffer holds: there the ray meets a surface the camera
-// sees. Through a silhouette instead (the ray passing behind the edge of
-// a nearer object), the crossing lies on the plane's extension, where the
-// buffer sees something else. The step must also lie behind the surfaces
-// at the pixels nearest it beside q in x and in y: within a pixel of a
-// silhouette it lies behind it in the buffer while it passes over the
-// surface in truth (over the edge of a lit top, beside a thin pole), and
-// there a neighbour across the edge sees past it. (A ray that leaves a
-// surface the camera sees, from the far side, crosses one as surely; but
-// the start of a point on a convex object lies that way behind its
-// neighbours' planes, by less than the pixels' quantization can tell.)
-bool contact_through_surface(ivec2 q, vec2 window, vec3 start, vec3 point,
-                             out ContactSurface surface) {
-  ContactSurface beside;
-  ivec2 side = ivec2(sign(window - (vec2(q) + 0.5)));
-  ivec2 last = ivec2(frame.viewport.xy) - 1;
-  if (!(contact_behind(q, point, surface) &&
-        contact_behind(clamp(q + ivec2(side.x, 0), ivec2(0), last), point, beside) &&
-        contact_behind(clamp(q + ivec2(0, side.y), ivec2(0), last), point, beside))) {
-    return false;
+// Whether the march's ray, from `outside` (a point the depth buffer shows
+// in front of its surface) to `inside` (one it shows behind its surface),
+// went into a surface the buffer holds. A step behind a surface has left
+// the space the camera sees empty, and that alone proves no occluder: the
+// ray may pass behind a thin one (under the foliage scene's fence rails,
+// 2 cm deep, or behind its leaf cards, which have no depth at all), where
+// a depth thickness took solid matter for granted. It proves one where the
+// ray left that space through a surface: bisected down to a sixteenth of
+// the way, the first point found behind lies on the surface seen there
+// (within a pixel's worth of its slope, four times contact_surface()'s
+// quarter pixel, and the last interval). Through a silhouette instead,
+// the ray passing behind the edge of a nearer object, that point lies
+// behind the nearer surface by the whole gap between them. The surface
+// crossed need not be the one seen at `inside` (a ray into a thin slab's
+// lit side, seen from above, has its next step seen through the top).
+bool contact_went_into_surface(vec3 outside, vec3 inside) {
+  for (int i = 0; i < 4; ++i) {
+    vec3 middle = 0.5 * (outside + inside);
+    ContactSurface at;
+    if (contact_surface_at(middle, at) && at.in_front > at.uncertainty) {
+      inside = middle;
+    } else {
+      outside = middle;
+    }
   }
-  vec4 plane = contact_plane(q);
-  float before = dot(plane.xyz, start) + plane.w;
-  float after = dot(plane.xyz, point) + plane.w;
-  if (!(before >= 0.0 && after < 0.0)) return false;
-  return contact_seen_at(mix(start, point, before / (before - after)));
+  ContactSurface at;
+  return contact_surface_at(inside, at) &&
+         at.in_front <= 4.0 * at.uncertainty + 2.0 * distance(inside, outside);
 }
 
 // The part of a source that lies above the horizon of the shading normal
@@ -195,6 +176,8 @@ float contact_lit_fraction(ivec2 pixel, vec3 start, vec3 n, vec3 to_light, float
   float dt = 1.0 / float(steps);
   float t = dt * (0.5 + interleaved_gradient_noise(vec2(pixel) + vec2(17.0, 59.0)));
   float hidden = 0.0;
+  // The last point of the march the buffer shows in front of its surface.
+  vec3 outside = start;
   for (int k = 0; k < steps && hidden < 1.0; ++k, t += dt) {
     vec3 point = start + to_light * (t * len);
     vec4 clip = view_projection * vec4(point, 1.0);
@@ -203,8 +186,23 @@ float contact_lit_fraction(ivec2 pixel, vec3 start, vec3 n, vec3 to_light, float
     if (any(lessThan(window, vec2(0.0))) || any(greaterThanEqual(window, size))) break;
     ivec2 q = ivec2(window);
     if (q == pixel) continue;
-    ContactSurface surface;
-    if (!contact_through_surface(q, window, start, point, surface)) continue;
+    // Behind the surface seen at q, and at the pixels nearest the step
+    // beside q in x and in y: a step within a pixel of a silhouette lies
+    // behind it in the buffer while it passes over the surface in truth
+    // (over the edge of a lit top, beside a thin pole); there a neighbour
+    // across the edge sees past it.
+    ContactSurface surface, beside;
+    if (!contact_behind(q, point, surface)) {
+      if (surface.in_front <= surface.uncertainty) outside = point;
+      continue;
+    }
+    ivec2 side = ivec2(sign(window - (vec2(q) + 0.5)));
+    ivec2 last = ivec2(size) - 1;
+    if (!contact_behind(clamp(q + ivec2(side.x, 0), ivec2(0), last), point, beside) ||
+        !contact_behind(clamp(q + ivec2(0, side.y), ivec2(0), last), point, beside) ||
+        !contact_went_into_surface(outside, point)) {
+      continue;
+    }
     float part = 1.0;
     if (source_tan > 0.0) {
       vec3 off_march = normalize(camera - point) * surface.in_front;
