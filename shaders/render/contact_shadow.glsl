@@ -70,16 +70,17 @@ bool contact_behind(ivec2 q, vec3 point, out ContactSurface surface) {
 }
 
 // The surface the depth buffer holds at the pixel `point` falls in, as
-// contact_surface() takes it; false off screen and on background, where
-// the buffer holds none.
-bool contact_surface_at(vec3 point, out ContactSurface surface) {
+// contact_surface() takes it, and that pixel; false off screen and on
+// background, where the buffer holds none.
+bool contact_surface_at(vec3 point, out ContactSurface surface, out ivec2 q) {
   surface = ContactSurface(0.0, 0.0);
+  q = ivec2(0);
   vec4 clip = frame.projection * frame.view * vec4(point, 1.0);
   if (clip.w <= 0.0) return false;
   vec2 size = frame.viewport.xy;
   vec2 window = (clip.xy / clip.w * 0.5 + 0.5) * size;
   if (any(lessThan(window, vec2(0.0))) || any(greaterThanEqual(window, size))) return false;
-  ivec2 q = ivec2(window);
+  q = ivec2(window);
   if (texelFetch(gbuffer_normal, q, 0).w == 0.0) return false;
   surface = contact_surface(q, point);
   return true;
@@ -95,24 +96,37 @@ bool contact_surface_at(vec3 point, out ContactSurface surface) {
 // ray left that space through a surface: bisected down to a sixteenth of
 // the way, the first point found behind lies on the surface seen there
 // (within a pixel's worth of its slope, four times contact_surface()'s
-// quarter pixel, and the last interval). Through a silhouette instead,
-// the ray passing behind the edge of a nearer object, that point lies
-// behind the nearer surface by the whole gap between them. The surface
+// quarter pixel, and the last interval), and the last point found in
+// front of the buffer lies in front of that surface too: the ray crossed
+// it between the two. Through a silhouette instead, the ray passing
+// behind the edge of a nearer object, both points lie behind the nearer
+// surface, by the gap between them (the foliage scene's ground seen
+// between the fence's slats, its rays rising just behind them: a dozen
+// pixels went black where the slats' penumbra is, RMSE 0.0273 -> 0.0286). The surface
 // crossed need not be the one seen at `inside` (a ray into a thin slab's
-// lit side, seen from above, has its next step seen through the top).
+// lit side, seen from above, has its next step seen through the top). It
+// must be opaque: a cut-out's depth holds its mask's coverage at the
+// pixel's centre only, and the point crossed lies elsewhere in the pixel
+// (the foliage scene's leaf cards and grille, whose masks are finer than
+// its pixels at 320x180: a dozen pixels of leaves went black, RMSE
+// 0.0273 -> 0.0288).
 bool contact_went_into_surface(vec3 outside, vec3 inside) {
+  ContactSurface at;
+  ivec2 q;
   for (int i = 0; i < 4; ++i) {
     vec3 middle = 0.5 * (outside + inside);
-    ContactSurface at;
-    if (contact_surface_at(middle, at) && at.in_front > at.uncertainty) {
+    if (contact_surface_at(middle, at, q) && at.in_front > at.uncertainty) {
       inside = middle;
     } else {
       outside = middle;
     }
   }
-  ContactSurface at;
-  return contact_surface_at(inside, at) &&
-         at.in_front <= 4.0 * at.uncertainty + 2.0 * distance(inside, outside);
+  if (!contact_surface_at(inside, at, q) || texelFetch(gbuffer_specular, q, 0).a < 0.5 ||
+      at.in_front > 4.0 * at.uncertainty + 2.0 * distance(inside, outside)) {
+    return false;
+  }
+  ContactSurface before = contact_surface(q, outside);
+  return before.in_front <= before.uncertainty;
 }
 
 // The part of a source that lies above the horizon of the shading normal
