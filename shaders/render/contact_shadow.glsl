@@ -190,8 +190,12 @@ float contact_lit_fraction(ivec2 pixel, vec3 start, vec3 n, vec3 to_light, float
   float dt = 1.0 / float(steps);
   float t = dt * (0.5 + interleaved_gradient_noise(vec2(pixel) + vec2(17.0, 59.0)));
   float hidden = 0.0;
-  // The last point of the march the buffer shows in front of its surface.
+  // The last point of the march the buffer shows in front of its surface,
+  // and whether a step behind a surface since was tested: the first one
+  // brackets where the ray left the space the camera sees empty; a later
+  // one behind the same stretch would bisect the same way.
   vec3 outside = start;
+  bool tested = false;
   for (int k = 0; k < steps && hidden < 1.0; ++k, t += dt) {
     vec3 point = start + to_light * (t * len);
     vec4 clip = view_projection * vec4(point, 1.0);
@@ -207,16 +211,20 @@ float contact_lit_fraction(ivec2 pixel, vec3 start, vec3 n, vec3 to_light, float
     // across the edge sees past it.
     ContactSurface surface, beside;
     if (!contact_behind(q, point, surface)) {
-      if (surface.in_front <= surface.uncertainty) outside = point;
+      if (surface.in_front <= surface.uncertainty) {
+        outside = point;
+        tested = false;
+      }
       continue;
     }
     ivec2 side = ivec2(sign(window - (vec2(q) + 0.5)));
     ivec2 last = ivec2(size) - 1;
-    if (!contact_behind(clamp(q + ivec2(side.x, 0), ivec2(0), last), point, beside) ||
-        !contact_behind(clamp(q + ivec2(0, side.y), ivec2(0), last), point, beside) ||
-        !contact_went_into_surface(outside, point)) {
+    if (tested || !contact_behind(clamp(q + ivec2(side.x, 0), ivec2(0), last), point, beside) ||
+        !contact_behind(clamp(q + ivec2(0, side.y), ivec2(0), last), point, beside)) {
       continue;
     }
+    tested = true;
+    if (!contact_went_into_surface(outside, point)) continue;
     float part = 1.0;
     if (source_tan > 0.0) {
       vec3 off_march = normalize(camera - point) * surface.in_front;
