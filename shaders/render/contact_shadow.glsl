@@ -6,6 +6,10 @@
 // screenSpaceContactShadow): a fixed number of steps over a short
 // world-space length, the start dithered per pixel, and a depth thickness
 // behind which a surface seen in front of the ray no longer hides it.
+// Unlike theirs, a step behind a surface counts only where the ray went
+// into it (contact_went_into_surface()): the engines' thickness takes
+// every blocker for solid, and thin ones (fence rails, leaf cards) cast
+// contact shadows where the ray passes behind them.
 //
 // The including shader provides the G-buffer's samplers and
 // world_position(), the one reconstruction of a position from the depth
@@ -101,15 +105,13 @@ bool contact_surface_at(vec3 point, out ContactSurface surface, out ivec2 q) {
 // it between the two. Through a silhouette instead, the ray passing
 // behind the edge of a nearer object, both points lie behind the nearer
 // surface, by the gap between them (the foliage scene's ground seen
-// between the fence's slats, its rays rising just behind them: a dozen
-// pixels went black where the slats' penumbra is, RMSE 0.0273 -> 0.0286). The surface
-// crossed need not be the one seen at `inside` (a ray into a thin slab's
-// lit side, seen from above, has its next step seen through the top). It
-// must be opaque: a cut-out's depth holds its mask's coverage at the
-// pixel's centre only, and the point crossed lies elsewhere in the pixel
-// (the foliage scene's leaf cards and grille, whose masks are finer than
-// its pixels at 320x180: a dozen pixels of leaves went black, RMSE
-// 0.0273 -> 0.0288).
+// between the fence's slats, its rays rising just behind them: without
+// the second test a dozen pixels of the slats' penumbra went black, RMSE
+// 0.0273 -> 0.0286). The surface crossed need not be the one seen at
+// `inside` (a ray into a thin slab's lit side, seen from above, has its
+// next step seen through the top). It must be opaque: a cut-out's depth
+// holds its mask's coverage at the pixel's centre only, and the point
+// crossed lies elsewhere in the pixel.
 bool contact_went_into_surface(vec3 outside, vec3 inside) {
   ContactSurface at;
   ivec2 q;
