@@ -292,12 +292,13 @@ struct ShadowSettings : ShadowMapSettings {
   // Screen-space contact shadows, with every technique, in penumbra's
   // renderer (ShadowMaps' lookup has no camera depth buffer to march): from
   // each lit pixel, contact_shadow_steps dithered steps through the
-  // camera's depth buffer towards the light, over contact_shadow_length
-  // world units; a step behind a surface seen in front of it by less than
-  // contact_shadow_thickness is occluded. They catch what the map's bias
-  // and resolution let light under (creases, the foot of a model); the
-  // light's factor is the smaller of the technique's and theirs
-  // (shaders/render/contact_shadow.glsl).
+  // camera's depth buffer towards the part of the light's source above the
+  // horizon, over contact_shadow_length world units; a step behind a
+  // surface seen in front of it by less than contact_shadow_thickness is
+  // occluded where the ray went into an opaque surface the buffer holds.
+  // They catch what the map's bias and resolution let light under
+  // (creases, the foot of a model); the light's factor is the smaller of
+  // the technique's and theirs (shaders/render/contact_shadow.glsl).
   bool contact_shadows = false;
   float contact_shadow_length = 0.3f;
   float contact_shadow_thickness = 0.1f;

@@ -365,8 +365,10 @@ float shadow_factor(int i, vec3 world, vec3 normal, vec3 shading_normal, bool re
 // estimate the visibility of the same source, and each misses occluders
 // the other sees (the march: those off screen, hidden or beyond its
 // length; the map: those under its bias); where both see one, a product
-// would count it twice and darken a penumbra below either estimate.
-float with_contact_shadow(float lit, int i, ivec2 pixel, vec3 start) {
+// would count it twice and darken a penumbra below either estimate. n is
+// the shading normal, whose horizon weighs the source (see
+// contact_visible_source()).
+float with_contact_shadow(float lit, int i, ivec2 pixel, vec3 start, vec3 n) {
   if (frame.contact_shadows == 0 || lit <= 0.0) return lit;
   GpuLight light = lights[i];
   // The source's angular radius as source_above_horizon() takes it, but a
@@ -374,13 +376,13 @@ float with_contact_shadow(float lit, int i, ivec2 pixel, vec3 start) {
   float width = shadow_views[light.views.x].source_width;
   if (int(light.position_type.w) == LIGHT_DIRECTIONAL) {
     vec3 to_sun = -light.direction_cos_outer.xyz;
-    return min(lit, contact_lit_fraction(pixel, start, to_sun, 1e30, 0.5 * width));
+    return min(lit, contact_lit_fraction(pixel, start, n, to_sun, 1e30, 0.5 * width));
   }
   vec3 d = light.position_type.xyz - start;
   float reach = length(d);
   if (!(reach > 0.0)) return lit;
   float radius = int(light.position_type.w) == LIGHT_POINT ? 0.5 * width : 0.56418958 * width;
-  return min(lit, contact_lit_fraction(pixel, start, d / reach, reach, radius / reach));
+  return min(lit, contact_lit_fraction(pixel, start, n, d / reach, reach, radius / reach));
 }
 
 // Distinct colours for the shadow views of one light (the cascades view).
@@ -591,7 +593,7 @@ void main() {
     vec3 start = lifted_point(lights[i], world, n, facet);
     float lit = shadow_factor(i, start, facet_normal, n, view == VIEW_SHADOW_REFERENCE, rotation,
                               footprint);
-    if (view != VIEW_SHADOW_REFERENCE) lit = with_contact_shadow(lit, i, pixel, start);
+    if (view != VIEW_SHADOW_REFERENCE) lit = with_contact_shadow(lit, i, pixel, start, n);
     if (shadow_view) {
       float weight = accumulate_source_weight(lights[i], world, n);
       out_color = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)

@@ -15,7 +15,10 @@ flat in uint v_material;
 
 layout(location = 0) out vec4 out_normal;    // xyz: world normal, w: shininess (0 = background)
 layout(location = 1) out vec4 out_albedo;    // rgb: albedo (stored sRGB-encoded)
-layout(location = 2) out vec4 out_specular;  // rgb: specular colour
+// rgb: specular colour, a: 1 on an opaque surface, 0 on a cut-out (its
+// depth holds the mask's coverage at the pixel's centre only: the
+// contact shadows' march takes no occluder from it)
+layout(location = 2) out vec4 out_specular;
 layout(location = 3) out vec4 out_facet;     // xyz: triangle normal, w: rise to the smooth surface
 
 void main() {
@@ -28,7 +31,7 @@ void main() {
   if (!gl_FrontFacing) n = -n;  // double-sided surfaces seen from behind
   out_normal = vec4(n, m.specular_shininess.w);
   out_albedo = vec4(base.rgb, 1.0);
-  out_specular = vec4(m.specular_shininess.rgb, 1.0);
+  out_specular = vec4(m.specular_shininess.rgb, m.uv_row0.w < 0.0 ? 1.0 : 0.0);
   SmoothSurface surface = smooth_surface(v_world, n);
   out_facet = vec4(surface.facet_normal, surface.height);
 }
