@@ -63,6 +63,9 @@
 // are read as texels: up to 16 x 16 gathers. Default scene, source 1.5,
 // 4096^2 maps (cells of 8 texels), 640x360: RMSE 0.0148 at 2, 0.0117 at 3.
 #define BACKPROJECTION_REFINE_LEVEL 3
+// How far apart, in source widths, the projections of a 2 x 2 of cells'
+// nearest and farthest depths may lie for it to be read as one patch.
+const float BACKPROJECTION_FLAT = 1.0 / 64.0;
 
 // Occluders below the receiver's tangent plane cannot block the light that
 // reaches it (the rays that count lie above the plane), within this sine
@@ -372,6 +375,44 @@ float backprojection_lit_fraction(GpuShadowView view, BackprojectionReceiver r, 
   return nearest_lit;
 }
 
+// Hides the source points behind cell c of the hierarchy's level level - 1
+// (2^level texels wide, `cells` of them): a cell whose depths all lie in
+// front is a patch at its nearest depth; a cell the receiver's plane cuts
+// is one where its centre texel blocks, at that texel's depth.
+void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
+                               GpuShadowView view, BackprojectionReceiver r, int level,
+                               ivec2 cells, ivec2 c, inout uvec4 low, inout uvec4 high) {
+  ivec2 size = textureSize(depth_maps, 0).xy;
+  vec2 a0 = vec2(c << level) - r.center;
+  vec2 a1 = vec2(mix(ivec2(c + 1) << level, size, equal(c, cells - 1))) - r.center;
+  vec2 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rg;
+  BACKPROJECTION_FETCHED(1);
+  vec2 mid = 0.5 * (a0 + a1);
+  float plane = r.z + dot(r.gradient, mid);
+  if (m.x >= plane) return;
+  float occluder = m.x;
+  if (m.y >= plane) {
+    ivec2 t = min(ivec2(floor(r.center + mid)), size - 1);
+    occluder = texelFetch(depth_maps, ivec3(t, layer), 0).r;
+    BACKPROJECTION_FETCHED(1);
+  }
+  float extent = backprojection_extent(view, r, mid, occluder);
+  if (extent <= 0.0 || !backprojection_above_plane(view, r, mid, occluder)) return;
+  // The neighbours' nearest depths, at their centres as if as wide.
+  float right = 0.0, up = 0.0;
+  if (c.x + 1 < cells.x) {
+    right = backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y),
+                                  texelFetch(hierarchy, ivec3(c.x + 1, c.y, layer), level - 1).r);
+    BACKPROJECTION_FETCHED(1);
+  }
+  if (c.y + 1 < cells.y) {
+    up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)),
+                               texelFetch(hierarchy, ivec3(c.x, c.y + 1, layer), level - 1).r);
+    BACKPROJECTION_FETCHED(1);
+  }
+  backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
+}
+
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
 // gradient `gradient` per texel, its triangle's world normal `normal`,
 // which keeps its own surface's patches out, and the shading normal
@@ -455,41 +496,71 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     }
     ivec2 lo = min(max(first >> level, ivec2(1)) - 1, cells - 1);
     ivec2 hi = min(last >> level, cells - 1);
-    for (int cy = lo.y; cy <= hi.y; ++cy) {
-      for (int cx = lo.x; cx <= hi.x; ++cx) {
-        ivec2 c = ivec2(cx, cy);
-        if (level <= BACKPROJECTION_REFINE_LEVEL && all(greaterThanEqual(c, near_cells)) &&
-            all(lessThanEqual(c, near_cells + 1))) {
-          continue;  // read as texels above
+    // The cells two by two, from the hierarchy's next level (the last
+    // one of a row or column takes an odd remainder): a 2 x 2 behind the
+    // receiver's plane hides nothing; one wholly in front whose depths
+    // project within BACKPROJECTION_FLAT of a source width of each other
+    // is one patch (the inside of a blocker: its cells' patches would tile
+    // the same rectangle); the others are read cell by cell.
+    int levels = backprojection_levels(hierarchy);
+    ivec2 parents = backprojection_cells(hierarchy, min(level, levels - 1));
+    int merge_level = level < levels ? 1 : 0;  // 0: no coarser level, one cell each
+    ivec2 plo = lo >> merge_level;
+    ivec2 phi = merge_level == 1 ? min(hi >> 1, parents - 1) : hi;
+    for (int py = plo.y; py <= phi.y; ++py) {
+      for (int px = plo.x; px <= phi.x; ++px) {
+        ivec2 p = ivec2(px, py);
+        ivec2 c0 = max(p << merge_level, lo);
+        ivec2 c1 = (p << merge_level) + merge_level;
+        if (merge_level == 1) c1 = mix(c1, cells - 1, equal(p, parents - 1));
+        c1 = min(c1, hi);
+        vec2 a0 = vec2(c0 << level) - r.center;
+        vec2 a1 = vec2(mix(ivec2(c1 + 1) << level, size, equal(c1, cells - 1))) - r.center;
+        // The receiver's plane at the nearest of the cells' centres.
+        vec2 m0 = a0 + 0.5 * float(1 << level);
+        vec2 m1 = max(a1 - 0.5 * float(1 << level), m0);
+        float plane = z + dot(gradient, 0.5 * (m0 + m1)) - dot(abs(gradient), 0.5 * (m1 - m0));
+        vec2 b = vec2(-1.0, 2.0);  // no coarser level: neither behind nor in front
+        if (merge_level == 1) b = texelFetch(hierarchy, ivec3(p, layer), level).rg;
+        BACKPROJECTION_FETCHED(merge_level);
+        if (b.x >= plane) continue;
+        bool near = level <= BACKPROJECTION_REFINE_LEVEL &&
+                    all(lessThanEqual(c0, near_cells + 1)) && all(greaterThanEqual(c1, near_cells));
+        if (!near && b.y < plane) {
+          vec2 mid = 0.5 * (a0 + a1);
+          float extent = backprojection_extent(view, r, mid, b.x);
+          float far_extent = backprojection_extent(view, r, mid, b.y);
+          float reach = max(max(abs(a0.x), abs(a1.x)), max(abs(a0.y), abs(a1.y)));
+          if (extent > 0.0 && far_extent > 0.0 &&
+              reach * (far_extent - extent) <= BACKPROJECTION_FLAT) {
+            if (!backprojection_above_plane(view, r, mid, b.x)) continue;
+            float right = 0.0, up = 0.0;
+            if (px + 1 < parents.x) {
+              float depth = texelFetch(hierarchy, ivec3(px + 1, py, layer), level).r;
+              right =
+                  backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y), depth);
+              BACKPROJECTION_FETCHED(1);
+            }
+            if (py + 1 < parents.y) {
+              up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)),
+                                         texelFetch(hierarchy, ivec3(px, py + 1, layer), level).r);
+              BACKPROJECTION_FETCHED(1);
+            }
+            backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
+            continue;
+          }
         }
-        vec2 a0 = vec2(c << level) - r.center;
-        vec2 a1 = vec2(mix(ivec2(c + 1) << level, size, equal(c, cells - 1))) - r.center;
-        vec2 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rg;
-        BACKPROJECTION_FETCHED(1);
-        vec2 mid = 0.5 * (a0 + a1);
-        float plane = z + dot(gradient, mid);
-        if (m.x >= plane) continue;
-        float occluder = m.x;
-        if (m.y >= plane) {
-          ivec2 t = min(ivec2(floor(r.center + mid)), size - 1);
-          occluder = texelFetch(depth_maps, ivec3(t, layer), 0).r;
-          BACKPROJECTION_FETCHED(1);
+        for (int cy = c0.y; cy <= c1.y; ++cy) {
+          for (int cx = c0.x; cx <= c1.x; ++cx) {
+            ivec2 c = ivec2(cx, cy);
+            if (level <= BACKPROJECTION_REFINE_LEVEL && all(greaterThanEqual(c, near_cells)) &&
+                all(lessThanEqual(c, near_cells + 1))) {
+              continue;  // read as texels above
+            }
+            backprojection_cell_patch(depth_maps, hierarchy, layer, view, r, level, cells, c, low,
+                                      high);
+          }
         }
-        float extent = backprojection_extent(view, r, mid, occluder);
-        if (extent <= 0.0 || !backprojection_above_plane(view, r, mid, occluder)) continue;
-        // The neighbours' nearest depths, at their centres as if as wide.
-        float right = 0.0, up = 0.0;
-        if (cx + 1 < cells.x) {
-          right = backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y),
-                                        texelFetch(hierarchy, ivec3(cx + 1, cy, layer), level - 1).r);
-          BACKPROJECTION_FETCHED(1);
-        }
-        if (cy + 1 < cells.y) {
-          up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)),
-                                     texelFetch(hierarchy, ivec3(cx, cy + 1, layer), level - 1).r);
-          BACKPROJECTION_FETCHED(1);
-        }
-        backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
       }
     }
   }
