@@ -63,6 +63,9 @@
 // are read as texels: up to 16 x 16 gathers. Default scene, source 1.5,
 // 4096^2 maps (cells of 8 texels), 640x360: RMSE 0.0148 at 2, 0.0117 at 3.
 #define BACKPROJECTION_REFINE_LEVEL 3
+// How far apart, in source widths, the projections of a 2 x 2 of cells'
+// nearest and farthest depths may lie for it to be read as one patch.
+const float BACKPROJECTION_FLAT = 1.0 / 64.0;
 
 // Occluders below the receiver's tangent plane cannot block the light that
 // reaches it (the rays that count lie above the plane), within this sine
@@ -162,6 +165,7 @@ struct BackprojectionReceiver {
   vec3 n;               // view-space normal of the receiver's triangle
   vec3 shading_n;       // view-space shading normal: the horizon the source is weighed against
   float receiver;       // 1 / d_r (perspective) or d_r (orthographic): backprojection_k()
+  float scale;          // source widths per texel and unit of k: depth_range.z / source_width
   vec2 shift;           // the source grid's shift, in points
 };
 
@@ -170,35 +174,47 @@ vec2 backprojection_tan(GpuShadowView view, vec2 texels) {
   return (texels - 0.5 * vec2(view.depth_range.w)) * view.depth_range.z;
 }
 
-// Hides the source points behind the patch over map offsets [a0, a1]
-// (texels from the receiver's lookup) at z-bar `occluder`, reaching to
-// the blocking neighbours' (z-bar `right` and `up`, or 2 for none)
-// projections of their shared edges.
-void backprojection_patch(GpuShadowView view, BackprojectionReceiver r, vec2 a0, vec2 a1,
-                          float occluder, float right, float up, inout uvec4 low,
-                          inout uvec4 high) {
-  vec2 mid = 0.5 * (a0 + a1);
-  if (occluder >= r.z + dot(r.gradient, mid)) return;  // behind the receiver's plane
-  float texel = view.depth_range.z;  // tangent (perspective) or world (orthographic) units
+// How far on the source, in source widths per texel of map offset, a
+// patch at z-bar `occluder` whose centre lies `mid` texels from the
+// receiver's lookup projects: scale / k (backprojection_k()), so that its
+// edge at offset a hides the source up to a times this. 0 where it hides
+// nothing: at or behind the receiver's plane, or k <= 0. With k = 1/d -
+// 1/d_r, scale / k = scale d / (1 - d / d_r): one division a patch.
+float backprojection_extent(GpuShadowView view, BackprojectionReceiver r, vec2 mid,
+                            float occluder) {
+  if (occluder >= r.z + dot(r.gradient, mid)) return 0.0;
+  float d = backprojection_depth(view, occluder, backprojection_tan(view, r.center + mid));
+  float k_times_d = view.perspective != 0 ? 1.0 - d * r.receiver : r.receiver - d;
+  return k_times_d > 0.0 ? r.scale * (view.perspective != 0 ? d : 1.0) / k_times_d : 0.0;
+}
+
+// Whether the patch at z-bar `occluder` centred `mid` texels from the
+// lookup lies above the receiver's tangent plane (within
+// BACKPROJECTION_PLANE_SLACK): one below it cannot block the light that
+// reaches the receiver. dot(t, n) > -slack |t|, squared.
+bool backprojection_above_plane(GpuShadowView view, BackprojectionReceiver r, vec2 mid,
+                                float occluder) {
   vec2 u = backprojection_tan(view, r.center + mid);
   float d = backprojection_depth(view, occluder, u);
-  float k = backprojection_k(view, d, r.receiver);
-  if (k <= 0.0) return;
   vec3 to_occluder =
-      (view.perspective != 0 ? vec3(u * d, -d) : vec3(r.p.xy + mid * texel, -d)) - r.p;
-  if (dot(to_occluder, r.n) <= -BACKPROJECTION_PLANE_SLACK * length(to_occluder)) return;
-  float scale = texel / view.source_width;  // source widths per texel and unit of k
-  vec2 lo = a0 * (scale / k), hi = a1 * (scale / k);
-  if (right < r.z + dot(r.gradient, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y))) {
-    vec2 u_right = backprojection_tan(view, r.center + vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y));
-    float k_right = backprojection_k(view, backprojection_depth(view, right, u_right), r.receiver);
-    if (k_right > 0.0) hi.x = max(hi.x, a1.x * scale / k_right);
-  }
-  if (up < r.z + dot(r.gradient, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)))) {
-    vec2 u_up = backprojection_tan(view, r.center + vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)));
-    float k_up = backprojection_k(view, backprojection_depth(view, up, u_up), r.receiver);
-    if (k_up > 0.0) hi.y = max(hi.y, a1.y * scale / k_up);
-  }
+      (view.perspective != 0 ? vec3(u * d, -d) : vec3(r.p.xy + mid * view.depth_range.z, -d)) -
+      r.p;
+  float along = dot(to_occluder, r.n);
+  return along > 0.0 || along * along < BACKPROJECTION_PLANE_SLACK *
+                                             BACKPROJECTION_PLANE_SLACK *
+                                             dot(to_occluder, to_occluder);
+}
+
+// Hides the source points behind the patch over map offsets [a0, a1]
+// (texels from the receiver's lookup) of extent `extent`
+// (backprojection_extent(), > 0), reaching to its blocking right and upper
+// neighbours' projections of their shared edges (their extents `right`
+// and `up`, 0 for none).
+void backprojection_hide_patch(BackprojectionReceiver r, vec2 a0, vec2 a1, float extent,
+                               float right, float up, inout uvec4 low, inout uvec4 high) {
+  vec2 lo = a0 * extent, hi = a1 * extent;
+  if (right > 0.0) hi.x = max(hi.x, a1.x * right);
+  if (up > 0.0) hi.y = max(hi.y, a1.y * up);
   uint c0 = backprojection_count_below(lo.x, r.shift.x);
   uint c1 = backprojection_count_below(hi.x, r.shift.x);
   uint r0 = backprojection_count_below(lo.y, r.shift.y);
@@ -206,21 +222,71 @@ void backprojection_patch(GpuShadowView view, BackprojectionReceiver r, vec2 a0,
   if (c0 < c1 && r0 < r1) backprojection_hide(low, high, c0, c1, r0, r1);
 }
 
-// Hides the source points behind the patches of texels [t0, t1] (each
-// reaching to its blocking right and upper neighbours). GATHER at a texel reads
-// it (w), its right (z) and upper (x) neighbours (textureGather at its
-// upper right corner; depth_map_hooks.glsl).
+// The extents (backprojection_extent()) of texels t and t + step at
+// z-bars `first` and `second`: 0 outside the map (`size` texels).
+vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, ivec2 t,
+                                 ivec2 step, float first, float second, ivec2 size) {
+  vec2 a = vec2(t) - r.center + 0.5;
+  return vec2(all(lessThan(t, size)) ? backprojection_extent(view, r, a, first) : 0.0,
+              all(lessThan(t + step, size))
+                  ? backprojection_extent(view, r, a + vec2(step), second)
+                  : 0.0);
+}
+
+// Hides the source points behind the patches of texels [t0, t1] (inside
+// the map; each reaching to its blocking right and upper neighbours), two
+// by two: GATHER reads a texel (w), its right (z), upper (x) and upper
+// right (y) neighbours (textureGather at its upper right corner;
+// depth_map_hooks.glsl). A 2 x 2 whose texels all lie behind the
+// receiver's plane hides nothing and is left after that one read; the
+// others read the column to their right and the row above them as well,
+// where their texels need them as neighbours.
 #define BACKPROJECTION_TEXEL_PATCHES_DEFINE(NAME, MAPS, TEXELS, GATHER)                         \
   void NAME(MAPS depth_maps, int layer, GpuShadowView view, BackprojectionReceiver r,           \
             ivec2 t0, ivec2 t1, inout uvec4 low, inout uvec4 high) {                            \
     ivec2 size = TEXELS(depth_maps, layer);                                                     \
-    for (int ty = t0.y; ty <= t1.y; ++ty) {                                                     \
-      for (int tx = t0.x; tx <= t1.x; ++tx) {                                                   \
-        vec4 g = GATHER(depth_maps, layer, ivec2(tx, ty));                                      \
+    for (int ty = t0.y; ty <= t1.y; ty += 2) {                                                  \
+      for (int tx = t0.x; tx <= t1.x; tx += 2) {                                                \
+        ivec2 t = ivec2(tx, ty);                                                                \
+        vec4 g = GATHER(depth_maps, layer, t);                                                  \
         BACKPROJECTION_FETCHED(1);                                                              \
-        vec2 a0 = vec2(tx, ty) - r.center;                                                      \
-        float right = tx + 1 < size.x ? g.z : 2.0, up = ty + 1 < size.y ? g.x : 2.0;            \
-        backprojection_patch(view, r, a0, a0 + 1.0, g.w, right, up, low, high);                 \
+        /* Lower row (x: left, y: right) and upper row. */                                      \
+        vec2 lower = backprojection_pair_extents(view, r, t, ivec2(1, 0), g.w, g.z, size);      \
+        vec2 upper = backprojection_pair_extents(view, r, t + ivec2(0, 1), ivec2(1, 0), g.x,    \
+                                                 g.y, size);                                    \
+        /* The region's own texels; those past t1 are only neighbours. */                       \
+        bvec2 second = lessThanEqual(t + 1, t1);                                                \
+        vec4 own = vec4(lower.x, second.x ? lower.y : 0.0, second.y ? upper.x : 0.0,            \
+                        all(second) ? upper.y : 0.0);                                           \
+        if (all(equal(own, vec4(0.0)))) continue;                                               \
+        vec2 right = vec2(0.0), above = vec2(0.0);                                              \
+        if (own.y > 0.0 || own.w > 0.0) {                                                       \
+          vec4 h = GATHER(depth_maps, layer, t + ivec2(2, 0));                                  \
+          BACKPROJECTION_FETCHED(1);                                                            \
+          right = backprojection_pair_extents(view, r, t + ivec2(2, 0), ivec2(0, 1), h.w, h.x,  \
+                                              size);                                            \
+        }                                                                                       \
+        if (own.z > 0.0 || own.w > 0.0) {                                                       \
+          vec4 h = GATHER(depth_maps, layer, t + ivec2(0, 2));                                  \
+          BACKPROJECTION_FETCHED(1);                                                            \
+          above = backprojection_pair_extents(view, r, t + ivec2(0, 2), ivec2(1, 0), h.w, h.z,  \
+                                              size);                                            \
+        }                                                                                       \
+        vec2 a = vec2(t) - r.center;                                                            \
+        if (own.x > 0.0 && backprojection_above_plane(view, r, a + 0.5, g.w)) {                 \
+          backprojection_hide_patch(r, a, a + 1.0, own.x, lower.y, upper.x, low, high);         \
+        }                                                                                       \
+        if (own.y > 0.0 && backprojection_above_plane(view, r, a + vec2(1.5, 0.5), g.z)) {      \
+          backprojection_hide_patch(r, a + vec2(1.0, 0.0), a + vec2(2.0, 1.0), own.y, right.x,  \
+                                    upper.y, low, high);                                        \
+        }                                                                                       \
+        if (own.z > 0.0 && backprojection_above_plane(view, r, a + vec2(0.5, 1.5), g.x)) {      \
+          backprojection_hide_patch(r, a + vec2(0.0, 1.0), a + vec2(1.0, 2.0), own.z, upper.y,  \
+                                    above.x, low, high);                                        \
+        }                                                                                       \
+        if (own.w > 0.0 && backprojection_above_plane(view, r, a + 1.5, g.y)) {                 \
+          backprojection_hide_patch(r, a + 1.0, a + 2.0, own.w, right.y, above.y, low, high);   \
+        }                                                                                       \
       }                                                                                         \
     }                                                                                           \
   }
@@ -244,6 +310,7 @@ BackprojectionReceiver backprojection_receiver(GpuShadowView view, ShadowLookup 
   r.shading_n = normalize(mat3(view.view) * shading_normal);
   float d_r = -r.p.z;
   r.receiver = view.perspective != 0 ? 1.0 / d_r : d_r;
+  r.scale = view.depth_range.z / view.source_width;
   r.shift = accumulate_hash(pixel, 977).xy;
   return r;
 }
@@ -252,14 +319,40 @@ BackprojectionReceiver backprojection_receiver(GpuShadowView view, ShadowLookup 
 // visible. `disc`: the source is a disc (a point light's sphere, the sun).
 float backprojection_lit_fraction(GpuShadowView view, BackprojectionReceiver r, uvec4 low,
                                   uvec4 high, bool disc) {
+  // Nothing hidden is lit and everything hidden is dark, whatever the
+  // weights (no need to weigh the 256 points).
+  if (all(equal(low | high, uvec4(0u)))) return 1.0;
+  if (all(equal(low & high, uvec4(0xffffffffu)))) return 0.0;
   float width = view.source_width;
   // Each point weighs cos theta_receiver dw, dw its solid angle: for a
   // point on the source's plane, facing the view's -z, (d_r / |t|) dA /
   // |t|^2 (d_r cancels in the ratio); for a direction (x, y, 1) of the
-  // sun's, dA / |t|^3. Both are (n . t) / |t|^4. A disc keeps the points
-  // inside its circle.
-  float total = 0.0, lit = 0.0;
+  // sun's, dA / |t|^3. Both are (n . t) / |t|^4, t = (x, y, 0) - p with p
+  // the receiver (perspective) or (0, 0, -1): |t|^2 and n . t are a
+  // column's term plus a row's. A disc keeps the points inside its circle.
+  vec3 p = view.perspective != 0 ? r.p : vec3(0.0, 0.0, -1.0);
+  vec3 n = r.shading_n;
   float radius2 = disc ? 0.25 * width * width : 1.0e30;
+  float step = width / float(BACKPROJECTION_SIDE);
+  float x0 = (r.shift.x / float(BACKPROJECTION_SIDE) - 0.5) * width;
+  float total = 0.0, lit = 0.0;
+  for (int j = 0; j < BACKPROJECTION_SIDE; ++j) {
+    uint word = j < 8 ? low[j >> 1] : high[(j - 8) >> 1];
+    uint row = word >> uint(16 * (j & 1));
+    float y = ((float(j) + r.shift.y) / float(BACKPROJECTION_SIDE) - 0.5) * width;
+    float row_d2 = (y - p.y) * (y - p.y) + p.z * p.z;
+    float row_along = n.y * (y - p.y) - n.z * p.z;
+    float row_radius2 = radius2 - y * y;
+    for (int i = 0; i < BACKPROJECTION_SIDE; ++i) {
+      float x = x0 + float(i) * step;
+      float tx = x - p.x;
+      float d2 = tx * tx + row_d2;
+      float weight = x * x > row_radius2 ? 0.0 : max(n.x * tx + row_along, 0.0) / (d2 * d2);
+      total += weight;
+      lit += ((row >> uint(i)) & 1u) == 0u ? weight : 0.0;
+    }
+  }
+  if (total > 0.0) return lit / total;
   // Where the horizon leaves a sliver of the source that no point of the
   // grid reaches, the point nearest above it stands for the sliver (the
   // reference judges such a pixel by its own points in the sliver).
@@ -269,22 +362,55 @@ float backprojection_lit_fraction(GpuShadowView view, BackprojectionReceiver r, 
     uint row = word >> uint(16 * (j & 1));
     float y = ((float(j) + r.shift.y) / float(BACKPROJECTION_SIDE) - 0.5) * width;
     for (int i = 0; i < BACKPROJECTION_SIDE; ++i) {
-      float x = ((float(i) + r.shift.x) / float(BACKPROJECTION_SIDE) - 0.5) * width;
+      float x = x0 + float(i) * step;
       if (x * x + y * y > radius2) continue;
-      vec3 t = view.perspective != 0 ? vec3(x, y, 0.0) - r.p : vec3(x, y, 1.0);
-      float d2 = dot(t, t);
-      float weight = max(dot(r.shading_n, t), 0.0) / (d2 * d2);
-      float point_lit = float(((row >> uint(i)) & 1u) == 0u);
-      total += weight;
-      lit += point_lit * weight;
-      float cos_receiver = dot(r.shading_n, t) * inversesqrt(d2);
+      vec3 t = vec3(x, y, 0.0) - p;
+      float cos_receiver = dot(n, t) * inversesqrt(dot(t, t));
       if (cos_receiver > nearest_cos) {
         nearest_cos = cos_receiver;
-        nearest_lit = point_lit;
+        nearest_lit = float(((row >> uint(i)) & 1u) == 0u);
       }
     }
   }
-  return total > 0.0 ? lit / total : nearest_lit;
+  return nearest_lit;
+}
+
+// Hides the source points behind cell c of the hierarchy's level level - 1
+// (2^level texels wide, `cells` of them): a cell whose depths all lie in
+// front is a patch at its nearest depth; a cell the receiver's plane cuts
+// is one where its centre texel blocks, at that texel's depth.
+void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
+                               GpuShadowView view, BackprojectionReceiver r, int level,
+                               ivec2 cells, ivec2 c, inout uvec4 low, inout uvec4 high) {
+  ivec2 size = textureSize(depth_maps, 0).xy;
+  vec2 a0 = vec2(c << level) - r.center;
+  vec2 a1 = vec2(mix(ivec2(c + 1) << level, size, equal(c, cells - 1))) - r.center;
+  vec2 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rg;
+  BACKPROJECTION_FETCHED(1);
+  vec2 mid = 0.5 * (a0 + a1);
+  float plane = r.z + dot(r.gradient, mid);
+  if (m.x >= plane) return;
+  float occluder = m.x;
+  if (m.y >= plane) {
+    ivec2 t = min(ivec2(floor(r.center + mid)), size - 1);
+    occluder = texelFetch(depth_maps, ivec3(t, layer), 0).r;
+    BACKPROJECTION_FETCHED(1);
+  }
+  float extent = backprojection_extent(view, r, mid, occluder);
+  if (extent <= 0.0 || !backprojection_above_plane(view, r, mid, occluder)) return;
+  // The neighbours' nearest depths, at their centres as if as wide.
+  float right = 0.0, up = 0.0;
+  if (c.x + 1 < cells.x) {
+    right = backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y),
+                                  texelFetch(hierarchy, ivec3(c.x + 1, c.y, layer), level - 1).r);
+    BACKPROJECTION_FETCHED(1);
+  }
+  if (c.y + 1 < cells.y) {
+    up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)),
+                               texelFetch(hierarchy, ivec3(c.x, c.y + 1, layer), level - 1).r);
+    BACKPROJECTION_FETCHED(1);
+  }
+  backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
 }
 
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
@@ -370,29 +496,71 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     }
     ivec2 lo = min(max(first >> level, ivec2(1)) - 1, cells - 1);
     ivec2 hi = min(last >> level, cells - 1);
-    for (int cy = lo.y; cy <= hi.y; ++cy) {
-      for (int cx = lo.x; cx <= hi.x; ++cx) {
-        ivec2 c = ivec2(cx, cy);
-        vec2 a0 = vec2(c << level) - r.center;
-        vec2 a1 = vec2(mix(ivec2(c + 1) << level, size, equal(c, cells - 1))) - r.center;
-        vec2 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rg;
-        float right = cx + 1 < cells.x ? texelFetch(hierarchy, ivec3(cx + 1, cy, layer), level - 1).r : 2.0;
-        float up = cy + 1 < cells.y ? texelFetch(hierarchy, ivec3(cx, cy + 1, layer), level - 1).r : 2.0;
-        BACKPROJECTION_FETCHED(3);
-        vec2 mid = 0.5 * (a0 + a1);
-        float plane = z + dot(gradient, mid);
-        if (m.x >= plane) continue;
-        float occluder = m.x;
-        if (level <= BACKPROJECTION_REFINE_LEVEL && all(greaterThanEqual(c, near_cells)) &&
-            all(lessThanEqual(c, near_cells + 1))) {
-          continue;
+    // The cells two by two, from the hierarchy's next level (the last
+    // one of a row or column takes an odd remainder): a 2 x 2 behind the
+    // receiver's plane hides nothing; one wholly in front whose depths
+    // project within BACKPROJECTION_FLAT of a source width of each other
+    // is one patch (the inside of a blocker: its cells' patches would tile
+    // the same rectangle); the others are read cell by cell.
+    int levels = backprojection_levels(hierarchy);
+    ivec2 parents = backprojection_cells(hierarchy, min(level, levels - 1));
+    int merge_level = level < levels ? 1 : 0;  // 0: no coarser level, one cell each
+    ivec2 plo = lo >> merge_level;
+    ivec2 phi = merge_level == 1 ? min(hi >> 1, parents - 1) : hi;
+    for (int py = plo.y; py <= phi.y; ++py) {
+      for (int px = plo.x; px <= phi.x; ++px) {
+        ivec2 p = ivec2(px, py);
+        ivec2 c0 = max(p << merge_level, lo);
+        ivec2 c1 = (p << merge_level) + merge_level;
+        if (merge_level == 1) c1 = mix(c1, cells - 1, equal(p, parents - 1));
+        c1 = min(c1, hi);
+        vec2 a0 = vec2(c0 << level) - r.center;
+        vec2 a1 = vec2(mix(ivec2(c1 + 1) << level, size, equal(c1, cells - 1))) - r.center;
+        // The receiver's plane at the nearest of the cells' centres.
+        vec2 m0 = a0 + 0.5 * float(1 << level);
+        vec2 m1 = max(a1 - 0.5 * float(1 << level), m0);
+        float plane = z + dot(gradient, 0.5 * (m0 + m1)) - dot(abs(gradient), 0.5 * (m1 - m0));
+        vec2 b = vec2(-1.0, 2.0);  // no coarser level: neither behind nor in front
+        if (merge_level == 1) b = texelFetch(hierarchy, ivec3(p, layer), level).rg;
+        BACKPROJECTION_FETCHED(merge_level);
+        if (b.x >= plane) continue;
+        bool near = level <= BACKPROJECTION_REFINE_LEVEL &&
+                    all(lessThanEqual(c0, near_cells + 1)) && all(greaterThanEqual(c1, near_cells));
+        if (!near && b.y < plane) {
+          vec2 mid = 0.5 * (a0 + a1);
+          float extent = backprojection_extent(view, r, mid, b.x);
+          float far_extent = backprojection_extent(view, r, mid, b.y);
+          float reach = max(max(abs(a0.x), abs(a1.x)), max(abs(a0.y), abs(a1.y)));
+          if (extent > 0.0 && far_extent > 0.0 &&
+              reach * (far_extent - extent) <= BACKPROJECTION_FLAT) {
+            if (!backprojection_above_plane(view, r, mid, b.x)) continue;
+            float right = 0.0, up = 0.0;
+            if (px + 1 < parents.x) {
+              float depth = texelFetch(hierarchy, ivec3(px + 1, py, layer), level).r;
+              right =
+                  backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y), depth);
+              BACKPROJECTION_FETCHED(1);
+            }
+            if (py + 1 < parents.y) {
+              up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)),
+                                         texelFetch(hierarchy, ivec3(px, py + 1, layer), level).r);
+              BACKPROJECTION_FETCHED(1);
+            }
+            backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
+            continue;
+          }
         }
-        if (m.y >= plane) {
-          ivec2 t = min(ivec2(floor(r.center + mid)), size - 1);
-          occluder = texelFetch(depth_maps, ivec3(t, layer), 0).r;
-          BACKPROJECTION_FETCHED(1);
+        for (int cy = c0.y; cy <= c1.y; ++cy) {
+          for (int cx = c0.x; cx <= c1.x; ++cx) {
+            ivec2 c = ivec2(cx, cy);
+            if (level <= BACKPROJECTION_REFINE_LEVEL && all(greaterThanEqual(c, near_cells)) &&
+                all(lessThanEqual(c, near_cells + 1))) {
+              continue;  // read as texels above
+            }
+            backprojection_cell_patch(depth_maps, hierarchy, layer, view, r, level, cells, c, low,
+                                      high);
+          }
         }
-        backprojection_patch(view, r, a0, a1, occluder, right, up, low, high);
       }
     }
   }
