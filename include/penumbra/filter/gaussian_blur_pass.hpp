@@ -34,6 +34,7 @@ class GaussianBlurPass {
 
   // Valid after execute().
   [[nodiscard]] const gl::Texture& output() const { return output_; }
+
   // Per texel of a width x height map of `format`, one direction (axis 0:
   // along x): each workgroup reads its tile (shared/filter_tiles.h; the
   // tiles that overhang the map read clamped border texels) with `radius`
@@ -41,6 +42,7 @@ class GaussianBlurPass {
   // texels inside the map: about 1 + 2 radius / GAUSSIAN_TILE_ALONG reads
   // and one write.
   static TexelTraffic texel_traffic(GLenum format, int radius, int axis, int width, int height);
+
   // Frees the output and the intermediate (execute() makes them again),
   // keeping the programs.
   void release() {
@@ -52,6 +54,7 @@ class GaussianBlurPass {
   const gl::Program& program(GLenum format, int axis, int radius);
   void dispatch(const gl::Program& program, const gl::Texture& from, const gl::Texture& to,
                 int axis, std::span<const std::uint8_t> layers, bool all);
+
   std::map<std::tuple<GLenum, int, int>, gl::Program> programs_;
   bool shared_memory_ = true;
   gl::Texture intermediate_;
