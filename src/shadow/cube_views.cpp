@@ -73,9 +73,12 @@ float guard_band_texels(const ShadowMapSettings& settings, int map_size) {
     case Technique::Pcf:
       reach = 0.5f * settings.pcf_width;
       break;
+    // PCSS's blocker search and penumbra are capped at this width;
+    // backprojection's blockers' region is not, and past the band it sees
+    // only what the face itself holds.
     case Technique::Pcss:
-    case Technique::Backprojection:  // reads as PCSS in a point light's cube faces
-      reach = 0.5f * MAX_PCF_WIDTH;  // blocker search and penumbra are capped at this width
+    case Technique::Backprojection:
+      reach = 0.5f * MAX_PCF_WIDTH;
       break;
     case Technique::Vsm:
     case Technique::Esm:

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "gpu_fixture.hpp"
+#include "io/image.hpp"
 #include "reference/shadow_metrics.hpp"
 #include "reference/traced_reference.hpp"
 #include "render/renderer.hpp"
@@ -195,6 +196,50 @@ TEST_F(GpuTest, BackprojectionSoftensAPointLightsShadowOnItsCubeFaces) {
   const SoftErrors e = soft_errors(LightType::Point);
   EXPECT_GT(e.backprojection, 0.0) << "nothing compared";
   EXPECT_LT(e.backprojection, 0.8 * e.pcss);
+}
+
+// A slab 39 degrees off the point light's downward axis, its shadow seen
+// from above (backprojection_sphere_source() and the near cut of
+// shadow_backprojection()):
+// - a cube face's corners lie 1.5 times farther from the light than their
+//   axial depth, so the nearest distance the face stores is not its
+//   nearest axial depth. Cut at that distance taken as a depth, the
+//   blockers' region of a receiver in the umbra stopped short of the slab
+//   texels that hide the source's rim, and the umbra read about 0.3 lit;
+// - seen from a receiver that far off the axis, the sphere's image on the
+//   face's plane is an ellipse 1.3 times as long as the sphere is wide
+//   along the direction to the receiver; the disc that stood for it made
+//   the penumbrae too narrow.
+// Before: 131 of 8913 umbra pixels over 0.1, RMSE 0.0595; with the near
+// cut alone none, 0.0275; with both none, 0.0200.
+TEST_F(GpuTest, BackprojectionDarkensTheUmbraOfABlockerOffACubeFacesAxis) {
+  const Scene scene = testing::TestScene("slab off the axis")
+                          .ground(24.0f)
+                          .box({4.0f, 3.0f, 0.0f}, {2.5f, 0.1f, 2.5f})
+                          .camera({6.4f, 5.0f, 0.5f}, {6.4f, 0.0f, 0.0f}, 50.0f)
+                          .light(testing::point_light({0.0f, 8.0f, 0.0f}, 60.0f));
+  Renderer renderer(scene);
+  RenderSettings rs = testing::small_frame(160, 120);
+  ShadowSettings s;
+  s.technique = Technique::Backprojection;
+  s.map_size = 1024;
+  s.light_size = 0.6f;
+  const TracedReference reference = traced_reference(renderer, rs, s, 64, "");
+  renderer.render(rs, s);
+  const Image shadow = renderer.read_view();
+  long umbra = 0, lit_in_umbra = 0;
+  for (std::size_t i = 0; i < shadow.rgba.size(); i += 4) {
+    const bool judged = reference.image.rgba[i + 3] > 0.0f;
+    if (!judged || reference.image.rgba[i] > 0.01f) continue;  // outside the umbra
+    ++umbra;
+    if (shadow.rgba[i] > 0.1f) ++lit_in_umbra;
+  }
+  const ShadowMetrics m = compare_shadow(shadow, reference.image);
+  std::printf("slab off the axis: %ld of %ld umbra pixels over 0.1, RMSE %.4f\n", lit_in_umbra,
+              umbra, m.rmse);
+  ASSERT_GT(umbra, 2000) << "too little of the umbra in view";
+  EXPECT_EQ(lit_in_umbra, 0);
+  EXPECT_LT(m.rmse, 0.024);
 }
 
 TEST_F(GpuTest, BackprojectionSoftensTheSunsShadowOnItsCascades) {
