@@ -43,15 +43,32 @@
 // host allows four-moment techniques a narrower radius here
 // (max_fused_blur()).
 //
+// On a CPU rasterizer (llvmpipe) shared memory costs more than it saves,
+// as in filter/gaussian_blur.comp (a barrier switches coroutines, each
+// lane's shared load is a scalar one), and the tile is short there (32 KiB
+// give 8 rows at W = 16, so step 2 filters five rows for every one it
+// keeps). There (STAGE_IN_SHARED_MEMORY 0) steps 2 and 3 run as two
+// dispatches, PASS 1 and PASS 2, a band of rows of a layer at a time,
+// through a float map of the band and its apron, `rows` as a texture
+// (a few MB, not a layer's 64): every tap is read from memory, the same taps are summed in
+// the same order with the same weights, and the maps are the same floats
+// (FusedFilterStagingsGiveTheSameFloats). llvmpipe, msm, 2048^2, W = 16:
+// 5.1 s for the whole render with the tile, 1.0 s with two dispatches.
+//
 // Defines: REPRESENTATION, MSM_QUANTIZED, EVSM4_STAGE_WARPS (shadow/
 // representation.glsl), IMAGE_FORMAT, RADIUS (W, 1..16), GAUSSIAN_WEIGHTS
 // (the weights, comma-separated), TILE_Y (a multiple of GROUP_Y, chosen by the host so that the
-// shared memory fits the device's limit), SAMPLES (1, 2, 4, 8).
+// shared memory fits the device's limit), SAMPLES (1, 2, 4, 8),
+// STAGE_IN_SHARED_MEMORY (1: the tile, one pass; 0: PASS 1 or 2, and
+// ROWS_FORMAT, the float image format of the rows between them).
 #include "../shared/bindings.h"
 #include "../shadow/representation.glsl"
 
 #ifndef SAMPLES
 #define SAMPLES 1
+#endif
+#ifndef STAGE_IN_SHARED_MEMORY
+#define STAGE_IN_SHARED_MEMORY 1
 #endif
 
 #define TILE_X 32
@@ -61,13 +78,25 @@
 layout(local_size_x = TILE_X, local_size_y = GROUP_Y) in;
 
 #if SAMPLES > 1
-layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DMSArray depth_map;
 #define STAGED_TYPE REPRESENTATION_TYPE
 #else
-layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray depth_map;
 #define STAGED_TYPE STAGE_TYPE
 #endif
+#if STAGE_IN_SHARED_MEMORY || PASS == 1
+#if SAMPLES > 1
+layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DMSArray depth_map;
+#else
+layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray depth_map;
+#endif
+#else
+// PASS 2: step 2's rows of the layer being filtered.
+layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray rows_map;
+#endif
+#if !STAGE_IN_SHARED_MEMORY && PASS == 1
+layout(ROWS_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2DArray rows_image;
+#else
 layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2DArray target;
+#endif
 // The 2 RADIUS + 1 weights, summing to 1, as compile-time constants (printed
 // exactly by the host): the tap loops unroll with them folded in, and the
 // symmetric pairs share one multiply.
@@ -77,13 +106,21 @@ layout(location = 1) uniform float u_evsm_positive;
 layout(location = 2) uniform float u_evsm_negative;
 // The first layer of the run this dispatch filters (filter/layer_runs.hpp).
 layout(location = 3) uniform int u_first_layer;
+#if !STAGE_IN_SHARED_MEMORY
+// The direct passes filter a layer in bands of rows: the texel rows this
+// dispatch computes, [x, y), and the texel row that the rows' first holds.
+layout(location = 4) uniform ivec3 u_rows;
+#endif
 
+#if STAGE_IN_SHARED_MEMORY
 #define SPAN_X (TILE_X + 2 * RADIUS)
 #define SPAN_Y (TILE_Y + 2 * RADIUS)
 #define STAGED_STRIDE (SPAN_X + 1 - SPAN_X % 2)  // odd: see above
 shared STAGED_TYPE staged[SPAN_Y * STAGED_STRIDE];
 shared REPRESENTATION_TYPE rows[SPAN_Y * TILE_X];
+#endif
 
+#if STAGE_IN_SHARED_MEMORY || PASS == 1
 // What step 1 keeps of texel p: its stage value, or with several samples
 // the mean of their expanded representations.
 STAGED_TYPE staged_texel(ivec3 p, RepresentationConstants constants) {
@@ -108,6 +145,9 @@ REPRESENTATION_TYPE staged_expand(STAGED_TYPE s, RepresentationConstants constan
 #endif
 }
 
+#endif
+
+#if STAGE_IN_SHARED_MEMORY
 void main() {
   const RepresentationConstants constants =
       RepresentationConstants(u_esm_c, u_evsm_positive, u_evsm_negative);
@@ -161,3 +201,46 @@ void main() {
     if (all(lessThan(p, size))) imageStore(target, ivec3(p, layer), representation_store(sums[r]));
   }
 }
+#elif PASS == 1
+vec4 as_vec4(float m) { return vec4(m, 0.0, 0.0, 0.0); }
+vec4 as_vec4(vec2 m) { return vec4(m, 0.0, 0.0); }
+vec4 as_vec4(vec4 m) { return m; }
+
+// Step 2 for one texel of layer u_first_layer: its row's taps, from the
+// depth map, into the rows (as REPRESENTATION_TYPE floats).
+void main() {
+  const RepresentationConstants constants =
+      RepresentationConstants(u_esm_c, u_evsm_positive, u_evsm_negative);
+#if SAMPLES > 1
+  const ivec2 size = textureSize(depth_map).xy;
+#else
+  const ivec2 size = textureSize(depth_map, 0).xy;
+#endif
+  const ivec2 p = ivec2(gl_GlobalInvocationID.x, u_rows.x + int(gl_GlobalInvocationID.y));
+  if (p.x >= size.x || p.y >= u_rows.y) return;
+  const int layer = u_first_layer;
+  REPRESENTATION_TYPE sum =
+      weights[RADIUS] * staged_expand(staged_texel(ivec3(p, layer), constants), constants);
+  for (int k = 1; k <= RADIUS; ++k) {
+    const ivec3 left = ivec3(max(p.x - k, 0), p.y, layer);
+    const ivec3 right = ivec3(min(p.x + k, size.x - 1), p.y, layer);
+    sum += weights[RADIUS + k] * (staged_expand(staged_texel(left, constants), constants) +
+                                  staged_expand(staged_texel(right, constants), constants));
+  }
+  imageStore(rows_image, ivec3(p.x, p.y - u_rows.z, 0), as_vec4(sum));
+}
+#else
+// Step 3 for one texel of layer u_first_layer: its column's taps of the
+// rows, in the tile's order (k = 0 .. 2 RADIUS, from 0).
+void main() {
+  const ivec2 size = imageSize(target).xy;
+  const ivec2 p = ivec2(gl_GlobalInvocationID.x, u_rows.x + int(gl_GlobalInvocationID.y));
+  if (p.x >= size.x || p.y >= u_rows.y) return;
+  REPRESENTATION_TYPE sum = REPRESENTATION_TYPE(0.0);
+  for (int k = 0; k <= 2 * RADIUS; ++k) {
+    const int y = clamp(p.y + k - RADIUS, 0, size.y - 1) - u_rows.z;
+    sum += weights[k] * REPRESENTATION_TYPE(texelFetch(rows_map, ivec3(p.x, y, 0), 0));
+  }
+  imageStore(target, ivec3(p, u_first_layer), representation_store(sum));
+}
+#endif

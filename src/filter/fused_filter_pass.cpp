@@ -1,5 +1,6 @@
 #include "penumbra/filter/fused_filter_pass.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -14,7 +15,25 @@ namespace penumbra {
 
 namespace {
 
-constexpr int kTileX = 32;  // TILE_X of fused_filter.comp
+constexpr int kTileX = 32;      // TILE_X of fused_filter.comp
+constexpr int kDirectRows = 8;  // GROUP_Y: the direct passes' workgroups are 32 x 8 texels
+// The direct passes' band of rows: its rows and apron of floats take a few
+// MB (2048 wide, msm, W = 16: 9 MB), and the apron adds 2 W / 256 to the
+// horizontal pass's work.
+constexpr int kDirectBandRows = 256;
+
+// The float format of the direct staging's rows for a representation of
+// `format`: its channels, unrounded (the tile's rows are floats).
+GLenum rows_format(GLenum format) {
+  switch (channel_count(format)) {
+    case 1:
+      return GL_R32F;
+    case 2:
+      return GL_RG32F;
+    default:
+      return GL_RGBA32F;
+  }
+}
 
 GLuint groups(int size, int tile) {
   return static_cast<GLuint>((size + tile - 1) / tile);
@@ -22,7 +41,8 @@ GLuint groups(int size, int tile) {
 
 }  // namespace
 
-FusedFilterPass::FusedFilterPass() {
+FusedFilterPass::FusedFilterPass(FilterStaging staging)
+    : shared_memory_(stages_in_shared_memory(staging)) {
   glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared_bytes_);
 }
 
@@ -57,6 +77,30 @@ TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width
           1.0 * bytes_per_texel(format)};
 }
 
+const gl::Program& FusedFilterPass::program(const ProgramKey& key) {
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return it->second;
+  const auto [technique, quantized, radius, rows, samples, pass] = key;
+  const GLenum format = representation_format(technique);
+  // Several samples stage the mean of their moments, warps included; the
+  // direct passes stage nothing.
+  const bool stage_warps = technique == Technique::Evsm4 && samples == 1 && pass == 0 &&
+                           stages_evsm4_warps(radius, shared_bytes_);
+  gl::Defines defines = {{"REPRESENTATION", std::to_string(technique_define(technique))},
+                         {"MSM_QUANTIZED", quantized ? "1" : "0"},
+                         {"IMAGE_FORMAT", image_format_qualifier(format)},
+                         {"RADIUS", std::to_string(radius)},
+                         {"TILE_Y", std::to_string(rows)},
+                         {"EVSM4_STAGE_WARPS", stage_warps ? "1" : "0"},
+                         {"GAUSSIAN_WEIGHTS", gaussian_weight_list(radius)},
+                         {"SAMPLES", std::to_string(samples)},
+                         {"STAGE_IN_SHARED_MEMORY", pass == 0 ? "1" : "0"},
+                         {"PASS", std::to_string(pass)},
+                         {"ROWS_FORMAT", image_format_qualifier(rows_format(format))}};
+  return programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines))
+      .first->second;
+}
+
 void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSettings& settings,
                               std::span<const std::uint8_t> layers) {
   const int radius = settings.blur;
@@ -66,42 +110,67 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
   const Technique technique = settings.technique;
   const GLenum format = representation_format(technique);
   const int samples = depth_maps.samples();
-  const int rows =
-      tile_rows(radius, channel_count(format), shared_bytes_, staged_channels(format, samples));
-  if (rows == 0) throw RuntimeError("the fused filter's tile does not fit in shared memory");
   const bool quantized = uses_quantized_moments(settings);
-  // Several samples stage the mean of their moments, warps included.
-  const bool stage_warps =
-      technique == Technique::Evsm4 && samples == 1 && stages_evsm4_warps(radius, shared_bytes_);
-  const auto key = std::make_tuple(technique, quantized, radius, rows, samples);
-  auto it = programs_.find(key);
-  if (it == programs_.end()) {
-    gl::Defines defines = {{"REPRESENTATION", std::to_string(technique_define(technique))},
-                           {"MSM_QUANTIZED", quantized ? "1" : "0"},
-                           {"IMAGE_FORMAT", image_format_qualifier(format)},
-                           {"RADIUS", std::to_string(radius)},
-                           {"TILE_Y", std::to_string(rows)},
-                           {"EVSM4_STAGE_WARPS", stage_warps ? "1" : "0"},
-                           {"GAUSSIAN_WEIGHTS", gaussian_weight_list(radius)},
-                           {"SAMPLES", std::to_string(samples)}};
-    it = programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines)).first;
-  }
+  const int rows = shared_memory_ ? tile_rows(radius, channel_count(format), shared_bytes_,
+                                              staged_channels(format, samples))
+                                  : kDirectRows;
+  if (rows == 0) throw RuntimeError("the fused filter's tile does not fit in shared memory");
   const bool all = gl::ensure_texture_array(
       output_, format, depth_maps.width(), depth_maps.height(), depth_maps.layers(),
       "fused filtered shadow maps",
       filtered_map_levels(settings, depth_maps.width(), depth_maps.height()));
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve+filter (fused)");
-  it->second.use();
-  set_representation_constants(it->second.id(), settings);
-  glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
-  glBindSampler(UNIT_COMPUTE_INPUT, 0);
-  glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-  for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
-    glProgramUniform1i(it->second.id(), 3, first);
-    glDispatchCompute(groups(output_.width(), kTileX), groups(output_.height(), rows),
-                      static_cast<GLuint>(count));
-  });
+  const GLuint groups_x = groups(output_.width(), kTileX);
+  if (shared_memory_) {
+    const GLuint groups_y = groups(output_.height(), rows);
+    const gl::Program& tiled = program({technique, quantized, radius, rows, samples, 0});
+    tiled.use();
+    set_representation_constants(tiled.id(), settings);
+    glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
+    glBindSampler(UNIT_COMPUTE_INPUT, 0);
+    glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
+      glProgramUniform1i(tiled.id(), 3, first);
+      glDispatchCompute(groups_x, groups_y, static_cast<GLuint>(count));
+    });
+  } else {
+    // A band of a layer at a time through the rows: a band's floats and
+    // its apron, not the array's (a point light's six 2048^2 faces of msm
+    // would take 400 MB, one of them 64).
+    const gl::Program& horizontal = program({technique, quantized, radius, rows, samples, 1});
+    const gl::Program& vertical = program({technique, quantized, radius, rows, samples, 2});
+    const GLenum between = rows_format(format);
+    const int height = depth_maps.height();
+    const int band = std::min(kDirectBandRows, height);
+    gl::ensure_texture_array(rows_, between, depth_maps.width(),
+                             std::min(band + 2 * radius, height), 1, "fused filter rows");
+    set_representation_constants(horizontal.id(), settings);
+    glBindSampler(UNIT_COMPUTE_INPUT, 0);
+    for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
+      for (int layer = first; layer < first + count; ++layer) {
+        for (int b0 = 0; b0 < height; b0 += band) {
+          const int b1 = std::min(b0 + band, height);
+          const int r0 = std::max(b0 - radius, 0), r1 = std::min(b1 + radius, height);
+          horizontal.use();
+          glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
+          glBindImageTexture(IMAGE_OUTPUT, rows_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, between);
+          glProgramUniform1i(horizontal.id(), 3, layer);
+          glProgramUniform3i(horizontal.id(), 4, r0, r1, r0);
+          glDispatchCompute(groups_x, groups(r1 - r0, kDirectRows), 1);
+          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+          vertical.use();
+          glBindTextureUnit(UNIT_COMPUTE_INPUT, rows_.id());
+          glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+          glProgramUniform1i(vertical.id(), 3, layer);
+          glProgramUniform3i(vertical.id(), 4, b0, b1, r0);
+          glDispatchCompute(groups_x, groups(b1 - b0, kDirectRows), 1);
+          // The next band's rows overwrite what this one read.
+          glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        }
+      }
+    });
+  }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glPopDebugGroup();
 }

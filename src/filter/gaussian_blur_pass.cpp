@@ -4,7 +4,6 @@
 
 #include "penumbra/filter/gaussian.hpp"
 #include "penumbra/filter/layer_runs.hpp"
-#include "penumbra/gl/context.hpp"
 #include "penumbra/settings.hpp"
 #include "penumbra/shadow/representation.hpp"
 #include "penumbra/shared/bindings.h"
@@ -26,14 +25,8 @@ bool ensure_like(gl::Texture& texture, const gl::Texture& like, const char* labe
 
 }  // namespace
 
-GaussianBlurPass::GaussianBlurPass(Staging staging) {
-  if (staging == Staging::Automatic) {
-    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    shared_memory_ = renderer == nullptr || !gl::is_cpu_rasterizer(renderer);
-  } else {
-    shared_memory_ = staging == Staging::SharedMemory;
-  }
-}
+GaussianBlurPass::GaussianBlurPass(Staging staging)
+    : shared_memory_(stages_in_shared_memory(staging)) {}
 
 const gl::Program& GaussianBlurPass::program(GLenum format, int axis, int radius) {
   auto key = std::make_tuple(format, axis, radius);

@@ -4,7 +4,9 @@
 // written once (shaders/filter/fused_filter.comp). The same result as
 // MomentResolvePass followed by GaussianBlurPass, up to the rounding of
 // their intermediate maps, for radii 1..kMaxFusedBlur; the renderer picks
-// it with uses_fused_filter().
+// it with uses_fused_filter(). On a CPU rasterizer it filters without
+// shared memory, in two dispatches per layer through a float map of one
+// layer (FilterStaging::Direct): the same floats.
 #include <epoxy/gl.h>
 
 #include <cstdint>
@@ -12,6 +14,7 @@
 #include <span>
 #include <tuple>
 
+#include "penumbra/filter/filter_staging.hpp"
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
 #include "penumbra/settings.hpp"
@@ -21,7 +24,7 @@ namespace penumbra {
 
 class FusedFilterPass {
  public:
-  FusedFilterPass();
+  explicit FusedFilterPass(FilterStaging staging = FilterStaging::Automatic);
 
   // Filters every layer of `depth_maps` with the settings' technique and
   // radius (settings.blur in 1..max_fused_blur()) into output(); a
@@ -52,20 +55,32 @@ class FusedFilterPass {
   // float staged would give, so the tile and its traffic stay the same.
   static bool stages_evsm4_warps(int radius, int shared_bytes);
 
-  // Bytes per texel of a width x height map: each 32 x tile_rows() tile
+  // Bytes per texel of a width x height map, staged in shared memory (a
+  // GPU's path; FilterStaging::Direct reads each tap and writes and reads
+  // the rows too): each 32 x tile_rows() tile
   // reads the depth (R32F, `samples` per texel) under it and its apron of
   // `radius` on every side, and writes the representation (`format`) once.
   static TexelTraffic texel_traffic(GLenum format, int radius, int width, int height,
                                     int shared_bytes, int samples = 1);
 
-  // Frees the output (execute() makes it again), keeping the programs.
-  void release() { output_ = gl::Texture(); }
+  // Frees the output and the direct staging's rows (execute() makes them
+  // again), keeping the programs.
+  void release() {
+    output_ = gl::Texture();
+    rows_ = gl::Texture();
+  }
 
  private:
-  // (technique, quantized, radius, tile rows, samples per depth texel)
-  std::map<std::tuple<Technique, bool, int, int, int>, gl::Program> programs_;
+  // (technique, quantized, radius, tile rows, samples per depth texel,
+  // pass: 0 the shared-memory tile, 1 and 2 the direct staging's)
+  using ProgramKey = std::tuple<Technique, bool, int, int, int, int>;
+  const gl::Program& program(const ProgramKey& key);
+
+  std::map<ProgramKey, gl::Program> programs_;
+  bool shared_memory_ = true;
   int shared_bytes_ = 0;  // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE
   gl::Texture output_;
+  gl::Texture rows_;  // the direct staging's: step 2's rows of one layer, in floats
 };
 
 }  // namespace penumbra

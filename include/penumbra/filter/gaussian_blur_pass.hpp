@@ -8,6 +8,7 @@
 #include <span>
 #include <tuple>
 
+#include "penumbra/filter/filter_staging.hpp"
 #include "penumbra/gl/gpu_profiler.hpp"
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
@@ -17,11 +18,8 @@ namespace penumbra {
 
 class GaussianBlurPass {
  public:
-  // How each workgroup reads its taps (shaders/filter/gaussian_blur.comp):
-  // through a tile staged in shared memory (GPUs), or straight from the
-  // source (CPU rasterizers, where the staging costs more than it saves).
-  // Both give the same floats.
-  enum class Staging { Automatic, SharedMemory, Direct };
+  // How each workgroup reads its taps (shaders/filter/gaussian_blur.comp).
+  using Staging = FilterStaging;
   explicit GaussianBlurPass(Staging staging = Staging::Automatic);
 
   // Blurs every layer of the 2D array `source` with 2 radius + 1 taps per
