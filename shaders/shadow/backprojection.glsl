@@ -314,6 +314,16 @@ BackprojectionReceiver backprojection_receiver(GpuShadowView view, ShadowLookup 
   r.p = (view.view * vec4(s.position, 1.0)).xyz;
   r.n = normalize(mat3(view.view) * normal);
   r.shading_n = normalize(mat3(view.view) * shading_normal);
+  // A receiver whose triangle faces away from the source's centre (a
+  // smooth surface past its terminator) sees only the part of the source
+  // above its horizon, and the rays to it run behind its plane as the map
+  // sees it: the plane's cut, which keeps what lies in front of the plane,
+  // would drop every blocker of that part (the default scene's sphere
+  // under the slab read lit along its terminator where the traced
+  // reference reads 0). There the cut is at the receiver's own depth, and
+  // backprojection_above_plane() keeps the half-space above the plane.
+  vec3 to_source = view.perspective != 0 ? -r.p : vec3(0.0, 0.0, 1.0);
+  if (dot(r.n, to_source) <= 0.0) r.gradient = vec2(0.0);
   float d_r = -r.p.z;
   r.receiver = view.perspective != 0 ? 1.0 / d_r : d_r;
   r.width = view.source_width;
@@ -481,6 +491,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     backprojection_sphere_source(view, r);
   }
   float width = r.width;
+  gradient = r.gradient;
   if (width <= 0.0) {  // a point source: the hard test
     return texelFetch(depth_maps, ivec3(ivec2(floor(r.center)), layer), 0).r < z ? 0.0 : 1.0;
   }

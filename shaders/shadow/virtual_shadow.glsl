@@ -274,7 +274,7 @@ float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLig
     }
     backprojection_region(r.center, reach, size, first, last);
     // The receiver's plane over the region lies within z -+ slope.
-    float slope = (abs(gradient.x) + abs(gradient.y)) * (reach + 1.0);
+    float slope = (abs(r.gradient.x) + abs(r.gradient.y)) * (reach + 1.0);
     if (bounds.x >= v.z + slope) return 1.0;  // nothing in front of the receiver
     if (bounds.y < v.z - slope) return 0.0;   // all of it in front: umbra
     uvec4 low = uvec4(0u), high = uvec4(0u);
