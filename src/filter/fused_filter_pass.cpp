@@ -147,24 +147,26 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
                              std::min(band + 2 * radius, height), 1, "fused filter rows");
     set_representation_constants(horizontal.id(), settings);
     glBindSampler(UNIT_COMPUTE_INPUT, 0);
+    // One step over texel rows [from, to) of `layer` (uniform u_rows: those
+    // rows, and the band's first row that the rows' texture starts at).
+    const auto step = [&](const gl::Program& program, const gl::Texture& input,
+                          const gl::Texture& target, GLenum target_format, int layer, int from,
+                          int to, int band_first) {
+      program.use();
+      glBindTextureUnit(UNIT_COMPUTE_INPUT, input.id());
+      glBindImageTexture(IMAGE_OUTPUT, target.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, target_format);
+      glProgramUniform1i(program.id(), 3, layer);
+      glProgramUniform3i(program.id(), 4, from, to, band_first);
+      glDispatchCompute(groups_x, groups(to - from, kDirectRows), 1);
+    };
     for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
       for (int layer = first; layer < first + count; ++layer) {
         for (int b0 = 0; b0 < height; b0 += band) {
           const int b1 = std::min(b0 + band, height);
           const int r0 = std::max(b0 - radius, 0), r1 = std::min(b1 + radius, height);
-          horizontal.use();
-          glBindTextureUnit(UNIT_COMPUTE_INPUT, depth_maps.id());
-          glBindImageTexture(IMAGE_OUTPUT, rows_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, between);
-          glProgramUniform1i(horizontal.id(), 3, layer);
-          glProgramUniform3i(horizontal.id(), 4, r0, r1, r0);
-          glDispatchCompute(groups_x, groups(r1 - r0, kDirectRows), 1);
+          step(horizontal, depth_maps, rows_, between, layer, r0, r1, r0);
           glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-          vertical.use();
-          glBindTextureUnit(UNIT_COMPUTE_INPUT, rows_.id());
-          glBindImageTexture(IMAGE_OUTPUT, output_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-          glProgramUniform1i(vertical.id(), 3, layer);
-          glProgramUniform3i(vertical.id(), 4, b0, b1, r0);
-          glDispatchCompute(groups_x, groups(b1 - b0, kDirectRows), 1);
+          step(vertical, rows_, output_, format, layer, b0, b1, r0);
           // The next band's rows overwrite what this one read.
           glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         }

@@ -248,6 +248,25 @@ TEST_F(GpuTest, BackprojectionSoftensTheSunsShadowOnItsCascades) {
   EXPECT_LT(e.backprojection, 0.8 * e.pcss);
 }
 
+// Backprojection against the traced reference (256 rays) on a close-up of
+// the default scene, 200 x 150, under its spot light with a source
+// `light_size` wide.
+ShadowMetrics default_scene_close_up(glm::vec3 camera, glm::vec3 target, float fov_y_degrees,
+                                     float light_size) {
+  Scene scene = *builtin_scene("default");
+  scene.camera.position = camera;
+  scene.camera.target = target;
+  scene.camera.fov_y_degrees = fov_y_degrees;
+  Renderer renderer(scene);
+  RenderSettings rs = testing::small_frame(200, 150);
+  ShadowSettings s;
+  s.technique = Technique::Backprojection;
+  s.light_size = light_size;
+  const TracedReference reference = traced_reference(renderer, rs, s, 256, "");
+  renderer.render(rs, s);
+  return compare_shadow(renderer.read_view(), reference.image);
+}
+
 // The default scene's box seen close up at its foot, under a source 1.5
 // wide: the blockers' region of the ground along the foot spans over 40
 // texels, so it is read from the hierarchy's cells, and the cell
@@ -257,18 +276,8 @@ TEST_F(GpuTest, BackprojectionSoftensTheSunsShadowOnItsCascades) {
 // under 0.7 (before the receiver's own cells were read as texels: 6 of
 // 29 982, largest error 1.0, RMSE 0.0197; now none, 0.708, 0.0152).
 TEST_F(GpuTest, BackprojectionLightsTheGroundAtTheFootOfALitWall) {
-  Scene scene = *builtin_scene("default");
-  scene.camera.position = {-1.6f, 2.5f, 4.5f};
-  scene.camera.target = {-2.4f, 0.2f, 1.2f};
-  scene.camera.fov_y_degrees = 40.0f;
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(200, 150);
-  ShadowSettings s;
-  s.technique = Technique::Backprojection;
-  s.light_size = 1.5f;
-  const TracedReference reference = traced_reference(renderer, rs, s, 256, "");
-  renderer.render(rs, s);
-  const ShadowMetrics m = compare_shadow(renderer.read_view(), reference.image);
+  const ShadowMetrics m =
+      default_scene_close_up({-1.6f, 2.5f, 4.5f}, {-2.4f, 0.2f, 1.2f}, 40.0f, 1.5f);
   std::printf("box's foot: RMSE %.4f, largest error %.3f, over-dark %.3f %% of %ld pixels\n",
               m.rmse, m.max_error, 100.0 * m.over_dark_fraction, m.pixels);
   ASSERT_GT(m.pixels, 20000) << "too little of the scene compared";
@@ -285,18 +294,8 @@ TEST_F(GpuTest, BackprojectionLightsTheGroundAtTheFootOfALitWall) {
 // 26 leaking pixels of 26 300, largest error 1.0, RMSE 0.0374; now none,
 // 0.199, 0.0109).
 TEST_F(GpuTest, BackprojectionWeighsTheSourceAboveTheShadingNormalsHorizon) {
-  Scene scene = *builtin_scene("default");
-  scene.camera.position = {-0.6f, 2.6f, 3.9f};
-  scene.camera.target = {0.1f, 1.4f, 1.4f};
-  scene.camera.fov_y_degrees = 30.0f;
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(200, 150);
-  ShadowSettings s;
-  s.technique = Technique::Backprojection;
-  s.light_size = 0.5f;
-  const TracedReference reference = traced_reference(renderer, rs, s, 256, "");
-  renderer.render(rs, s);
-  const ShadowMetrics m = compare_shadow(renderer.read_view(), reference.image);
+  const ShadowMetrics m =
+      default_scene_close_up({-0.6f, 2.6f, 3.9f}, {0.1f, 1.4f, 1.4f}, 30.0f, 0.5f);
   std::printf("sphere's terminator: RMSE %.4f, largest error %.3f, leaks %.3f %% of %ld pixels\n",
               m.rmse, m.max_error, 100.0 * m.leak_fraction, m.pixels);
   ASSERT_GT(m.pixels, 20000) << "too little of the scene compared";
@@ -313,21 +312,12 @@ TEST_F(GpuTest, BackprojectionWeighsTheSourceAboveTheShadingNormalsHorizon) {
 // of 20 785 pixels leaking, largest error 1.0, RMSE 0.0755; now none,
 // 0.391, 0.0181).
 TEST_F(GpuTest, BackprojectionKeepsTheBlockersOfTheSourceAboveATerminatorsHorizon) {
-  Scene scene = *builtin_scene("default");
-  scene.camera.position = {-1.2f, 2.4f, 4.6f};
-  scene.camera.target = {-0.2f, 1.6f, 1.3f};
-  scene.camera.fov_y_degrees = 25.0f;
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(200, 150);
-  ShadowSettings s;
-  s.technique = Technique::Backprojection;
-  s.light_size = 1.5f;
-  const TracedReference reference = traced_reference(renderer, rs, s, 256, "");
-  renderer.render(rs, s);
-  const ShadowMetrics m = compare_shadow(renderer.read_view(), reference.image);
-  std::printf("terminator under the slab: RMSE %.4f, largest error %.3f, leaks %.3f %% of %ld "
-              "pixels\n",
-              m.rmse, m.max_error, 100.0 * m.leak_fraction, m.pixels);
+  const ShadowMetrics m =
+      default_scene_close_up({-1.2f, 2.4f, 4.6f}, {-0.2f, 1.6f, 1.3f}, 25.0f, 1.5f);
+  std::printf(
+      "terminator under the slab: RMSE %.4f, largest error %.3f, leaks %.3f %% of %ld "
+      "pixels\n",
+      m.rmse, m.max_error, 100.0 * m.leak_fraction, m.pixels);
   ASSERT_GT(m.pixels, 10000) << "too little of the scene compared";
   EXPECT_EQ(m.leak_fraction, 0.0);
   EXPECT_LT(m.max_error, 0.5);

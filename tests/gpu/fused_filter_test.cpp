@@ -79,6 +79,15 @@ double tolerance(Technique t, double v) {
   return t == Technique::Msm16 ? 1.5 / 65535.0 + 1e-7 : 4e-6 + 4e-6 * std::abs(v);
 }
 
+// A technique's maps filtered with the Gaussian of radius `radius`.
+ShadowSettings gaussian(Technique technique, int radius) {
+  ShadowSettings s;
+  s.technique = technique;
+  s.filter = Filter::Gaussian;
+  s.blur = radius;
+  return s;
+}
+
 TEST_F(GpuTest, FusedFilterEqualsResolveThenTwoBlurPasses) {
   struct Case {
     int width, height, layers;
@@ -90,10 +99,7 @@ TEST_F(GpuTest, FusedFilterEqualsResolveThenTwoBlurPasses) {
     const gl::Texture depth = depth_maps(c.width, c.height, c.layers, 11);
     for (Technique technique : kFilterable) {
       for (int radius : {1, 4, 9, kMaxFusedBlur}) {
-        ShadowSettings s;
-        s.technique = technique;
-        s.filter = Filter::Gaussian;
-        s.blur = radius;
+        const ShadowSettings s = gaussian(technique, radius);
         resolve.execute(depth, s);
         blur.execute(resolve.representation(), radius);
         fused.execute(depth, s);
@@ -139,10 +145,7 @@ TEST_F(GpuTest, FusedFilterStagingsGiveTheSameFloats) {
     const gl::Texture other = depth_maps(width, height, layers, 6);
     for (Technique technique : kFilterable) {
       for (int radius : {1, 4, 9, kMaxFusedBlur}) {
-        ShadowSettings s;
-        s.technique = technique;
-        s.filter = Filter::Gaussian;
-        s.blur = radius;
+        const ShadowSettings s = gaussian(technique, radius);
         tiled.execute(depth, s);
         direct.execute(depth, s);
         // Then the odd layers again from other depths.
