@@ -2,13 +2,14 @@
 // texture, `columns` to a row, the first at the top left (image rows run
 // top to bottom, GL rows bottom to top), for the map views of a light with
 // several shadow views (a point light's cube faces, the cascades). Tiles
-// past the last layer are black.
+// past the last layer are black. IMAGE_FORMAT: the output's (r32f for depth
+// maps, or the representation's channels in floats).
 #include "../shared/bindings.h"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(binding = UNIT_COMPUTE_INPUT) uniform sampler2DArray layers;
-layout(rgba32f, binding = IMAGE_OUTPUT) uniform writeonly image2D tiled;
+layout(IMAGE_FORMAT, binding = IMAGE_OUTPUT) uniform writeonly image2D tiled;
 layout(location = 0) uniform int u_first;
 layout(location = 1) uniform int u_count;
 layout(location = 2) uniform int u_columns;

@@ -3,6 +3,10 @@
 // shadow-map array tiled into one 2D texture (shaders/render/tile_views.comp),
 // three to a row: a point light's six cube faces in two rows (+x -x +y, -y
 // +z -z), a directional light's cascades nearest first.
+#include <epoxy/gl.h>
+
+#include <map>
+
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
 
@@ -10,10 +14,9 @@ namespace penumbra {
 
 class ViewTilingPass {
  public:
-  ViewTilingPass();
-
   // Tiles layers [first, first + count) of the 2D array `layers` into
-  // output(), an RGBA32F texture; reallocated only when its size changes.
+  // output(), a float texture with the layers' channels (R32F for depth
+  // maps); reallocated only when its size or format changes.
   // Throws UsageError if the tiled image exceeds the GPU's texture limit.
   void execute(const gl::Texture& layers, int first, int count);
 
@@ -26,7 +29,9 @@ class ViewTilingPass {
   void release() { output_ = gl::Texture(); }
 
  private:
-  gl::Program program_;
+  const gl::Program& program(GLenum format);
+
+  std::map<GLenum, gl::Program> programs_;  // per output format
   gl::Texture output_;
 };
 
