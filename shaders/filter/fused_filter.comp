@@ -49,11 +49,12 @@
 // give 8 rows at W = 16, so step 2 filters five rows for every one it
 // keeps). There (STAGE_IN_SHARED_MEMORY 0) steps 2 and 3 run as two
 // dispatches, PASS 1 and PASS 2, a band of rows of a layer at a time,
-// through a float map of the band and its apron, `rows` as a texture
-// (a few MB, not a layer's 64): every tap is read from memory, the same taps are summed in
-// the same order with the same weights, and the maps are the same floats
-// (FusedFilterStagingsGiveTheSameFloats). llvmpipe, msm, 2048^2, W = 16:
-// 5.1 s for the whole render with the tile, 1.0 s with two dispatches.
+// through a float map of the band and its apron, `rows` as a texture (a
+// few MB, not a layer's 64): every tap is read from memory, the same taps
+// are summed in the same order with the same weights, and the maps are the
+// same floats (FusedFilterStagingsGiveTheSameFloats). llvmpipe, msm,
+// 2048^2, W = 16: 5.1 s for the whole render with the tile, 0.9 s with two
+// dispatches.
 //
 // Defines: REPRESENTATION, MSM_QUANTIZED, EVSM4_STAGE_WARPS (shadow/
 // representation.glsl), IMAGE_FORMAT, RADIUS (W, 1..16), GAUSSIAN_WEIGHTS

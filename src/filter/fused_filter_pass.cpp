@@ -22,19 +22,6 @@ constexpr int kDirectRows = 8;  // GROUP_Y: the direct passes' workgroups are 32
 // horizontal pass's work.
 constexpr int kDirectBandRows = 256;
 
-// The float format of the direct staging's rows for a representation of
-// `format`: its channels, unrounded (the tile's rows are floats).
-GLenum rows_format(GLenum format) {
-  switch (channel_count(format)) {
-    case 1:
-      return GL_R32F;
-    case 2:
-      return GL_RG32F;
-    default:
-      return GL_RGBA32F;
-  }
-}
-
 GLuint groups(int size, int tile) {
   return static_cast<GLuint>((size + tile - 1) / tile);
 }
@@ -86,17 +73,18 @@ const gl::Program& FusedFilterPass::program(const ProgramKey& key) {
   // direct passes stage nothing.
   const bool stage_warps = technique == Technique::Evsm4 && samples == 1 && pass == 0 &&
                            stages_evsm4_warps(radius, shared_bytes_);
-  gl::Defines defines = {{"REPRESENTATION", std::to_string(technique_define(technique))},
-                         {"MSM_QUANTIZED", quantized ? "1" : "0"},
-                         {"IMAGE_FORMAT", image_format_qualifier(format)},
-                         {"RADIUS", std::to_string(radius)},
-                         {"TILE_Y", std::to_string(rows)},
-                         {"EVSM4_STAGE_WARPS", stage_warps ? "1" : "0"},
-                         {"GAUSSIAN_WEIGHTS", gaussian_weight_list(radius)},
-                         {"SAMPLES", std::to_string(samples)},
-                         {"STAGE_IN_SHARED_MEMORY", pass == 0 ? "1" : "0"},
-                         {"PASS", std::to_string(pass)},
-                         {"ROWS_FORMAT", image_format_qualifier(rows_format(format))}};
+  gl::Defines defines = {
+      {"REPRESENTATION", std::to_string(technique_define(technique))},
+      {"MSM_QUANTIZED", quantized ? "1" : "0"},
+      {"IMAGE_FORMAT", image_format_qualifier(format)},
+      {"RADIUS", std::to_string(radius)},
+      {"TILE_Y", std::to_string(rows)},
+      {"EVSM4_STAGE_WARPS", stage_warps ? "1" : "0"},
+      {"GAUSSIAN_WEIGHTS", gaussian_weight_list(radius)},
+      {"SAMPLES", std::to_string(samples)},
+      {"STAGE_IN_SHARED_MEMORY", pass == 0 ? "1" : "0"},
+      {"PASS", std::to_string(pass)},
+      {"ROWS_FORMAT", image_format_qualifier(float_format_with_channels_of(format))}};
   return programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines))
       .first->second;
 }
@@ -140,7 +128,7 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
     // would take 400 MB, one of them 64).
     const gl::Program& horizontal = program({technique, quantized, radius, rows, samples, 1});
     const gl::Program& vertical = program({technique, quantized, radius, rows, samples, 2});
-    const GLenum between = rows_format(format);
+    const GLenum between = float_format_with_channels_of(format);
     const int height = depth_maps.height();
     const int band = std::min(kDirectBandRows, height);
     gl::ensure_texture_array(rows_, between, depth_maps.width(),

@@ -21,14 +21,7 @@ GLenum tiled_format(GLenum format) {
     case GL_DEPTH_COMPONENT32F:
       return GL_R32F;
     default:
-      switch (channel_count(format)) {
-        case 1:
-          return GL_R32F;
-        case 2:
-          return GL_RG32F;
-        default:
-          return GL_RGBA32F;
-      }
+      return float_format_with_channels_of(format);
   }
 }
 

@@ -147,6 +147,17 @@ GLenum integer_format_with_channels_of(GLenum format) {
   }
 }
 
+GLenum float_format_with_channels_of(GLenum format) {
+  switch (channel_count(format)) {
+    case 1:
+      return GL_R32F;
+    case 2:
+      return GL_RG32F;
+    default:
+      return GL_RGBA32F;
+  }
+}
+
 int channel_count(GLenum format) {
   switch (format) {
     case GL_R32F:

@@ -5,8 +5,8 @@
 // MomentResolvePass followed by GaussianBlurPass, up to the rounding of
 // their intermediate maps, for radii 1..kMaxFusedBlur; the renderer picks
 // it with uses_fused_filter(). On a CPU rasterizer it filters without
-// shared memory, in two dispatches per layer through a float map of one
-// layer (FilterStaging::Direct): the same floats.
+// shared memory, in two dispatches per band of 256 rows through a float
+// map of the band (FilterStaging::Direct): the same floats.
 #include <epoxy/gl.h>
 
 #include <cstdint>
@@ -80,7 +80,7 @@ class FusedFilterPass {
   bool shared_memory_ = true;
   int shared_bytes_ = 0;  // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE
   gl::Texture output_;
-  gl::Texture rows_;  // the direct staging's: step 2's rows of one layer, in floats
+  gl::Texture rows_;  // the direct staging's: step 2's rows of one band and its apron, in floats
 };
 
 }  // namespace penumbra

@@ -74,6 +74,11 @@ std::string image_format_qualifier(GLenum format);
 // tables of the representation).
 GLenum integer_format_with_channels_of(GLenum format);
 
+// The 32-bit float format with as many channels (a representation's values
+// unrounded: the fused filter's rows between its two direct passes, the
+// map views' tiles).
+GLenum float_format_with_channels_of(GLenum format);
+
 // Channels of a sized colour format used here (1, 2 or 4).
 int channel_count(GLenum format);
 
