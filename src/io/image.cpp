@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -33,6 +34,58 @@ std::string lower_extension(const std::string& path) {
 float srgb_encode(float linear) {
   linear = std::clamp(linear, 0.0f, 1.0f);
   return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+// A value in [0, 1] to the byte lround(curve(v) * 255), for a curve that
+// never falls (the sRGB transfer curve, or none), without evaluating it:
+// from the smallest value that gives each byte, found once by bisection
+// over the floats, and the byte at the start of each of 4096 equal
+// intervals of [0, 1], from which a value climbs at most a byte or two.
+class ByteQuantizer {
+ public:
+  template <class Curve>
+  explicit ByteQuantizer(Curve curve) {
+    const auto byte = [&](float v) { return std::lround(curve(v) * 255.0f); };
+    for (int k = 1; k < 256; ++k) {
+      // Floats in [0, 1] are ordered as their bit patterns.
+      std::uint32_t low = 0, high = std::bit_cast<std::uint32_t>(1.0f);
+      while (low < high) {
+        const std::uint32_t mid = low + (high - low) / 2;
+        if (byte(std::bit_cast<float>(mid)) >= k) {
+          high = mid;
+        } else {
+          low = mid + 1;
+        }
+      }
+      first_[k] = std::bit_cast<float>(low);
+    }
+    first_[0] = 0.0f;
+    for (int i = 0; i < kIntervals; ++i) {
+      interval_start_[i] = climb(0, static_cast<float>(i) / kIntervals);
+    }
+  }
+
+  [[nodiscard]] std::uint8_t operator()(float v) const {
+    if (!std::isfinite(v) || v <= 0.0f) return 0;
+    if (v >= 1.0f) return climb(255, 1.0f);
+    // v * kIntervals is exact: its interval's start is at or below v.
+    return climb(interval_start_[static_cast<int>(v * kIntervals)], v);
+  }
+
+ private:
+  static constexpr int kIntervals = 4096;
+  [[nodiscard]] std::uint8_t climb(int k, float v) const {
+    while (k < 255 && v >= first_[k + 1]) ++k;
+    return static_cast<std::uint8_t>(k);
+  }
+  float first_[256] = {};
+  std::uint8_t interval_start_[kIntervals] = {};
+};
+
+const ByteQuantizer& quantizer(PngEncoding encoding) {
+  static const ByteQuantizer srgb(srgb_encode);
+  static const ByteQuantizer linear([](float v) { return std::clamp(v, 0.0f, 1.0f); });
+  return encoding == PngEncoding::Srgb ? srgb : linear;
 }
 
 }  // namespace
@@ -67,17 +120,18 @@ void check_output_path(const std::string& path) {
   if (fs::is_directory(path, ec)) throw UsageError("output '" + path + "' is a folder");
 }
 
-void write_png(const Image& image, const std::string& path, PngEncoding encoding) {
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * image.height * 3);
-  for (std::size_t i = 0, n = static_cast<std::size_t>(image.width) * image.height; i < n; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      float v = image.rgba[i * 4 + static_cast<std::size_t>(c)];
-      if (!std::isfinite(v)) v = 0.0f;
-      v = encoding == PngEncoding::Srgb ? srgb_encode(v) : std::clamp(v, 0.0f, 1.0f);
-      bytes[i * 3 + static_cast<std::size_t>(c)] =
-          static_cast<std::uint8_t>(std::lround(v * 255.0f));
-    }
+PngPixels png_pixels(const Image& image, PngEncoding encoding) {
+  const ByteQuantizer& to_byte = quantizer(encoding);
+  PngPixels out{image.width, image.height, {}};
+  const std::size_t n = static_cast<std::size_t>(image.width) * image.height;
+  out.rgb.resize(n * 3);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t c = 0; c < 3; ++c) out.rgb[i * 3 + c] = to_byte(image.rgba[i * 4 + c]);
   }
+  return out;
+}
+
+void write_png(const PngPixels& pixels, const std::string& path) {
   // Encoded in memory, then written by write_file_atomically, which checks
   // every write (stbi_write_png ignores fwrite's and fclose's results).
   std::string png;
@@ -85,11 +139,15 @@ void write_png(const Image& image, const std::string& path, PngEncoding encoding
     static_cast<std::string*>(context)->append(static_cast<const char*>(data),
                                                static_cast<std::size_t>(size));
   };
-  if (!stbi_write_png_to_func(append, &png, image.width, image.height, 3, bytes.data(),
-                              image.width * 3)) {
+  if (!stbi_write_png_to_func(append, &png, pixels.width, pixels.height, 3, pixels.rgb.data(),
+                              pixels.width * 3)) {
     throw RuntimeError("cannot write " + display_name(path) + ": the PNG encoder failed");
   }
   write_file_atomically(path, png);
+}
+
+void write_png(const Image& image, const std::string& path, PngEncoding encoding) {
+  write_png(png_pixels(image, encoding), path);
 }
 
 void write_exr(const Image& image, const std::string& path) {

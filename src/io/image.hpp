@@ -1,5 +1,6 @@
 #pragma once
 // Float images read back from the GPU, and writing them as PNG or OpenEXR.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -37,9 +38,19 @@ ImageFormat image_format_for(const std::string& path);
 // writable; "-" (standard output) always passes.
 void check_output_path(const std::string& path);
 
+// A PNG's 8-bit RGB pixels, rows top to bottom: an image's channels
+// clamped to [0, 1] (not finite: 0), through the encoding's curve, rounded.
+struct PngPixels {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;
+};
+PngPixels png_pixels(const Image& image, PngEncoding encoding);
+
 // Writes atomically: to a temporary name beside the target, then renamed,
 // so a failure never leaves a partial file. Throws RuntimeError.
 void write_png(const Image& image, const std::string& path, PngEncoding encoding);
+void write_png(const PngPixels& pixels, const std::string& path);
 void write_exr(const Image& image, const std::string& path);
 void write_image(const Image& image, const std::string& path, PngEncoding png_encoding);
 
