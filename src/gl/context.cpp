@@ -201,6 +201,14 @@ Context::~Context() {
   }
 }
 
+void Context::make_current() {
+  if (!eglMakeCurrent(display_, surface_, surface_, context_)) {
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", static_cast<unsigned>(eglGetError()));
+    throw RuntimeError(std::string("eglMakeCurrent failed (EGL error ") + code + ")");
+  }
+}
+
 std::string Context::renderer() const {
   return reinterpret_cast<const char*>(glGetString(GL_RENDERER));
 }

@@ -4,6 +4,7 @@
 
 #include "io/atomic_file.hpp"
 #include "render/pass_timing.hpp"
+#include "report/shader_rehearsal.hpp"
 #include "report/study_run.hpp"
 
 namespace penumbra {
@@ -28,12 +29,21 @@ std::string quick_banner() {
 
 }  // namespace
 
-Study::Study(const Scene& scene, const StudyOptions& options, gl::Context& context)
-    : scene_(scene), options_(options), context_(context), renderer_(scene) {
-  const StudySize& size = options.quick ? kQuickSize : kFullSize;
-  base_render_.width = size.width;
-  base_render_.height = size.height;
-  base_shadow_.map_size = size.map_size;
+Study::Study(const Scene& scene, const StudyOptions& options, gl::Context& context,
+             StudyMode mode, const std::atomic<bool>* stop)
+    : scene_(scene),
+      options_(options),
+      context_(context),
+      mode_(mode),
+      stop_(stop),
+      renderer_(scene) {
+  base_render_.width = size().width;
+  base_render_.height = size().height;
+  base_shadow_.map_size = size().map_size;
+  if (!rehearsal()) {
+    progress_.emplace("report");
+    png_writer_.emplace();
+  }
 }
 
 int Study::total_items() const {
@@ -52,6 +62,10 @@ StudyResult Study::run() {
       "the technique's own filter kernel, each texel tested against the receiver's plane, "
       "which is what a filtered technique approximates, and against a ray-traced reference.");
   if (options_.quick) page.banner(quick_banner());
+  // Compiling shaders is most of what llvmpipe does on this thread: a
+  // rehearsal on another compiles them ahead (report/shader_rehearsal.hpp).
+  std::optional<ShaderRehearsal> rehearsed;
+  if (!rehearsal() && ShaderRehearsal::helps(context_)) rehearsed.emplace(scene_, options_, context_);
   techniques_section(page);
   light_types_section(page);
   maps_section(page);
@@ -60,15 +74,19 @@ StudyResult Study::run() {
   errors_section(page);
   closeups_section(page);
   foliage_section(page);
+  // The timings measure this thread's passes alone.
+  rehearsed.reset();
+  if (png_writer_) png_writer_->finish();
   timings_section(page);
   texel_density_section(page);
-  progress_.step("the verdict and the page", items_, total_items());
+  if (progress_) progress_->step("the verdict and the page", items_, total_items());
   verdict(page);
 
   StudyResult result;
   result.index_path = (std::filesystem::path(options_.output_dir) / "index.html").string();
-  write_file_atomically(result.index_path, page.finish());
-  progress_.finish();
+  if (png_writer_) png_writer_->finish();
+  if (!rehearsal()) write_file_atomically(result.index_path, page.finish());
+  if (progress_) progress_->finish();
   result.items = items_;
   result.failed = failed_;
   return result;

@@ -61,11 +61,14 @@ HtmlFigure Study::figure(Renderer& renderer, const std::string& scene_argument,
                                                  .edited = nullptr,
                                                  .output = file}));
   step();
+  // A rehearsal draws no map larger than its own: what llvmpipe compiles
+  // does not depend on the size (kRehearsalSize).
+  if (rehearsal()) shadow.map_size = std::min(shadow.map_size, size().map_size);
   try {
     renderer.render(render, shadow);
     const Image image = renderer.read_view();
     check_gl();
-    write_png(image, path_of(file), png_encoding_for(render.view));
+    write_report_png(image, file, png_encoding_for(render.view));
     f.image = file;
     f.width = image.width;
     f.height = image.height;
@@ -93,7 +96,7 @@ HtmlFigure Study::written_figure(const Image& image, const std::string& file,
   HtmlFigure f;
   f.caption = caption;
   try {
-    write_png(image, path_of(file), encoding);
+    write_report_png(image, file, encoding);
     f.image = file;
     f.width = image.width;
     f.height = image.height;
@@ -104,21 +107,32 @@ HtmlFigure Study::written_figure(const Image& image, const std::string& file,
   return f;
 }
 
+void Study::write_report_png(const Image& image, const std::string& file, PngEncoding encoding) {
+  if (png_writer_) png_writer_->write(image, path_of(file), encoding);
+}
+
+TracedReference Study::trace(Renderer& renderer, const RenderSettings& render,
+                             const ShadowSettings& shadow) {
+  return traced_reference(renderer, render, shadow, traced_samples(),
+                          rehearsal() ? std::string() : default_cache_dir());
+}
+
 std::string Study::path_of(const std::string& file) const {
   return (std::filesystem::path(options_.output_dir) / file).string();
 }
 
 void Study::section(HtmlPage& page, const std::string& id, const std::string& title) {
+  if (stop_ != nullptr && *stop_) throw StudyStopped();
   // What the last section's techniques left (their filtered arrays) is
   // made again where this one needs it.
   renderer_.release_filtered_maps();
   page.section(id, title);
-  progress_.step(title, items_, total_items());
+  if (progress_) progress_->step(title, items_, total_items());
 }
 
 void Study::step(int weight) {
   items_ += weight;
-  progress_.update(items_, total_items());
+  if (progress_) progress_->update(items_, total_items());
 }
 
 void Study::check_gl() {
@@ -167,8 +181,7 @@ const TracedReference* Study::base_traced() {
     traced_tried_ = true;
     step();
     try {
-      traced_ = traced_reference(renderer_, base_render_, base_shadow_, traced_samples(),
-                                 default_cache_dir());
+      traced_ = trace(renderer_, base_render_, base_shadow_);
       check_gl();
     } catch (const std::exception& e) {
       ++failed_;
@@ -214,12 +227,14 @@ std::optional<Image> Study::shadow_image(const ShadowSettings& shadow, View view
 }
 std::optional<Image> Study::shadow_image(Renderer& renderer, const RenderSettings& render,
                                          const ShadowSettings& shadow, View view) {
+  ShadowSettings s = shadow;
+  if (rehearsal()) s.map_size = std::min(s.map_size, size().map_size);
   return image_or_failure([&] {
     return with_light_alone(renderer, render.light_index, [&](int light) {
       RenderSettings r = render;
       r.view = view;
       r.light_index = light;
-      renderer.render(r, shadow);
+      renderer.render(r, s);
       return renderer.read_view();
     });
   });

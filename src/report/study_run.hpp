@@ -4,12 +4,16 @@
 // and numbers one section measures and a later one reads, the progress)
 // and the helpers that render and record a figure. Each section is
 // written by its own file under report/sections/, in the page's order.
+#include <atomic>
+#include <exception>
 #include <list>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "io/image.hpp"
+#include "io/png_writer.hpp"
 #include "io/progress_bar.hpp"
 #include "penumbra/gl/context.hpp"
 #include "penumbra/settings.hpp"
@@ -54,6 +58,20 @@ inline constexpr StudySize kFullSize{640, 360, 2048, 256};
 // --quick: a 512^2 map still has a texel per pixel or more across the
 // spot light's cone at 320x180, for a quarter of the filters' work.
 inline constexpr StudySize kQuickSize{320, 180, 512, 64};
+// A rehearsal's (report/shader_rehearsal.hpp): llvmpipe compiles a shader
+// variant per state of what it draws with, including whether each
+// texture's and target's sides are powers of two, but not their sizes; so
+// the frame's sides, like the study's, are not powers of two, and the maps'
+// are.
+inline constexpr StudySize kRehearsalSize{96, 54, 128, 1};
+
+// A study makes the report, or rehearses it: every frame and dispatch of
+// the report in the same order and state, at kRehearsalSize, writing no
+// image, tracing its references with a ray a pixel and caching none.
+enum class StudyMode { Report, Rehearsal };
+struct StudyStopped : std::exception {
+  [[nodiscard]] const char* what() const noexcept override { return "the study was stopped"; }
+};
 
 // Calls render(0) with `renderer` lit by its light `light` alone, as its
 // light 0, and gives the renderer its lights back after. One light's
@@ -97,7 +115,10 @@ class ScopedLights {
 
 class Study {
  public:
-  Study(const Scene& scene, const StudyOptions& options, gl::Context& context);
+  // A rehearsal stops at its next section once `stop` is set (throwing
+  // StudyStopped out of run()).
+  Study(const Scene& scene, const StudyOptions& options, gl::Context& context,
+        StudyMode mode = StudyMode::Report, const std::atomic<bool>* stop = nullptr);
   StudyResult run();
 
  private:
@@ -129,7 +150,7 @@ class Study {
 
   // Section helpers that read the study's state.
   std::vector<double> measure_light_type(const std::vector<std::optional<Image>>& shadows,
-                                         int samples, std::vector<std::vector<std::string>>& rows);
+                                         std::vector<std::vector<std::string>>& rows);
   [[nodiscard]] std::string point_light_floor(const EdgeErrors& e) const;
   HtmlFigure crop_figure(const Image& image, const CropRegion& region, const std::string& caption,
                          const std::string& stem, const std::string& source);
@@ -166,6 +187,17 @@ class Study {
   HtmlFigure written_figure(const Image& image, const std::string& file, const std::string& caption,
                             PngEncoding encoding);
   [[nodiscard]] std::string path_of(const std::string& file) const;
+  // Writes `image` as the report's `file` (a rehearsal writes nothing).
+  void write_report_png(const Image& image, const std::string& file, PngEncoding encoding);
+  // The traced reference of `renderer`'s frame for `render` and `shadow`,
+  // at the study's rays per pixel, from the reference cache or traced and
+  // stored there.
+  TracedReference trace(Renderer& renderer, const RenderSettings& render,
+                        const ShadowSettings& shadow);
+  [[nodiscard]] bool rehearsal() const { return mode_ == StudyMode::Rehearsal; }
+  [[nodiscard]] const StudySize& size() const {
+    return rehearsal() ? kRehearsalSize : options_.quick ? kQuickSize : kFullSize;
+  }
   // Starts a section of the page, and the step of the progress it is.
   void section(HtmlPage& page, const std::string& id, const std::string& title);
   // One item done; `weight` counts it as that many frames' worth of work,
@@ -204,9 +236,7 @@ class Study {
     std::vector<Light> lights;
   };
   const LightAlone& measured_light_alone();
-  [[nodiscard]] int traced_samples() const {
-    return (options_.quick ? kQuickSize : kFullSize).samples;
-  }
+  [[nodiscard]] int traced_samples() const { return size().samples; }
   // The spot light's shadow factor against the filtered reference.
   std::optional<ShadowMetrics> measure_against_filtered(const ShadowSettings& shadow,
                                                         const std::optional<Image>& technique);
@@ -228,6 +258,8 @@ class Study {
   const Scene& scene_;
   StudyOptions options_;
   gl::Context& context_;
+  StudyMode mode_;
+  const std::atomic<bool>* stop_;
   Renderer renderer_;
   RenderSettings base_render_;
   ShadowSettings base_shadow_;
@@ -245,7 +277,8 @@ class Study {
   std::optional<Scene> foliage_scene_;
   // What the verdict is drawn from (a foliage section sets its line).
   StudyFindings findings_;
-  ProgressBar progress_{"report"};
+  std::optional<ProgressBar> progress_;           // none in a rehearsal
+  std::optional<BackgroundPngWriter> png_writer_;  // none in a rehearsal
   int items_ = 0;
   int failed_ = 0;
   int errors_seen_ = 0;

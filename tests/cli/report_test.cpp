@@ -239,9 +239,14 @@ class Report : public ::testing::Test {
       fs::remove(stamp);
       fs::remove_all(dir_);
       fs::create_directories(dir_);
-      status_ =
-          run_shell(std::string(PENUMBRA_BINARY) + " report --quick -o " + dir_.string() + " > " +
-                    (shared / "stdout.txt").string() + " 2> " + (shared / "stderr.txt").string());
+      // Its own temporary folder, which the shader rehearsal's files must
+      // leave empty.
+      fs::remove_all(temporary_dir());
+      fs::create_directories(temporary_dir());
+      status_ = run_shell("TMPDIR=" + temporary_dir().string() + " " + PENUMBRA_BINARY +
+                          " report --quick -o " + dir_.string() + " > " +
+                          (shared / "stdout.txt").string() + " 2> " +
+                          (shared / "stderr.txt").string());
       if (status_ == 0) std::ofstream(stamp) << maker;
     }
     flock(lock, LOCK_UN);
@@ -262,6 +267,7 @@ class Report : public ::testing::Test {
           {(*it)[1].str(), std::stoi((*it)[2].str()), std::stoi((*it)[3].str()), command});
     }
   }
+  static fs::path temporary_dir() { return fs::path(PENUMBRA_TEST_OUTPUT) / "report-quick" / "tmp"; }
   // The binary's size and modification time: a rebuilt binary makes a new report.
   static std::string binary_identity() {
     const fs::path binary(PENUMBRA_BINARY);
@@ -639,6 +645,15 @@ TEST_F(Report, NotOnATerminalProgressIsOneLinePerStepThenTheCost) {
       stderr_, std::regex(R"re(\nreport: [0-9.]+ s wall, [0-9.]+ s CPU, \d+ MB peak memory\n$)re")))
       << stderr_;
   EXPECT_EQ(stderr_.find('\r'), std::string::npos) << "no bar drawn outside a terminal";
+}
+
+// On llvmpipe a second thread rehearses the study at a tiny size so that
+// the shaders are compiled ahead (report/shader_rehearsal.hpp), in a
+// temporary folder of its own: gone when the report is.
+TEST_F(Report, TheShaderRehearsalLeavesNoFileBehind) {
+  ASSERT_EQ(status_, 0);
+  ASSERT_TRUE(fs::is_directory(temporary_dir()));
+  EXPECT_TRUE(fs::is_empty(temporary_dir())) << temporary_dir();
 }
 
 TEST_F(Report, AQuickReportSaysSoAndWhatDiffers) {

@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include "reference/error_image.hpp"
-#include "reference/reference_cache.hpp"
 #include "report/foliage_scene.hpp"
 #include "report/svg_plot.hpp"
 #include "scene/gltf_scene.hpp"
@@ -189,11 +188,10 @@ void Study::foliage_section(HtmlPage& page) {
     step();
     std::optional<TracedReference>& traced = traced_by_light[light];
     try {
-      traced = traced_reference(renderer, render, base_shadow_, samples, default_cache_dir());
+      traced = trace(renderer, render, base_shadow_);
       check_gl();
       const std::string file = "foliage-" + light_name + "-traced.png";
-      write_png(traced->image, (std::filesystem::path(options_.output_dir) / file).string(),
-                PngEncoding::Linear);
+      write_report_png(traced->image, file, PngEncoding::Linear);
       figures.push_back(image_figure(file, light_name + ": traced reference", traced->image.width,
                                      traced->image.height));
     } catch (const std::exception& e) {
@@ -220,8 +218,7 @@ void Study::foliage_section(HtmlPage& page) {
       const std::string file =
           "foliage-" + light_name + "-error-" + name_of(techniques[i]) + ".png";
       const Image error = error_image(*image, traced->image);
-      write_png(error, (std::filesystem::path(options_.output_dir) / file).string(),
-                PngEncoding::Linear);
+      write_report_png(error, file, PngEncoding::Linear);
       figures.push_back(image_figure(file,
                                      light_name + ", " + name_of(techniques[i]) + " minus traced",
                                      error.width, error.height));

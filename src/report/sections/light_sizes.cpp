@@ -3,7 +3,6 @@
 #include <cmath>
 #include <iterator>
 
-#include "reference/reference_cache.hpp"
 #include "report/svg_plot.hpp"
 
 namespace penumbra {
@@ -63,8 +62,7 @@ void Study::light_size_sweep(HtmlPage& page) {
       traced = base_traced();
     } else {
       try {
-        sized =
-            traced_reference(renderer_, base_render_, light, traced_samples(), default_cache_dir());
+        sized = trace(renderer_, base_render_, light);
         check_gl();
         traced = &*sized;
       } catch (const std::exception&) {

@@ -3,7 +3,6 @@
 #include <vector>
 
 #include "app/light_choice.hpp"
-#include "reference/reference_cache.hpp"
 
 namespace penumbra {
 
@@ -84,6 +83,9 @@ void Study::light_types_section(HtmlPage& page) {
     std::vector<std::optional<Image>> shadows(techniques.size());
     for (std::size_t i = 0; i < techniques.size(); ++i) {
       const Technique t = techniques[i];
+      // Each technique makes its own filtered arrays (a point light's six
+      // faces of them), as in section 1.
+      renderer.release_filtered_maps();
       figures.push_back(figure(renderer, choice, "light-" + choice + "-" + name_of(t) + ".png",
                                choice + ", " + name_of(t), base_render_, with(t), &shadows[i]));
     }
@@ -98,7 +100,7 @@ void Study::light_types_section(HtmlPage& page) {
       figures.push_back(figure(renderer, choice, "light-" + choice + "-" + name + ".png",
                                choice + ": --view " + name, r, base_shadow_));
     }
-    const std::vector<double> rmse = measure_light_type(shadows, samples, rows);
+    const std::vector<double> rmse = measure_light_type(shadows, rows);
     if (type == LightType::Directional) {
       for (std::size_t i = 0; i < techniques.size(); ++i) {
         if (rmse[i] >= 0.0) findings_.directional_rmse.push_back({name_of(techniques[i]), rmse[i]});
@@ -113,12 +115,11 @@ void Study::light_types_section(HtmlPage& page) {
 // its row (one row per technique's shadow factor, after the header);
 // returns them (-1 where one failed).
 std::vector<double> Study::measure_light_type(const std::vector<std::optional<Image>>& shadows,
-                                              int samples,
                                               std::vector<std::vector<std::string>>& rows) {
   step();
   std::optional<TracedReference> traced;
   try {
-    traced = traced_reference(renderer_, base_render_, base_shadow_, samples, default_cache_dir());
+    traced = trace(renderer_, base_render_, base_shadow_);
     check_gl();
   } catch (const std::exception&) {
     ++failed_;

@@ -1,5 +1,6 @@
 #include "report/study_run.hpp"
 
+#include <algorithm>
 #include <iterator>
 
 namespace penumbra {
@@ -32,15 +33,28 @@ void Study::techniques_section(HtmlPage& page) {
       "reference:",
       "section 7, close-ups", "#closeups");
   std::vector<HtmlFigure> figures;
-  for (Technique t : kTechniques) {
+  // Each technique makes its own filtered maps: kept, every format's
+  // arrays for both lights would add up (msm's, evsm4's and the soft
+  // shadows' summed-area tables, a cascade each of the sun's).
+  const auto plain = [&](Technique t) {
+    renderer_.release_filtered_maps();
     std::optional<Image> shadow_factor;
     figures.push_back(figure("technique-" + name_of(t) + ".png", name_of(t), base_render_, with(t),
                              &shadow_factor));
     if (shadow_factor) technique_shadows_.emplace_back(t, std::move(*shadow_factor));
-  }
-  for (Technique t : kSoftTechniques) {
+  };
+  const auto soft_shadows = [&](Technique t) {
+    renderer_.release_filtered_maps();
     figures.push_back(figure("technique-" + name_of(t) + "-soft.png", name_of(t) + " --soft (SAT)",
                              base_render_, soft(t)));
+  };
+  if (rehearsal()) {
+    // From the other end (report/shader_rehearsal.hpp).
+    std::for_each(std::rbegin(kSoftTechniques), std::rend(kSoftTechniques), soft_shadows);
+    std::for_each(std::rbegin(kTechniques), std::rend(kTechniques), plain);
+  } else {
+    std::for_each(std::begin(kTechniques), std::end(kTechniques), plain);
+    std::for_each(std::begin(kSoftTechniques), std::end(kSoftTechniques), soft_shadows);
   }
   RenderSettings ao = base_render_;
   ao.view = View::Ao;
