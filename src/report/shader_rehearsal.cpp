@@ -43,6 +43,7 @@ ShaderRehearsal::ShaderRehearsal(const Scene& scene, const StudyOptions& options
                                  gl::Context& study_context)
     : folder_(new_temporary_folder()) {
   if (folder_.empty()) return;
+  remove_on_signal_ = std::make_unique<RemoveOnSignal>(folder_, true);
   // Made here, not on the rehearsal's thread: making a context sets
   // environment variables (gl::Context::create_headless), which another
   // thread's getenv must not race.

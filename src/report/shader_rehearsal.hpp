@@ -19,6 +19,7 @@
 #include <string>
 #include <thread>
 
+#include "io/signal_cleanup.hpp"
 #include "penumbra/gl/context.hpp"
 #include "report/study.hpp"
 #include "scene/scene.hpp"
@@ -45,6 +46,7 @@ class ShaderRehearsal {
 
  private:
   std::string folder_;
+  std::unique_ptr<RemoveOnSignal> remove_on_signal_;  // the folder, on SIGINT or SIGTERM
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

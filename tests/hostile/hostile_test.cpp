@@ -244,20 +244,25 @@ TEST(Hostile, LongestFileNameIsWritten) {
 }
 
 // 11. An interrupted report leaves neither a partial folder nor its
-// temporary one.
+// temporary one, nor the folder of its shader rehearsal (on llvmpipe,
+// report/shader_rehearsal.hpp) in TMPDIR.
 TEST(Hostile, InterruptedFolderOutputLeavesNothing) {
   const std::string dir = fresh_dir("interrupted");
+  const std::string tmp = fresh_dir("interrupted-tmp");
   const std::string report = dir + "/report";
+  setenv("TMPDIR", tmp.c_str(), 1);
   const pid_t penumbra = spawn({"report", "--quick", "-o", report});
-  // Interrupted once it has written some images.
-  const auto staged_files = [&] { return holds_staged_files(dir); };
-  const bool started = eventually(staged_files, 120s);
+  unsetenv("TMPDIR");
+  // Interrupted once it has written some images, while it rehearses.
+  const auto under_way = [&] { return holds_staged_files(dir) && !fs::is_empty(tmp); };
+  const bool started = eventually(under_way, 120s);
   kill(penumbra, SIGTERM);
   int status = 0;
   waitpid(penumbra, &status, 0);
-  ASSERT_TRUE(started) << "the report wrote nothing within 120 s";
+  ASSERT_TRUE(started) << "the report wrote nothing, or rehearsed nothing, within 120 s";
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
   EXPECT_TRUE(fs::is_empty(dir)) << "left behind: " << fs::directory_iterator(dir)->path();
+  EXPECT_TRUE(fs::is_empty(tmp)) << "left behind: " << fs::directory_iterator(tmp)->path();
 }
 
 // 11b. A crash (a failed assert inside a library raises SIGABRT; a driver
