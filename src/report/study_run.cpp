@@ -1,5 +1,7 @@
 #include "report/study_run.hpp"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
@@ -123,6 +125,9 @@ std::string Study::path_of(const std::string& file) const {
 
 void Study::section(HtmlPage& page, const std::string& id, const std::string& title) {
   if (stop_ != nullptr && *stop_) throw StudyStopped();
+  // What compiling took on a rehearsal's thread stays in its own malloc
+  // arena until given back: the report's peaks should not sit on it.
+  if (rehearsal()) malloc_trim(0);
   // What the last section's techniques left (their filtered arrays) is
   // made again where this one needs it.
   renderer_.release_filtered_maps();
