@@ -18,8 +18,7 @@ BackgroundPngWriter::~BackgroundPngWriter() {
   thread_.join();
 }
 
-void BackgroundPngWriter::write(const Image& image, const std::string& path,
-                                PngEncoding encoding) {
+void BackgroundPngWriter::write(const Image& image, const std::string& path, PngEncoding encoding) {
   Job job{path, png_pixels(image, encoding)};
   const std::size_t bytes = job.pixels.rgb.size();
   std::unique_lock lock(mutex_);

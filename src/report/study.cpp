@@ -29,8 +29,8 @@ std::string quick_banner() {
 
 }  // namespace
 
-Study::Study(const Scene& scene, const StudyOptions& options, gl::Context& context,
-             StudyMode mode, const std::atomic<bool>* stop)
+Study::Study(const Scene& scene, const StudyOptions& options, gl::Context& context, StudyMode mode,
+             const std::atomic<bool>* stop)
     : scene_(scene),
       options_(options),
       context_(context),
@@ -65,7 +65,8 @@ StudyResult Study::run() {
   // Compiling shaders is most of what llvmpipe does on this thread: a
   // rehearsal on another compiles them ahead (report/shader_rehearsal.hpp).
   std::optional<ShaderRehearsal> rehearsed;
-  if (!rehearsal() && ShaderRehearsal::helps(context_)) rehearsed.emplace(scene_, options_, context_);
+  if (!rehearsal() && ShaderRehearsal::helps(context_))
+    rehearsed.emplace(scene_, options_, context_);
   techniques_section(page);
   light_types_section(page);
   maps_section(page);

@@ -63,11 +63,8 @@ HtmlFigure Study::figure(Renderer& renderer, const std::string& scene_argument,
                                                  .edited = nullptr,
                                                  .output = file}));
   step();
-  // A rehearsal draws no map larger than its own: what llvmpipe compiles
-  // does not depend on the size (kRehearsalSize).
-  if (rehearsal()) shadow.map_size = std::min(shadow.map_size, size().map_size);
   try {
-    renderer.render(render, shadow);
+    renderer.render(render, drawn(shadow));
     const Image image = renderer.read_view();
     check_gl();
     write_report_png(image, file, png_encoding_for(render.view));
@@ -107,6 +104,13 @@ HtmlFigure Study::written_figure(const Image& image, const std::string& file,
     ++failed_;
   }
   return f;
+}
+
+ShadowSettings Study::drawn(ShadowSettings shadow) const {
+  // A rehearsal draws no map larger than its own: what llvmpipe compiles
+  // does not depend on the size (kRehearsalSize).
+  if (rehearsal()) shadow.map_size = std::min(shadow.map_size, size().map_size);
+  return shadow;
 }
 
 void Study::write_report_png(const Image& image, const std::string& file, PngEncoding encoding) {
@@ -232,8 +236,7 @@ std::optional<Image> Study::shadow_image(const ShadowSettings& shadow, View view
 }
 std::optional<Image> Study::shadow_image(Renderer& renderer, const RenderSettings& render,
                                          const ShadowSettings& shadow, View view) {
-  ShadowSettings s = shadow;
-  if (rehearsal()) s.map_size = std::min(s.map_size, size().map_size);
+  const ShadowSettings s = drawn(shadow);
   return image_or_failure([&] {
     return with_light_alone(renderer, render.light_index, [&](int light) {
       RenderSettings r = render;

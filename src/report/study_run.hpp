@@ -187,6 +187,9 @@ class Study {
   HtmlFigure written_figure(const Image& image, const std::string& file, const std::string& caption,
                             PngEncoding encoding);
   [[nodiscard]] std::string path_of(const std::string& file) const;
+  // The settings a frame of `shadow` is drawn with: `shadow`, or in a
+  // rehearsal its maps no larger than kRehearsalSize's.
+  [[nodiscard]] ShadowSettings drawn(ShadowSettings shadow) const;
   // Writes `image` as the report's `file` (a rehearsal writes nothing).
   void write_report_png(const Image& image, const std::string& file, PngEncoding encoding);
   // The traced reference of `renderer`'s frame for `render` and `shadow`,
@@ -277,7 +280,7 @@ class Study {
   std::optional<Scene> foliage_scene_;
   // What the verdict is drawn from (a foliage section sets its line).
   StudyFindings findings_;
-  std::optional<ProgressBar> progress_;           // none in a rehearsal
+  std::optional<ProgressBar> progress_;            // none in a rehearsal
   std::optional<BackgroundPngWriter> png_writer_;  // none in a rehearsal
   int items_ = 0;
   int failed_ = 0;

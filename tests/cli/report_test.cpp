@@ -243,10 +243,10 @@ class Report : public ::testing::Test {
       // leave empty.
       fs::remove_all(temporary_dir());
       fs::create_directories(temporary_dir());
-      status_ = run_shell("TMPDIR=" + temporary_dir().string() + " " + PENUMBRA_BINARY +
-                          " report --quick -o " + dir_.string() + " > " +
-                          (shared / "stdout.txt").string() + " 2> " +
-                          (shared / "stderr.txt").string());
+      status_ =
+          run_shell("TMPDIR=" + temporary_dir().string() + " " + PENUMBRA_BINARY +
+                    " report --quick -o " + dir_.string() + " > " +
+                    (shared / "stdout.txt").string() + " 2> " + (shared / "stderr.txt").string());
       if (status_ == 0) std::ofstream(stamp) << maker;
     }
     flock(lock, LOCK_UN);
@@ -267,7 +267,9 @@ class Report : public ::testing::Test {
           {(*it)[1].str(), std::stoi((*it)[2].str()), std::stoi((*it)[3].str()), command});
     }
   }
-  static fs::path temporary_dir() { return fs::path(PENUMBRA_TEST_OUTPUT) / "report-quick" / "tmp"; }
+  static fs::path temporary_dir() {
+    return fs::path(PENUMBRA_TEST_OUTPUT) / "report-quick" / "tmp";
+  }
   // The binary's size and modification time: a rebuilt binary makes a new report.
   static std::string binary_identity() {
     const fs::path binary(PENUMBRA_BINARY);

@@ -23,10 +23,11 @@ float srgb_curve(float linear) {
 TEST(PngPixels, BytesAreTheCurveRounded) {
   std::vector<float> values;
   const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
-  for (std::uint32_t bits = 0; bits <= one; bits += 61) values.push_back(std::bit_cast<float>(bits));
+  for (std::uint32_t bits = 0; bits <= one; bits += 61)
+    values.push_back(std::bit_cast<float>(bits));
   for (int k = 0; k <= 255; ++k) {
-    for (float v : {(k - 0.5f) / 255.0f, std::pow((k - 0.5f) / 255.0f, 2.4f),
-                    (k - 0.5f) / 255.0f / 12.92f}) {
+    for (float v :
+         {(k - 0.5f) / 255.0f, std::pow((k - 0.5f) / 255.0f, 2.4f), (k - 0.5f) / 255.0f / 12.92f}) {
       for (float w = std::nextafter(v, 0.0f), i = 0; i < 3; ++i, w = std::nextafter(w, 1.0f)) {
         values.push_back(w);
       }

@@ -31,13 +31,13 @@ class Context {
   static std::unique_ptr<Context> create_headless(const ContextOptions& options = {});
   ~Context();
   Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
 
   // Makes this context current on the calling thread (and whatever context
   // was current there no longer current). A context is current on one
   // thread at a time: make another current on the thread that held this
   // one before calling this on a second thread.
   void make_current();
-  Context& operator=(const Context&) = delete;
 
   [[nodiscard]] std::string renderer() const;
   [[nodiscard]] std::string vendor() const;
