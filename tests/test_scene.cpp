@@ -99,6 +99,13 @@ RenderSettings small_frame(int width, int height, View view) {
   return settings;
 }
 
+ShadowSettings virtual_maps(Technique technique) {
+  ShadowSettings settings;
+  settings.technique = technique;
+  settings.shadow_maps = ShadowMapKind::Virtual;
+  return settings;
+}
+
 std::string light_type_name(const ::testing::TestParamInfo<LightType>& info) {
   return std::string(enum_name<LightType>(kLightTypeNames, info.param));
 }

@@ -53,6 +53,8 @@ Light overhead_light(LightType type);
 
 // A small frame of the given view.
 RenderSettings small_frame(int width, int height, View view = View::Shadow);
+// The technique over virtual shadow maps, every other setting its default.
+ShadowSettings virtual_maps(Technique technique);
 
 // The light type's name, for tests instantiated over every light type.
 std::string light_type_name(const ::testing::TestParamInfo<LightType>& info);

@@ -20,7 +20,7 @@ using penumbra::testing::Result;
 using penumbra::testing::run;
 using penumbra::testing::write_gltf;
 
-const std::string kSmall = " --width 48 --height 32 --shadow-map-size 256";
+const std::string kSmallGltf = " --width 48 --height 32 --shadow-map-size 256";
 
 GltfSpec quad_scene() {
   GltfSpec spec;
@@ -38,7 +38,7 @@ TEST(CliGltf, MissingTextureIsOneWarningAndTheSceneRenders) {
   spec.materials[0].image = "cli-missing-leaf.png";
   const std::string scene = write_gltf("cli-missing-texture.gltf", spec);
   const std::string png = out_path("gltf-missing-texture.png");
-  const Result r = run("render --scene " + scene + kSmall + " -o " + png);
+  const Result r = run("render --scene " + scene + kSmallGltf + " -o " + png);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(png));
   EXPECT_EQ(r.err.rfind("penumbra: warning: ", 0), 0u) << r.err;
@@ -49,10 +49,11 @@ TEST(CliGltf, MissingTextureIsOneWarningAndTheSceneRenders) {
 TEST(CliGltf, CameraIndexIsCheckedAgainstTheFile) {
   const std::string scene = write_gltf("cli-one-camera.gltf", quad_scene());
   const std::string png = out_path("gltf-camera.png");
-  EXPECT_EQ(run("render --scene " + scene + " --camera-index 0" + kSmall + " -o " + png).status, 0);
-  expect_error("render --scene " + scene + " --camera-index 1" + kSmall, 2, "--camera-index",
+  EXPECT_EQ(run("render --scene " + scene + " --camera-index 0" + kSmallGltf + " -o " + png).status,
+            0);
+  expect_error("render --scene " + scene + " --camera-index 1" + kSmallGltf, 2, "--camera-index",
                out_path("gltf-camera-1.png"));
-  expect_error("render --scene default --camera-index 0" + kSmall, 2, "--camera-index",
+  expect_error("render --scene default --camera-index 0" + kSmallGltf, 2, "--camera-index",
                out_path("gltf-camera-default.png"));
 }
 
@@ -60,7 +61,7 @@ TEST(CliGltf, RequiredUnknownExtensionIsOneErrorNamingIt) {
   GltfSpec spec = quad_scene();
   spec.extensions_required.push_back("KHR_draco_mesh_compression");
   const std::string scene = write_gltf("cli-draco.gltf", spec);
-  expect_error("render --scene " + scene + kSmall, 1, "KHR_draco_mesh_compression",
+  expect_error("render --scene " + scene + kSmallGltf, 1, "KHR_draco_mesh_compression",
                out_path("gltf-draco.png"));
 }
 
@@ -73,7 +74,7 @@ TEST(CliGltf, BareSceneNotesEachAssumptionAndGroundAddsOne) {
   spec.materials.push_back({.double_sided = true});
   const std::string scene = write_gltf("cli-bare.gltf", spec);
   const std::string png = out_path("gltf-bare.png");
-  const Result r = run("render --scene " + scene + kSmall + " -o " + png);
+  const Result r = run("render --scene " + scene + kSmallGltf + " -o " + png);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(png));
   int lines = 0;
@@ -85,19 +86,20 @@ TEST(CliGltf, BareSceneNotesEachAssumptionAndGroundAddsOne) {
   for (const char* what : {"has no camera", "has no lights", "has no ground: none added"}) {
     EXPECT_NE(r.err.find(what), std::string::npos) << what << ": " << r.err;
   }
-  const Result g = run("render --scene " + scene + " --ground on" + kSmall + " -o " + png);
+  const Result g = run("render --scene " + scene + " --ground on" + kSmallGltf + " -o " + png);
   EXPECT_EQ(g.status, 0) << g.err;
   EXPECT_NE(g.err.find("has no ground: added"), std::string::npos) << g.err;
-  expect_error("render --scene default --ground on" + kSmall, 2, "--ground",
+  expect_error("render --scene default --ground on" + kSmallGltf, 2, "--ground",
                out_path("gltf-ground-default.png"));
-  expect_error("render --model " + scene + " --ground on" + kSmall, 2, "--ground",
+  expect_error("render --model " + scene + " --ground on" + kSmallGltf, 2, "--ground",
                out_path("gltf-ground-model.png"));
 }
 
 // A file with its own camera, lights and ground assumes nothing.
 TEST(CliGltf, CompleteSceneHasNoNotes) {
   const std::string scene = write_gltf("cli-complete.gltf", quad_scene());
-  const Result r = run("render --scene " + scene + kSmall + " -o " + out_path("gltf-complete.png"));
+  const Result r =
+      run("render --scene " + scene + kSmallGltf + " -o " + out_path("gltf-complete.png"));
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
 }

@@ -20,14 +20,14 @@ using penumbra::testing::run;
 using penumbra::testing::tetrahedron_obj;
 using penumbra::testing::write_model_file;
 
-const std::string kSmall = " --width 64 --height 48 --shadow-map-size 256";
+const std::string kSmallModel = " --width 64 --height 48 --shadow-map-size 256";
 
 TEST(CliModel, RendersAModelFile) {
   const std::string model = write_model_file("cli-tet.obj", tetrahedron_obj());
   for (const char* technique : {"hard", "pcss"}) {
     const std::string png = out_path(std::string("model-") + technique + ".png");
     const Result r =
-        run("render --model " + model + kSmall + " --technique " + technique + " -o " + png);
+        run("render --model " + model + kSmallModel + " --technique " + technique + " -o " + png);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_TRUE(fs::exists(png)) << technique;
   }
@@ -43,7 +43,7 @@ TEST(CliModel, RendersASceneFileWithAModel) {
                  "position": [0, 0, 0], "rotation": [0, 30, 0]}]
   })");
   const std::string png = out_path("model-scene.png");
-  const Result r = run("render --scene " + scene + kSmall + " -o " + png);
+  const Result r = run("render --scene " + scene + kSmallModel + " -o " + png);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(png));
 }
@@ -51,13 +51,13 @@ TEST(CliModel, RendersASceneFileWithAModel) {
 TEST(CliModel, CompareAndBenchTakeAModel) {
   const std::string model = write_model_file("cli-bench-tet.obj", tetrahedron_obj());
   const std::string json = out_path("model-compare.json");
-  Result r = run("compare --model " + model + kSmall +
+  Result r = run("compare --model " + model + kSmallModel +
                  " --techniques hard --reference-samples 4 --no-cache --json " + json);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(json));
   const std::string bench = out_path("model-bench.json");
-  r = run("bench --model " + model + kSmall + " --technique hard --frames 1 --warmup 0 --json " +
-          bench);
+  r = run("bench --model " + model + kSmallModel +
+          " --technique hard --frames 1 --warmup 0 --json " + bench);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(bench));
 }
@@ -78,7 +78,7 @@ TEST(CliModel, BrokenModelsAreOneErrorNamingTheFile) {
            {"cli-nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
            {"cli-inf.obj", "v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n"}}) {
     const std::string path = write_model_file(name, content);
-    expect_error("render --model " + path + kSmall, 1, path + ": ", out);
+    expect_error("render --model " + path + kSmallModel, 1, path + ": ", out);
   }
   // The other commands read the model before writing anything too.
   const std::string range = write_model_file("cli-range.obj", "v 0 0 0\nf 1 1 7\n");

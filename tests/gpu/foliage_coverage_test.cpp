@@ -88,7 +88,7 @@ RenderSettings view_settings(View view) {
   return rs;
 }
 
-Image render(Renderer& renderer, View view, const ShadowSettings& shadow) {
+Image render_view(Renderer& renderer, View view, const ShadowSettings& shadow) {
   renderer.render(view_settings(view), shadow);
   return renderer.read_view();
 }
@@ -140,7 +140,7 @@ TEST_F(GpuTest, LeafCardsCastTheirWholeShadowAtEveryMapSize) {
   ShadowSettings hard;
   hard.technique = Technique::Hard;
   hard.light_size = 0.0f;
-  const Image albedo = render(renderer, View::Albedo, hard);
+  const Image albedo = render_view(renderer, View::Albedo, hard);
   const TracedReference traced =
       traced_reference(renderer, view_settings(View::Shadow), hard, 1, "");
   const long reference = shadowed_ground(traced.image, albedo, traced.image);
@@ -148,7 +148,8 @@ TEST_F(GpuTest, LeafCardsCastTheirWholeShadowAtEveryMapSize) {
   ASSERT_GT(reference, 2000);
   for (const int size : {512, 1024, 2048, 4096}) {
     hard.map_size = size;
-    const long area = shadowed_ground(render(renderer, View::Shadow, hard), albedo, traced.image);
+    const long area =
+        shadowed_ground(render_view(renderer, View::Shadow, hard), albedo, traced.image);
     const double ratio = static_cast<double>(area) / static_cast<double>(reference);
     std::printf("hard %d²: %ld shadowed ground pixels, %.3f of the reference's\n", size, area,
                 ratio);
@@ -175,7 +176,7 @@ TEST_F(GpuTest, LeafWallKeepsItsCoverageWithDistance) {
     spec.cameras.push_back(
         {.position = {0, 0, 0}, .target = {0, 0, -1}, .yfov = yfov, .zfar = 200.0f});
     Renderer renderer(gltf_scene(testing::write_gltf("leaf-wall.gltf", spec)));
-    const Image albedo = render(renderer, View::Albedo, ShadowSettings{});
+    const Image albedo = render_view(renderer, View::Albedo, ShadowSettings{});
     // The wall's half-width in pixels, less a pixel at its edges.
     const float half = 2.0f / (distance * std::tan(0.5f * yfov)) * 0.5f * kImage - 1.0f;
     long wall = 0, leaves = 0;

@@ -130,8 +130,8 @@ TEST_F(GpuTest, ShadowLookupKeepsTheEngineLineNumbers) {
 
 // A ground quad and a box on it, flat normals per face; the casters are
 // the same triangles.
-struct Scene : testing::EngineMesh {
-  Scene() {
+struct GroundAndBox : testing::EngineMesh {
+  GroundAndBox() {
     quad({-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5});
     box({-0.8f, 0.0f, -0.8f}, {0.8f, 1.6f, 0.8f});
   }
@@ -241,7 +241,7 @@ class EngineFrame {
 
   ShadowBindings bindings_;
   ShadowMaps maps_;
-  Scene scene_;
+  GroundAndBox scene_;
   gl::Buffer vertices_ = gl::Buffer::from(std::span<const float>(scene_.vertices), "test vertices");
   gl::Buffer indices_ =
       gl::Buffer::from(std::span<const std::uint32_t>(scene_.indices), "test indices");

@@ -19,7 +19,7 @@ namespace {
 
 using testing::GpuTest;
 
-constexpr int kMapSize = 64;
+constexpr int kDepthMapSize = 64;
 constexpr int kPlanes = 5;
 
 // A stack of tilted planes, wide enough to fill most views, lit by one
@@ -73,7 +73,7 @@ Hit trace(const TriangleMesh& mesh, const LightView& view, const glm::dvec3& ori
 // The traced hit through map point (x, y) (texel units, GL's rows).
 Hit trace_map_point(const TriangleMesh& mesh, const LightView& view, double x, double y) {
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(view.view_projection));
-  const glm::dvec2 ndc = glm::dvec2(x, y) / double(kMapSize) * 2.0 - 1.0;
+  const glm::dvec2 ndc = glm::dvec2(x, y) / double(kDepthMapSize) * 2.0 - 1.0;
   const glm::dvec4 near_h = inverse * glm::dvec4(ndc, -1.0, 1.0);
   const glm::dvec4 far_h = inverse * glm::dvec4(ndc, 1.0, 1.0);
   const glm::dvec3 near_point = glm::dvec3(near_h) / near_h.w;
@@ -93,9 +93,9 @@ struct MapCheck {
 MapCheck check_map(const Image& map, const TriangleMesh& mesh, const LightView& view) {
   MapCheck check;
   const double range = double(view.z1) - view.z0;
-  for (int row = 0; row < kMapSize; ++row) {   // GL's row
-    const int image_row = kMapSize - 1 - row;  // read_shadow_view's rows run top down
-    for (int column = 0; column < kMapSize; ++column) {
+  for (int row = 0; row < kDepthMapSize; ++row) {   // GL's row
+    const int image_row = kDepthMapSize - 1 - row;  // read_shadow_view's rows run top down
+    for (int column = 0; column < kDepthMapSize; ++column) {
       const double x = column + 0.5, y = row + 0.5;
       const Hit centre = trace_map_point(mesh, view, x, y);
       bool edge = false;
@@ -147,7 +147,7 @@ TEST_P(ShadowMapDepth, MapsHoldTheTracedRelativeDepth) {
   render.height = 48;
   ShadowSettings shadow;
   shadow.technique = Technique::Hard;
-  shadow.map_size = kMapSize;
+  shadow.map_size = kDepthMapSize;
   shadow.cascades = 2;
   renderer.render(render, shadow);
   const LightShadowViews& views = renderer.shadow_views(0);
@@ -156,7 +156,7 @@ TEST_P(ShadowMapDepth, MapsHoldTheTracedRelativeDepth) {
     const MapCheck check = check_map(map, renderer.mesh(), views.views[v]);
     std::printf("view %zu: %d texels checked, %d on edges, worst %.2f units\n", v, check.checked,
                 check.skipped, check.worst);
-    EXPECT_GT(check.checked, kMapSize * kMapSize / 2) << "view " << v;
+    EXPECT_GT(check.checked, kDepthMapSize * kDepthMapSize / 2) << "view " << v;
     EXPECT_LE(check.worst, 8.0) << "view " << v;
   }
 }

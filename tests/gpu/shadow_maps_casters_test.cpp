@@ -41,14 +41,14 @@ CasterBounds unit_box_at(const glm::vec3& centre) {
 // Two spot lights looking straight down, 20 units apart, over a ground
 // (the box -12..32 x -12..12, 0.1 thick), and a few unit boxes placed by
 // their model matrices.
-struct Scene {
+struct TwoSpotLightsScene {
   std::vector<Light> lights;
   CameraFrustum camera;
   ShadowSettings settings;
   std::vector<glm::vec3> box_centres;
   CasterBounds ground{{-12.0f, -0.1f, -12.0f}, {32.0f, 0.0f, 12.0f}};
 
-  Scene() {
+  TwoSpotLightsScene() {
     for (float x : {0.0f, 20.0f}) {
       Light spot;
       spot.position = {x, 10.0f, 0.0f};
@@ -76,7 +76,7 @@ class Engine {
       : ground_(box_triangles(glm::vec3(0.0f), glm::vec3(1.0f))),
         box_(box_triangles(glm::vec3(-0.5f), glm::vec3(0.5f))) {}
 
-  void frame(ShadowMaps& maps, const Scene& scene) {
+  void frame(ShadowMaps& maps, const TwoSpotLightsScene& scene) {
     maps.update(scene.lights, scene.camera, std::span<const CasterBounds>(scene.bounds()),
                 scene.settings);
     drawn.clear();
@@ -114,7 +114,7 @@ std::vector<float> depths(const ShadowMaps& maps) {
 }
 
 TEST_F(GpuTest, CasterModelMatrixPlacesObjectsBySetModelAndByName) {
-  Scene scene;
+  TwoSpotLightsScene scene;
   scene.box_centres = {{2.0f, 2.0f, 0.0f}};
   Mesh ground(box_triangles(scene.ground.min, scene.ground.max));
   Mesh box(box_triangles(glm::vec3(-0.5f), glm::vec3(0.5f)));
@@ -198,7 +198,7 @@ TEST_F(GpuTest, UpdateRefitsWhenTheCastersChange) {
 // arrays without bumping it keeps the old fit), and a bumped generation
 // refits as a fresh ShadowMaps fits.
 TEST_F(GpuTest, UpdateRefitsWhenTheEngineBumpsTheGeneration) {
-  Scene scene;
+  TwoSpotLightsScene scene;
   std::vector<glm::vec3> positions = box_triangles({-10.0f, 0.0f, -10.0f}, {30.0f, 2.0f, 10.0f});
   std::vector<std::uint32_t> indices(positions.size());
   for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i);
@@ -243,7 +243,7 @@ TEST_F(GpuTest, UpdateRefitsWhenTheEngineBumpsTheGeneration) {
 }
 
 TEST_F(GpuTest, StaticFrameDrawsNoViewAndInvalidateDrawsThemAll) {
-  Scene scene;
+  TwoSpotLightsScene scene;
   ShadowMaps maps;
   Engine engine;
   engine.frame(maps, scene);
@@ -271,7 +271,7 @@ TEST_F(GpuTest, StaticFrameDrawsNoViewAndInvalidateDrawsThemAll) {
 class MovingCasterTest : public GpuTest, public ::testing::WithParamInterface<bool> {};
 
 TEST_P(MovingCasterTest, MovingOneCasterDrawsOnlyTheViewsThatSeeIt) {
-  Scene scene;
+  TwoSpotLightsScene scene;
   scene.settings.technique = Technique::Vsm;
   scene.settings.filter = Filter::Gaussian;
   scene.settings.blur = 2;

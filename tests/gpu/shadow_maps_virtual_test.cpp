@@ -37,8 +37,8 @@ const std::string kFragment =
 
 // A 24 x 24 ground and three boxes on it, flat normals per face; the
 // casters are the same triangles.
-struct Scene : testing::EngineMesh {
-  Scene() {
+struct GroundAndBoxes : testing::EngineMesh {
+  GroundAndBoxes() {
     quad({-12, 0, 12}, {12, 0, 12}, {12, 0, -12}, {-12, 0, -12});
     box({-1.0f, 0.0f, -1.0f}, {1.0f, 2.0f, 1.0f});
     box({2.0f, 0.0f, -3.0f}, {3.0f, 3.0f, -2.0f});
@@ -132,7 +132,7 @@ class Engine {
                    nullptr);
   }
 
-  Scene scene_;
+  GroundAndBoxes scene_;
   gl::Buffer vertices_ = gl::Buffer::from(std::span<const float>(scene_.vertices), "test vertices");
   gl::Buffer indices_ =
       gl::Buffer::from(std::span<const std::uint32_t>(scene_.indices), "test indices");

@@ -124,10 +124,8 @@ BorderSteps measure_border_steps(const ShadowSettings& shadow, float sun_degrees
   return steps;
 }
 
-ShadowSettings virtual_maps(Technique technique) {
-  ShadowSettings s;
-  s.technique = technique;
-  s.shadow_maps = ShadowMapKind::Virtual;
+ShadowSettings virtual_maps_in_a_small_pool(Technique technique) {
+  ShadowSettings s = testing::virtual_maps(technique);
   // A pool with no room for a finer level bias: the levels one texel per
   // pixel asks for, so that their borders cross the image (the test checks
   // that every page was served).
@@ -136,14 +134,14 @@ ShadowSettings virtual_maps(Technique technique) {
 }
 
 TEST_F(GpuTest, VirtualShadowsHaveNoSeamAtPageOrLevelBorders) {
-  ShadowSettings pcf = virtual_maps(Technique::Pcf);
+  ShadowSettings pcf = virtual_maps_in_a_small_pool(Technique::Pcf);
   pcf.pcf_width = 8.0f;  // windows reach 4 texels into the neighbouring page
   struct Case {
     ShadowSettings shadow;
     float sun_degrees;
   };
-  for (const Case& c : {Case{virtual_maps(Technique::Hard), 0.0f}, Case{pcf, 1.0f},
-                        Case{virtual_maps(Technique::Pcss), 6.0f}}) {
+  for (const Case& c : {Case{virtual_maps_in_a_small_pool(Technique::Hard), 0.0f}, Case{pcf, 1.0f},
+                        Case{virtual_maps_in_a_small_pool(Technique::Pcss), 6.0f}}) {
     const BorderSteps s = measure_border_steps(c.shadow, c.sun_degrees);
     const std::string name(enum_name<Technique>(kTechniqueNames, c.shadow.technique));
     for (const auto& [kind, b] : {std::pair{"page", s.page}, std::pair{"level", s.level}}) {

@@ -21,11 +21,13 @@
 #include "render/virtual_page_orbit.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/mesh.hpp"
+#include "test_scene.hpp"
 
 namespace penumbra {
 namespace {
 
 using testing::GpuTest;
+using testing::virtual_maps;
 
 // The default scene under its sun alone.
 Scene sun_scene() {
@@ -41,13 +43,6 @@ RenderSettings shadow_view(int width, int height) {
   rs.height = height;
   rs.view = View::Shadow;
   return rs;
-}
-
-ShadowSettings virtual_maps(Technique technique) {
-  ShadowSettings s;
-  s.technique = technique;
-  s.shadow_maps = ShadowMapKind::Virtual;
-  return s;
 }
 
 using Page = std::tuple<int, int, int>;  // level, world page x, y

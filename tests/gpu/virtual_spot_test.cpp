@@ -26,6 +26,7 @@ namespace penumbra {
 namespace {
 
 using testing::GpuTest;
+using testing::virtual_maps;
 
 // The default scene, the camera nearer, lit by its spot alone; with `second_spot`, by a
 // second spot too, from the other side of the objects.
@@ -50,13 +51,6 @@ RenderSettings camera_view(View view, int light_index = 0) {
   RenderSettings rs = testing::small_frame(384, 256, view);
   rs.light_index = light_index;
   return rs;
-}
-
-ShadowSettings virtual_maps(Technique technique) {
-  ShadowSettings s;
-  s.technique = technique;
-  s.shadow_maps = ShadowMapKind::Virtual;
-  return s;
 }
 
 // A spot light's virtual maps in the last render(), and the index of its
