@@ -1,14 +1,11 @@
 #include "app/command_line.hpp"
 
+#include "app/option_style.hpp"
 #include "app/scene_options.hpp"
 
 namespace penumbra {
 
 namespace {
-
-std::string flag(std::string_view name) {
-  return "--" + std::string(name);
-}
 
 std::string text(float value) {
   return format_float(value);

@@ -15,6 +15,7 @@
 #include "app/option_style.hpp"
 #include "app/options.hpp"
 #include "app/scene_source.hpp"
+#include "core/number_text.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image.hpp"
 #include "io/progress_bar.hpp"
@@ -163,12 +164,6 @@ void print_table(const std::vector<Row>& rows, std::size_t first_numeric) {
     }
     std::printf("%s\n", line.c_str());
   }
-}
-
-std::string fixed(double v, int digits) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
 }
 
 std::string percent(double fraction) {

@@ -20,10 +20,6 @@ constexpr std::string_view kRangeValidator = "range:";
 constexpr std::string_view kChoicesValidator = "choices:";
 constexpr std::string_view kSuggestionsValidator = "suggestions:";
 
-std::string flag(std::string_view name) {
-  return "--" + std::string(name);
-}
-
 std::string joined(const std::vector<std::string>& names, const char* separator) {
   std::string out;
   for (const std::string& name : names) out += (out.empty() ? "" : separator) + name;
@@ -119,6 +115,10 @@ std::string validator_text(const CLI::Option& option, std::string_view kind) {
 }
 
 }  // namespace
+
+std::string flag(std::string_view name) {
+  return "--" + std::string(name);
+}
 
 CLI::Option* in_group(CLI::Option* option, OptionGroup group) {
   return option->group(group_title(group));

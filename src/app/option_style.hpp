@@ -13,6 +13,9 @@
 
 namespace penumbra {
 
+// The option's flag as typed: "--name".
+std::string flag(std::string_view name);
+
 // Puts the option in a --help section; returns it.
 CLI::Option* in_group(CLI::Option* option, OptionGroup group);
 

@@ -13,10 +13,6 @@ namespace penumbra {
 
 namespace {
 
-std::string flag(std::string_view name) {
-  return "--" + std::string(name);
-}
-
 float parse_number(std::string_view name, std::string_view text) {
   float value = 0.0f;
   const char* end = text.data() + text.size();

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <sstream>
 
 #include "app/command_line.hpp"
 #include "app/light_choice.hpp"
@@ -16,14 +15,6 @@
 #include "reference/reference_cache.hpp"
 
 namespace penumbra {
-
-std::string fixed(double value, int digits) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(digits);
-  out << value;
-  return out.str();
-}
 
 std::string name_of(Technique t) {
   return std::string(enum_name<Technique>(kTechniqueNames, t));

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/number_text.hpp"
 #include "io/image.hpp"
 #include "io/png_writer.hpp"
 #include "io/progress_bar.hpp"
@@ -29,7 +30,6 @@
 
 namespace penumbra {
 
-std::string fixed(double value, int digits);
 std::string name_of(Technique t);
 // Bytes per texel of the map a technique's lookup reads: the depth map for
 // the techniques that test depths, the representation for the others.

@@ -1,21 +1,11 @@
 #include "report/verdict.hpp"
 
 #include <algorithm>
-#include <cstdio>
 
+#include "core/number_text.hpp"
 #include "report/ranking.hpp"
 
 namespace penumbra {
-
-namespace {
-
-std::string fixed(double value, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, value);
-  return text;
-}
-
-}  // namespace
 
 NamedValue least_named(const std::vector<NamedValue>& values, int digits) {
   std::vector<double> v;
