@@ -9,7 +9,7 @@
 namespace penumbra {
 
 namespace {
-constexpr int kGroup = 8;           // local_size_x and _y of depth_hierarchy.comp
+constexpr int kHierarchyGroup = 8;  // local_size_x and _y of depth_hierarchy.comp
 constexpr double kBoundsBytes = 8;  // GL_RG32F
 
 int level_count(int width, int height) {
@@ -53,8 +53,7 @@ void DepthHierarchyPass::execute(const gl::Texture& depth_maps) {
                          GL_RG32F);
     }
     glBindImageTexture(IMAGE_OUTPUT_2, hierarchy_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
-    glDispatchCompute(static_cast<GLuint>((w + kGroup - 1) / kGroup),
-                      static_cast<GLuint>((h + kGroup - 1) / kGroup),
+    glDispatchCompute(gl::work_groups(w, kHierarchyGroup), gl::work_groups(h, kHierarchyGroup),
                       static_cast<GLuint>(depth_maps.layers()));
     // The next level reads what this one wrote.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -22,10 +22,6 @@ constexpr int kDirectRows = 8;  // GROUP_Y: the direct passes' workgroups are 32
 // horizontal pass's work.
 constexpr int kDirectBandRows = 256;
 
-GLuint groups(int size, int tile) {
-  return static_cast<GLuint>((size + tile - 1) / tile);
-}
-
 }  // namespace
 
 FusedFilterPass::FusedFilterPass(FilterStaging staging)
@@ -58,7 +54,8 @@ TexelTraffic FusedFilterPass::texel_traffic(GLenum format, int radius, int width
   const int rows =
       tile_rows(radius, channel_count(format), shared_bytes, staged_channels(format, samples));
   if (rows == 0 || width <= 0 || height <= 0) return {};
-  const double tiles = static_cast<double>(groups(width, kTileX)) * groups(height, rows);
+  const double tiles =
+      static_cast<double>(gl::work_groups(width, kTileX)) * gl::work_groups(height, rows);
   const double texels_read = tiles * (kTileX + 2.0 * radius) * (rows + 2.0 * radius);
   return {4.0 * samples * texels_read / (static_cast<double>(width) * height),
           1.0 * bytes_per_texel(format)};
@@ -109,9 +106,9 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
       filtered_map_levels(settings, depth_maps.width(), depth_maps.height()));
 
   glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "resolve+filter (fused)");
-  const GLuint groups_x = groups(output_.width(), kTileX);
+  const GLuint groups_x = gl::work_groups(output_.width(), kTileX);
   if (shared_memory_) {
-    const GLuint groups_y = groups(output_.height(), rows);
+    const GLuint groups_y = gl::work_groups(output_.height(), rows);
     const gl::Program& tiled = program({technique, quantized, radius, rows, samples, 0});
     tiled.use();
     set_representation_constants(tiled.id(), settings);
@@ -145,7 +142,7 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
       glBindImageTexture(IMAGE_OUTPUT, target.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, target_format);
       glProgramUniform1i(program.id(), 3, layer);
       glProgramUniform3i(program.id(), 4, from, to, band_first);
-      glDispatchCompute(groups_x, groups(to - from, kDirectRows), 1);
+      glDispatchCompute(groups_x, gl::work_groups(to - from, kDirectRows), 1);
     };
     for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
       for (int layer = first; layer < first + count; ++layer) {

@@ -13,10 +13,6 @@ namespace penumbra {
 
 namespace {
 
-GLuint groups(int size, int tile) {
-  return static_cast<GLuint>((size + tile - 1) / tile);
-}
-
 // `texture` as a 2D array shaped like `like`, with `levels` mip levels.
 bool ensure_like(gl::Texture& texture, const gl::Texture& like, const char* label, int levels = 1) {
   return gl::ensure_texture_array(texture, like.format(), like.width(), like.height(),
@@ -52,11 +48,13 @@ void GaussianBlurPass::dispatch(const gl::Program& program, const gl::Texture& f
   for_each_layer_run(layers, from.layers(), all, [&](int first, int count) {
     glProgramUniform1i(program.id(), 0, first);
     if (axis == 0) {
-      glDispatchCompute(groups(from.width(), GAUSSIAN_TILE_ALONG),
-                        groups(from.height(), GAUSSIAN_TILE_ACROSS), static_cast<GLuint>(count));
+      glDispatchCompute(gl::work_groups(from.width(), GAUSSIAN_TILE_ALONG),
+                        gl::work_groups(from.height(), GAUSSIAN_TILE_ACROSS),
+                        static_cast<GLuint>(count));
     } else {
-      glDispatchCompute(groups(from.width(), GAUSSIAN_TILE_ACROSS),
-                        groups(from.height(), GAUSSIAN_TILE_ALONG), static_cast<GLuint>(count));
+      glDispatchCompute(gl::work_groups(from.width(), GAUSSIAN_TILE_ACROSS),
+                        gl::work_groups(from.height(), GAUSSIAN_TILE_ALONG),
+                        static_cast<GLuint>(count));
     }
   });
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -65,8 +63,8 @@ void GaussianBlurPass::dispatch(const gl::Program& program, const gl::Texture& f
 TexelTraffic GaussianBlurPass::texel_traffic(GLenum format, int radius, int axis, int width,
                                              int height) {
   const double along = axis == 0 ? width : height, across = axis == 0 ? height : width;
-  const double tiles_along = groups(static_cast<int>(along), GAUSSIAN_TILE_ALONG);
-  const double tiles_across = groups(static_cast<int>(across), GAUSSIAN_TILE_ACROSS);
+  const double tiles_along = gl::work_groups(static_cast<int>(along), GAUSSIAN_TILE_ALONG);
+  const double tiles_across = gl::work_groups(static_cast<int>(across), GAUSSIAN_TILE_ACROSS);
   const double texels_read =
       tiles_along * (GAUSSIAN_TILE_ALONG + 2.0 * radius) * tiles_across * GAUSSIAN_TILE_ACROSS;
   const double bytes = bytes_per_texel(format);

@@ -8,7 +8,7 @@
 namespace penumbra {
 
 namespace {
-constexpr int kGroup = 8;  // local_size_x and _y of downsample.comp
+constexpr int kDownsampleGroup = 8;  // local_size_x and _y of downsample.comp
 }  // namespace
 
 TexelTraffic MipChainPass::texel_traffic(GLenum format, int width, int height, int levels) {
@@ -47,8 +47,7 @@ void MipChainPass::execute(const gl::Texture& maps) {
     h = std::max(h / 2, 1);
     glBindImageTexture(IMAGE_OUTPUT, maps.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, format);
     glBindImageTexture(IMAGE_OUTPUT_2, maps.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, format);
-    glDispatchCompute(static_cast<GLuint>((w + kGroup - 1) / kGroup),
-                      static_cast<GLuint>((h + kGroup - 1) / kGroup),
+    glDispatchCompute(gl::work_groups(w, kDownsampleGroup), gl::work_groups(h, kDownsampleGroup),
                       static_cast<GLuint>(maps.layers()));
     // The next level reads what this one wrote.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

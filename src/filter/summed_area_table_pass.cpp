@@ -10,12 +10,6 @@
 
 namespace penumbra {
 
-namespace {
-GLuint groups(int size, int local) {
-  return static_cast<GLuint>((size + local - 1) / local);
-}
-}  // namespace
-
 SatScan preferred_sat_scan(std::string_view renderer) {
   return gl::is_cpu_rasterizer(renderer) ? SatScan::Serial : SatScan::Parallel;
 }
@@ -76,14 +70,14 @@ void SummedAreaTablePass::scan_parallel(const gl::Texture& source, GLenum format
     glBindTextureUnit(UNIT_COMPUTE_INPUT, source.id());
     glBindSampler(UNIT_COMPUTE_INPUT, 0);
     glBindImageTexture(IMAGE_OUTPUT, table_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-    glDispatchCompute(groups(source.height(), SAT_TILE_ACROSS), 1, layers);
+    glDispatchCompute(gl::work_groups(source.height(), SAT_TILE_ACROSS), 1, layers);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
   {
     gl::GpuPassScope timed(profiler, gl::GpuPass::SatColumns);
     program("filter/sat_scan.comp", format, 1).use();
     glBindImageTexture(IMAGE_OUTPUT, table_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
-    glDispatchCompute(groups(source.width(), SAT_TILE_ACROSS), 1, layers);
+    glDispatchCompute(gl::work_groups(source.width(), SAT_TILE_ACROSS), 1, layers);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
 }
@@ -100,14 +94,14 @@ void SummedAreaTablePass::scan_serial(const gl::Texture& source, GLenum format,
     glBindTextureUnit(UNIT_COMPUTE_INPUT, source.id());
     glBindSampler(UNIT_COMPUTE_INPUT, 0);
     glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-    glDispatchCompute(groups(source.height(), 64), layers, 1);
+    glDispatchCompute(gl::work_groups(source.height(), 64), layers, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
   {
     gl::GpuPassScope timed(profiler, gl::GpuPass::SatColumns);
     program("filter/sat_columns.comp", format).use();
     glBindImageTexture(IMAGE_OUTPUT, table.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
-    glDispatchCompute(groups(source.width(), 64), layers, 1);
+    glDispatchCompute(gl::work_groups(source.width(), 64), layers, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
 }
@@ -123,7 +117,7 @@ const gl::Texture& SummedAreaTablePass::box_filtered(int radius) {
   glBindTextureUnit(UNIT_COMPUTE_INPUT, sat.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
   glBindImageTexture(IMAGE_OUTPUT, box_filtered_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glDispatchCompute(groups(sat.width(), 16), groups(sat.height(), 16),
+  glDispatchCompute(gl::work_groups(sat.width(), 16), gl::work_groups(sat.height(), 16),
                     static_cast<GLuint>(sat.layers()));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   return box_filtered_;

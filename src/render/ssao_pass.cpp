@@ -16,10 +16,6 @@ namespace {
 
 constexpr int kLocalSize = 8;  // local_size_x and local_size_y of the SSAO shaders
 
-GLuint groups(int size) {
-  return static_cast<GLuint>((size + kLocalSize - 1) / kLocalSize);
-}
-
 void ensure(gl::Texture& texture, int width, int height, const char* label) {
   if (!texture || texture.width() != width || texture.height() != height) {
     texture = gl::Texture(
@@ -37,7 +33,8 @@ void SsaoPass::dispatch(const gl::Program& program, const gl::Texture& input,
   glBindTextureUnit(UNIT_AMBIENT_OCCLUSION, input.id());
   glBindSampler(UNIT_AMBIENT_OCCLUSION, 0);
   glBindImageTexture(IMAGE_OUTPUT, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  glDispatchCompute(groups(target.width()), groups(target.height()), 1);
+  glDispatchCompute(gl::work_groups(target.width(), kLocalSize),
+                    gl::work_groups(target.height(), kLocalSize), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
@@ -79,7 +76,8 @@ void SsaoPass::execute(const GBufferPass& gbuffer, const glm::mat4& view,
 
   ao_program_.use();
   glBindImageTexture(IMAGE_OUTPUT, raw_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-  glDispatchCompute(groups(ao_width), groups(ao_height), 1);
+  glDispatchCompute(gl::work_groups(ao_width, kLocalSize), gl::work_groups(ao_height, kLocalSize),
+                    1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   output_ = &raw_;
 

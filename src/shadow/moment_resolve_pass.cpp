@@ -8,12 +8,6 @@
 
 namespace penumbra {
 
-namespace {
-GLuint groups(int size, int local) {
-  return static_cast<GLuint>((size + local - 1) / local);
-}
-}  // namespace
-
 TexelTraffic MomentResolvePass::texel_traffic(GLenum depth_format, Technique technique,
                                               int samples) {
   return {static_cast<double>(samples * bytes_per_texel(depth_format)),
@@ -50,7 +44,7 @@ void MomentResolvePass::execute(const gl::Texture& depth_maps, const ShadowMapSe
   glBindImageTexture(IMAGE_OUTPUT, maps_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
   for_each_layer_run(layers, maps_.layers(), all, [&](int first, int count) {
     glProgramUniform1i(it->second.id(), 3, first);
-    glDispatchCompute(groups(maps_.width(), 16), groups(maps_.height(), 16),
+    glDispatchCompute(gl::work_groups(maps_.width(), 16), gl::work_groups(maps_.height(), 16),
                       static_cast<GLuint>(count));
   });
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

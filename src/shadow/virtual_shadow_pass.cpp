@@ -31,10 +31,6 @@ constexpr std::size_t kDrawWords = 5;
 // virtual_clear.vert's u_list_start.
 constexpr GLint kClearListStart = 0;
 
-GLuint groups(int n, int size) {
-  return static_cast<GLuint>((n + size - 1) / size);
-}
-
 }  // namespace
 
 VirtualShadowPass::VirtualShadowPass()
@@ -296,18 +292,18 @@ void VirtualShadowPass::update(std::span<const VirtualLightMaps> lights,
   allocate_program_.use();
   const GLuint program = allocate_program_.id();
   glProgramUniform1i(program, 0, 3);
-  glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8),
+  glDispatchCompute(gl::work_groups(kVirtualPages, 8), gl::work_groups(kVirtualPages, 8),
                     static_cast<GLuint>(std::max(levels, 1)));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   glProgramUniform1i(program, 0, 4);
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT);
   glProgramUniform1i(program, 0, 0);
-  glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8),
+  glDispatchCompute(gl::work_groups(kVirtualPages, 8), gl::work_groups(kVirtualPages, 8),
                     static_cast<GLuint>(std::max(layers, 1)));
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glProgramUniform1i(program, 0, 1);
-  glDispatchCompute(groups(kVirtualPages, 8), groups(kVirtualPages, 8),
+  glDispatchCompute(gl::work_groups(kVirtualPages, 8), gl::work_groups(kVirtualPages, 8),
                     static_cast<GLuint>(std::max(levels, 1)));
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glProgramUniform1i(program, 0, 2);
@@ -338,7 +334,7 @@ void VirtualShadowPass::mark(const CameraDepthBuffer& depth) {
     glBindSampler(UNIT_GBUFFER_FACET, 0);
   }
   mark_program_.use();
-  glDispatchCompute(groups(depth.width, 8), groups(depth.height, 8), 1);
+  glDispatchCompute(gl::work_groups(depth.width, 8), gl::work_groups(depth.height, 8), 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
@@ -347,7 +343,7 @@ void VirtualShadowPass::cull() {
   // One thread per (listed page, draw) of both lists: the threads past
   // the frame's rendered counts return at once.
   cull_program_.use();
-  glDispatchCompute(groups(2 * pool_pages_, 64), static_cast<GLuint>(draws_), 1);
+  glDispatchCompute(gl::work_groups(2 * pool_pages_, 64), static_cast<GLuint>(draws_), 1);
 }
 
 void VirtualShadowPass::build_bounds() {
@@ -372,7 +368,8 @@ void VirtualShadowPass::mark_dirty() {
       glProgramUniform1i(dirty_program_.id(), 0, l);
       glProgramUniform2i(dirty_program_.id(), 1, first.x, first.y);
       glProgramUniform2i(dirty_program_.id(), 2, last.x, last.y);
-      glDispatchCompute(groups(last.x - first.x + 1, 8), groups(last.y - first.y + 1, 8), 1);
+      glDispatchCompute(gl::work_groups(last.x - first.x + 1, 8),
+                        gl::work_groups(last.y - first.y + 1, 8), 1);
     }
   }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -30,4 +30,10 @@ class Program {
   Handle<detail::delete_program> handle_;
 };
 
+// The work groups of `local` invocations each that cover `size` along one
+// axis of a compute dispatch: size / local, rounded up.
+constexpr GLuint work_groups(int size, int local) {
+  return static_cast<GLuint>((size + local - 1) / local);
+}
+
 }  // namespace penumbra::gl
