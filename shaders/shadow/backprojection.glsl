@@ -537,11 +537,27 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
 
   uvec4 low = uvec4(0u), high = uvec4(0u);
   int span = max(last.x - first.x, last.y - first.y) + 1;
+  // Then the second surfaces (view.second_layer: the nearest facing the
+  // light behind the first ones, ShadowMapPass::execute()): a caster that
+  // another hides from the source's centre (the default scene's sphere
+  // under its slab) still hides parts of the source from a receiver that
+  // sees it through the source's edges (Bavoil, Callahan and Silva,
+  // "Robust Soft Shadow Mapping with Backprojection and Depth Peeling",
+  // JGT 2008). They lie behind the first surfaces texel by texel, so
+  // wherever the first are behind the receiver's plane, so are they.
+  int surfaces = view.second_layer > 0 ? 2 : 1;
   if (span <= BACKPROJECTION_MAX_CELLS) {
     // The texels themselves, and the row and column below the region,
     // whose patches may reach into it.
-    backprojection_texel_patches(depth_maps, layer, view, r, max(first - 1, ivec2(0)), last, low,
-                                 high);
+    for (int surface = 0; surface < surfaces; ++surface) {
+      int surface_layer = surface == 0 ? layer : view.second_layer;
+      if (surface == 1 &&
+          backprojection_depth_bounds(hierarchy, surface_layer, first, last).x >= z + slope) {
+        break;  // the second surfaces all behind the receiver's plane
+      }
+      backprojection_texel_patches(depth_maps, surface_layer, view, r, max(first - 1, ivec2(0)),
+                                   last, low, high);
+    }
   } else {
     // The hierarchy's cells 2^level texels wide (level - 1 of it). A cell
     // whose depths all lie in front is a patch at its nearest depth; a cell
@@ -559,7 +575,8 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     // lighting pass's time; this: 1.1x).
     ivec2 near_cells =
         clamp(ivec2(floor(r.center / float(1 << level) - 0.5)), ivec2(0), max(cells - 2, ivec2(0)));
-    if (level <= BACKPROJECTION_REFINE_LEVEL) {
+    bool refine_near = level <= BACKPROJECTION_REFINE_LEVEL;
+    if (refine_near) {
       ivec2 t0 = near_cells << level;
       ivec2 t1 = mix(t0 + (2 << level), size, equal(near_cells + 1, cells - 1)) - 1;
       backprojection_texel_patches(depth_maps, layer, view, r, t0, t1, low, high);
@@ -590,45 +607,51 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
         vec2 m0 = a0 + 0.5 * float(1 << level);
         vec2 m1 = max(a1 - 0.5 * float(1 << level), m0);
         float plane = z + dot(gradient, 0.5 * (m0 + m1)) - dot(abs(gradient), 0.5 * (m1 - m0));
-        vec2 b = vec2(-1.0, 2.0);  // no coarser level: neither behind nor in front
-        if (merge_level == 1) b = texelFetch(hierarchy, ivec3(p, layer), level).rg;
-        BACKPROJECTION_FETCHED(merge_level);
-        if (b.x >= plane) continue;
-        bool near = level <= BACKPROJECTION_REFINE_LEVEL &&
-                    all(lessThanEqual(c0, near_cells + 1)) && all(greaterThanEqual(c1, near_cells));
-        if (!near && b.y < plane) {
-          vec2 mid = 0.5 * (a0 + a1);
-          float extent = backprojection_extent(view, r, mid, b.x);
-          float far_extent = backprojection_extent(view, r, mid, b.y);
-          float reach = max(max(abs(a0.x), abs(a1.x)), max(abs(a0.y), abs(a1.y)));
-          if (extent > 0.0 && far_extent > 0.0 &&
-              reach * (far_extent - extent) <= BACKPROJECTION_FLAT) {
-            if (!backprojection_above_plane(view, r, mid, b.x)) continue;
-            float right = 0.0, up = 0.0;
-            if (px + 1 < parents.x) {
-              float depth = texelFetch(hierarchy, ivec3(px + 1, py, layer), level).r;
-              right =
-                  backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y), depth);
-              BACKPROJECTION_FETCHED(1);
+        for (int surface = 0; surface < surfaces; ++surface) {
+          int surface_layer = surface == 0 ? layer : view.second_layer;
+          vec2 b = vec2(-1.0, 2.0);  // no coarser level: neither behind nor in front
+          if (merge_level == 1) b = texelFetch(hierarchy, ivec3(p, surface_layer), level).rg;
+          BACKPROJECTION_FETCHED(merge_level);
+          if (b.x >= plane) break;  // (the second surfaces lie behind the first)
+          // The second surfaces near the receiver are mostly its own surface
+          // seen past a caster (the ground under the sphere): read as cells.
+          bool refine = refine_near && surface == 0;
+          bool near = refine && all(lessThanEqual(c0, near_cells + 1)) &&
+                      all(greaterThanEqual(c1, near_cells));
+          if (!near && b.y < plane) {
+            vec2 mid = 0.5 * (a0 + a1);
+            float extent = backprojection_extent(view, r, mid, b.x);
+            float far_extent = backprojection_extent(view, r, mid, b.y);
+            float reach = max(max(abs(a0.x), abs(a1.x)), max(abs(a0.y), abs(a1.y)));
+            if (extent > 0.0 && far_extent > 0.0 &&
+                reach * (far_extent - extent) <= BACKPROJECTION_FLAT) {
+              if (!backprojection_above_plane(view, r, mid, b.x)) continue;
+              float right = 0.0, up = 0.0;
+              if (px + 1 < parents.x) {
+                float depth = texelFetch(hierarchy, ivec3(px + 1, py, surface_layer), level).r;
+                right =
+                    backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y), depth);
+                BACKPROJECTION_FETCHED(1);
+              }
+              if (py + 1 < parents.y) {
+                float depth = texelFetch(hierarchy, ivec3(px, py + 1, surface_layer), level).r;
+                up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)), depth);
+                BACKPROJECTION_FETCHED(1);
+              }
+              backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
+              continue;
             }
-            if (py + 1 < parents.y) {
-              up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)),
-                                         texelFetch(hierarchy, ivec3(px, py + 1, layer), level).r);
-              BACKPROJECTION_FETCHED(1);
-            }
-            backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
-            continue;
           }
-        }
-        for (int cy = c0.y; cy <= c1.y; ++cy) {
-          for (int cx = c0.x; cx <= c1.x; ++cx) {
-            ivec2 c = ivec2(cx, cy);
-            if (level <= BACKPROJECTION_REFINE_LEVEL && all(greaterThanEqual(c, near_cells)) &&
-                all(lessThanEqual(c, near_cells + 1))) {
-              continue;  // read as texels above
+          for (int cy = c0.y; cy <= c1.y; ++cy) {
+            for (int cx = c0.x; cx <= c1.x; ++cx) {
+              ivec2 c = ivec2(cx, cy);
+              if (refine && all(greaterThanEqual(c, near_cells)) &&
+                  all(lessThanEqual(c, near_cells + 1))) {
+                continue;  // read as texels above
+              }
+              backprojection_cell_patch(depth_maps, hierarchy, surface_layer, view, r, level,
+                                        cells, c, low, high);
             }
-            backprojection_cell_patch(depth_maps, hierarchy, layer, view, r, level, cells, c, low,
-                                      high);
           }
         }
       }

@@ -32,6 +32,17 @@
 #ifndef VIRTUAL_PAGE
 #define VIRTUAL_PAGE 0
 #endif
+// SECOND_SURFACES 1: a view's second surfaces (ShadowMapPass::execute()'s
+// draw_second, for backprojection): only fragments behind the first
+// layer's surface, by more than this gap of z-bar (the same surface's
+// fragment lands within rounding of it), are kept.
+#ifndef SECOND_SURFACES
+#define SECOND_SURFACES 0
+#endif
+#if SECOND_SURFACES
+const float SECOND_SURFACE_GAP = 1.0e-4;
+layout(binding = UNIT_SHADOW_DEPTH) uniform sampler2DArray first_surfaces;
+#endif
 #if VIRTUAL_PAGE
 #include "virtual_lookup.glsl"
 flat in int v_level;
@@ -48,6 +59,14 @@ void main() {
 #if CUT_OUTS
   Material m = materials[v_material];
   if (is_discarded(m, base_color(m, v_texcoord, vec4(1.0, 1.0, 1.0, v_alpha)).a)) discard;
+#endif
+#if SECOND_SURFACES
+  {
+    GpuShadowView view = shadow_views[u_view];
+    float z_bar = relative_depth_of(view, view_space_depth(view, v_view_position));
+    float first = texelFetch(first_surfaces, ivec3(ivec2(gl_FragCoord.xy), u_view), 0).r;
+    if (z_bar <= first + SECOND_SURFACE_GAP) discard;
+  }
 #endif
 #if RADIAL_DEPTH
 #if VIRTUAL_PAGE

@@ -31,7 +31,10 @@ struct GpuShadowView {
   float source_width;
   int perspective;   // 1: perspective projection, 0: orthographic
   int radial_depth;  // 1: z is the distance from the eye (point lights), 0: depth along -z
-  int unused;
+  // The layer of the depth maps holding this view's second surfaces (the
+  // nearest facing the eye behind the first ones: ShadowMapPass::
+  // second_layer(), for backprojection); 0: none.
+  int second_layer;
 };
 
 // One light as the shaders see it (one entry of the lights block).

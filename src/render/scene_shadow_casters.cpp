@@ -4,10 +4,11 @@ namespace penumbra {
 
 namespace {
 
-gl::Program caster_program(bool radial, bool cut_outs) {
-  return gl::Program::graphics(
-      "shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
-      {{"RADIAL_DEPTH", radial ? "1" : "0"}, {"CUT_OUTS", cut_outs ? "1" : "0"}});
+gl::Program caster_program(bool radial, bool cut_outs, bool second = false) {
+  return gl::Program::graphics("shadow/shadow_depth.vert", "shadow/shadow_depth.frag",
+                               {{"RADIAL_DEPTH", radial ? "1" : "0"},
+                                {"CUT_OUTS", cut_outs ? "1" : "0"},
+                                {"SECOND_SURFACES", second ? "1" : "0"}});
 }
 
 }  // namespace
@@ -16,9 +17,22 @@ SceneShadowCasters::SceneShadowCasters()
     : programs_{{caster_program(false, false), caster_program(false, true)},
                 {caster_program(true, false), caster_program(true, true)}} {}
 
+void SceneShadowCasters::draw_second_surfaces(const GpuScene& scene, int view) {
+  // Made on first use: only backprojection draws them.
+  if (!second_programs_[0]) {
+    for (int c = 0; c < 2; ++c) second_programs_[c] = caster_program(false, c == 1, true);
+  }
+  draw_with(second_programs_, scene, view, 1);
+}
+
 void SceneShadowCasters::draw(const GpuScene& scene, int view, bool radial, int samples) const {
-  const gl::Program& opaque = programs_[radial ? 1 : 0][0];
-  const gl::Program& cut_out = programs_[radial ? 1 : 0][1];
+  draw_with(programs_[radial ? 1 : 0], scene, view, samples);
+}
+
+void SceneShadowCasters::draw_with(const gl::Program (&programs)[2], const GpuScene& scene,
+                                   int view, int samples) {
+  const gl::Program& opaque = programs[0];
+  const gl::Program& cut_out = programs[1];
   glProgramUniform1i(opaque.id(), 0, view);
   glProgramUniform1i(cut_out.id(), 0, view);
   opaque.use();

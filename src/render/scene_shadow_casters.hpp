@@ -18,11 +18,19 @@ class SceneShadowCasters {
   // depth (CasterDepth::Written); `samples`: the layer's samples per texel
   // (ShadowSettings::shadow_msaa).
   void draw(const GpuScene& scene, int view, bool radial, int samples = 1) const;
+  // The same view's second surfaces (ShadowMapPass::execute()'s
+  // draw_second; spot and directional views): the programs that discard
+  // what lies at or in front of the view's first layer.
+  void draw_second_surfaces(const GpuScene& scene, int view);
 
  private:
+  static void draw_with(const gl::Program (&programs)[2], const GpuScene& scene, int view,
+                        int samples);
+
   // [radial][cut-outs]: opaque surfaces, then alpha-tested and
   // single-sided ones.
   gl::Program programs_[2][2];
+  gl::Program second_programs_[2];  // [cut-outs], SECOND_SURFACES 1, made on first use
 };
 
 }  // namespace penumbra

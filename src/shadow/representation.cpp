@@ -45,6 +45,10 @@ int depth_samples(const ShadowMapSettings& settings) {
   return is_filterable(settings.technique) ? settings.shadow_msaa : 1;
 }
 
+bool draws_second_surfaces(const ShadowMapSettings& settings) {
+  return settings.technique == Technique::Backprojection;
+}
+
 int max_fused_blur(const ShadowMapSettings& settings) {
   if (depth_samples(settings) <= 1) return kMaxFusedBlur;
   // The widest radius whose tile, staging the representation's channels,

@@ -1,9 +1,11 @@
 #include "penumbra/shadow/shadow_map_pass.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
 #include "penumbra/error.hpp"
+#include "penumbra/shared/bindings.h"
 
 namespace penumbra {
 
@@ -34,9 +36,16 @@ ShadowMapPass::ShadowMapPass()
           gl::Program::graphics("common/fullscreen.vert", "shadow/linearize_depth.frag")) {}
 
 int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShadowView> views,
-                           int map_size, std::span<const std::uint8_t> stale, int samples) {
+                           int map_size, std::span<const std::uint8_t> stale, int samples,
+                           const DrawCasters& draw_second) {
+  const bool second_surfaces = static_cast<bool>(draw_second);
   const int layers = std::max(static_cast<int>(views.size()), 1);
   const bool multisample = samples > 1;
+  if (second_surfaces && multisample) {
+    throw std::logic_error("a shadow map's second surfaces are drawn with one sample per texel");
+  }
+  // With second surfaces, layer layers + i holds view i's (second_layer()).
+  const int array_layers = second_surfaces ? 2 * layers : layers;
   if (multisample) {
     GLint max_samples = 1;
     glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_samples);
@@ -50,7 +59,8 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
   // nearest-sample maps of a multisampled frame are not a 1-sample frame's).
   bool all = stale.empty() || samples != samples_;
   samples_ = samples;
-  if (gl::ensure_texture_array(maps_, kDepthFormat, map_size, map_size, layers, "shadow maps")) {
+  if (gl::ensure_texture_array(maps_, kDepthFormat, map_size, map_size, array_layers,
+                               "shadow maps")) {
     framebuffers_ = layer_framebuffers(maps_, "shadow view");
     all = true;  // a new array holds nothing yet
   }
@@ -121,9 +131,10 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
   const float far_depth = 1.0f, reversed_far_depth = 0.0f;
   const std::vector<gl::Framebuffer>& targets =
       multisample ? multisample_framebuffers_ : framebuffers_;
-  for (int i = 0; i < layers; ++i) {
-    if (!is_stale(i)) continue;
-    const GLuint fb = targets[static_cast<std::size_t>(i)].id();
+  // Draws view i's casters (with `second`, its second surfaces) into
+  // framebuffer `fb`.
+  const auto draw_layer = [&](int i, GLuint fb, bool second) {
+    const DrawCasters& casters = second ? draw_second : draw;
     if (i >= static_cast<int>(views.size())) {  // no view: an empty layer
       glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
     } else if (const gpu::GpuShadowView& view = views[static_cast<std::size_t>(i)];
@@ -133,15 +144,53 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
       glBindFramebuffer(GL_FRAMEBUFFER, scratch);
       glClearNamedFramebufferfv(scratch, GL_DEPTH, 0, &reversed_far_depth);
       glDepthFunc(GL_GREATER);
-      draw(i);
+      casters(i);
       linearize(view, fb, samples);
     } else {
       glBindFramebuffer(GL_FRAMEBUFFER, fb);
       glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
       glDepthFunc(GL_LESS);
-      draw(i);
+      casters(i);
     }
+  };
+  for (int i = 0; i < layers; ++i) {
+    if (!is_stale(i)) continue;
+    draw_layer(i, targets[static_cast<std::size_t>(i)].id(), false);
     if (multisample) resolve_nearest(i);
+  }
+  if (second_surfaces) {
+    // The nearest surfaces facing the view's eye behind each layer's
+    // (draw_second's fragments discard what lies at or in front of the
+    // first layer, read from UNIT_SHADOW_DEPTH; the far sides facing away
+    // are culled). Drawn into a scratch layer (a spot view's reciprocal
+    // one, linearized into the array; else second_scratch_, copied), so
+    // that no layer of the array is read while another is drawn.
+    if (gl::ensure_texture_array(second_scratch_, kDepthFormat, map_size, map_size, 1,
+                                 "shadow second surfaces")) {
+      second_scratch_framebuffer_ =
+          std::move(layer_framebuffers(second_scratch_, "shadow second surfaces")[0]);
+    }
+    glBindTextureUnit(UNIT_SHADOW_DEPTH, maps_.id());
+    glBindSampler(UNIT_SHADOW_DEPTH, 0);
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+    for (int i = 0; i < layers; ++i) {
+      if (!is_stale(i)) continue;
+      const int target = second_layer(i, layers);
+      const bool has_view = i < static_cast<int>(views.size());
+      if (has_view && views[static_cast<std::size_t>(i)].second_layer == 0) continue;
+      const bool reciprocal =
+          has_view && caster_depth(views[static_cast<std::size_t>(i)]) == CasterDepth::Reciprocal;
+      if (reciprocal) {
+        draw_layer(i, framebuffers_[static_cast<std::size_t>(target)].id(), true);
+      } else {
+        draw_layer(i, second_scratch_framebuffer_.id(), true);
+        glCopyImageSubData(second_scratch_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, maps_.id(),
+                           GL_TEXTURE_2D_ARRAY, 0, 0, 0, target, map_size, map_size, 1);
+      }
+    }
+    glDisable(GL_CULL_FACE);
   }
   glDepthFunc(GL_LESS);
   if (!was_multisampling) glDisable(GL_MULTISAMPLE);

@@ -24,6 +24,13 @@ int filter_define(const ShadowMapSettings& settings);
 // (docs/rendering.md), so their maps are drawn as at 1.
 int depth_samples(const ShadowMapSettings& settings);
 
+// Whether the maps hold each view's second surfaces as well (the nearest
+// facing the light behind the first ones, ShadowMapPass::execute()):
+// backprojection, whose patches would otherwise miss a caster that another
+// hides from the source's centre (the default scene's sphere under its
+// slab) but that receivers see through the source's edges.
+bool draws_second_surfaces(const ShadowMapSettings& settings);
+
 // The widest radius the fused resolve + Gaussian takes: kMaxFusedBlur, or
 // with --shadow-msaa above 1, where each staged texel holds the mean of its
 // samples' moments, the widest whose tile still fits 32 KiB of shared

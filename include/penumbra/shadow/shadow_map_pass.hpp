@@ -61,12 +61,36 @@ class ShadowMapPass {
   // `samples` (1, 2, 4, 8: ShadowSettings::shadow_msaa) per texel; a
   // change of it draws every view again. Throws UsageError when the device
   // offers fewer (GL_MAX_DEPTH_TEXTURE_SAMPLES).
+  //
+  // `draw_second` (backprojection; one sample only): each view's second
+  // surfaces, into layer second_layer(i, views.size()): the nearest
+  // surfaces facing the view's eye behind its first ones, drawn with the
+  // first layers bound to UNIT_SHADOW_DEPTH by fragments that discard what
+  // lies at or in front of their view's first layer (SECOND_SURFACES in
+  // shaders/shadow/shadow_depth.frag), and back faces culled, so that a
+  // closed caster's far side is skipped (triangles counter-clockwise seen
+  // from outside, as OpenGL and glTF have them; a mesh wound the other way
+  // gives its far side instead, which blocks no more than its near side
+  // already does). Drawn for the views whose second_layer is set, where
+  // `stale` flags them. A caster
+  // hidden behind another from the light's centre (the default scene's
+  // sphere under its slab) hides parts of an area light's source from
+  // receivers that see it through the source's edges (Bavoil, Callahan
+  // and Silva, "Robust Soft Shadow Mapping with Backprojection and Depth
+  // Peeling", JGT 2008).
   int execute(const DrawCasters& draw, std::span<const gpu::GpuShadowView> views, int map_size,
-              std::span<const std::uint8_t> stale = {}, int samples = 1);
+              std::span<const std::uint8_t> stale = {}, int samples = 1,
+              const DrawCasters& draw_second = {});
+
+  // The layer of depth_maps() holding view `view`'s second surfaces when
+  // execute() drew them for `view_count` views (GpuShadowView::second_layer).
+  [[nodiscard]] static int second_layer(int view, int view_count) {
+    return (view_count > 0 ? view_count : 1) + view;
+  }
 
   // DEPTH_COMPONENT32F 2D array holding z-bar, one layer per view (with
-  // samples > 1, the nearest of each texel's samples). Valid after
-  // execute().
+  // samples > 1, the nearest of each texel's samples), then with second
+  // surfaces one more per view. Valid after execute().
   [[nodiscard]] const gl::Texture& depth_maps() const { return maps_; }
   // What the moment resolves average: the multisampled array (read as a
   // sampler2DMSArray) when the last execute() had samples > 1, else
@@ -86,6 +110,8 @@ class ShadowMapPass {
   gl::Texture maps_;
   std::vector<gl::Framebuffer> framebuffers_;  // one per layer
   gl::Texture reciprocal_;                     // a spot view's z0 / z, one layer
+  gl::Texture second_scratch_;                 // a view's second surfaces, one layer
+  gl::Framebuffer second_scratch_framebuffer_;
   gl::Framebuffer reciprocal_framebuffer_;
   gl::Program linearize_program_;
   gl::VertexArray empty_vertex_array_{"shadow linearize"};
