@@ -346,12 +346,12 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   // Second surfaces (backprojection) for the spot and directional views; a
   // point light's six faces keep one layer each (a second would add 96 MB
   // of depth and 67 MB of hierarchy at 2048^2).
-  second_surfaces_ = false;
+  bool second_surfaces = false;
   if (draws_second_surfaces(shadow)) {
     for (int i = 0; i < view_count_; ++i) {
       if (caster_depth(views[i]) == CasterDepth::Written) continue;
       views[i].second_layer = ShadowMapPass::second_layer(i, view_count_);
-      second_surfaces_ = true;
+      second_surfaces = true;
     }
   }
   lights_ubo_.update(lights, sizeof lights);
@@ -454,10 +454,10 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
                                depth_samples(shadow));
         },
         drawn, shadow.map_size, stale, depth_samples(shadow),
-        second_surfaces_ ? ShadowMapPass::DrawCasters([&](int view) {
+        second_surfaces ? ShadowMapPass::DrawCasters([&](int view) {
           shadow_casters_.draw_second_surfaces(gpu_scene_, view);
         })
-                         : ShadowMapPass::DrawCasters());
+                        : ShadowMapPass::DrawCasters());
   }
   // The resolve and the filters run again when a view was drawn (over the
   // drawn views' layers; filter/layer_runs.hpp) or the settings changed

@@ -216,7 +216,6 @@ class Renderer {
   Bounds bounds_;
   GpuScene gpu_scene_;
   SceneShadowCasters shadow_casters_;
-  bool second_surfaces_ = false;  // this frame's maps hold second surfaces
   ShadowMapPass shadow_pass_;
   MomentResolvePass resolve_pass_;
   GaussianBlurPass blur_pass_;

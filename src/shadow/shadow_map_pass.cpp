@@ -165,30 +165,27 @@ int ShadowMapPass::execute(const DrawCasters& draw, std::span<const gpu::GpuShad
     // are culled). Drawn into a scratch layer (a spot view's reciprocal
     // one, linearized into the array; else second_scratch_, copied), so
     // that no layer of the array is read while another is drawn.
-    if (gl::ensure_texture_array(second_scratch_, kDepthFormat, map_size, map_size, 1,
-                                 "shadow second surfaces")) {
-      second_scratch_framebuffer_ =
-          std::move(layer_framebuffers(second_scratch_, "shadow second surfaces")[0]);
-    }
     glBindTextureUnit(UNIT_SHADOW_DEPTH, maps_.id());
     glBindSampler(UNIT_SHADOW_DEPTH, 0);
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
-    for (int i = 0; i < layers; ++i) {
-      if (!is_stale(i)) continue;
-      const int target = second_layer(i, layers);
-      const bool has_view = i < static_cast<int>(views.size());
-      if (has_view && views[static_cast<std::size_t>(i)].second_layer == 0) continue;
-      const bool reciprocal =
-          has_view && caster_depth(views[static_cast<std::size_t>(i)]) == CasterDepth::Reciprocal;
-      if (reciprocal) {
-        draw_layer(i, framebuffers_[static_cast<std::size_t>(target)].id(), true);
-      } else {
-        draw_layer(i, second_scratch_framebuffer_.id(), true);
-        glCopyImageSubData(second_scratch_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, maps_.id(),
-                           GL_TEXTURE_2D_ARRAY, 0, 0, 0, target, map_size, map_size, 1);
+    for (int i = 0; i < static_cast<int>(views.size()); ++i) {
+      const gpu::GpuShadowView& view = views[static_cast<std::size_t>(i)];
+      if (!is_stale(i) || view.second_layer == 0) continue;
+      const GLuint target = framebuffers_[static_cast<std::size_t>(view.second_layer)].id();
+      if (caster_depth(view) == CasterDepth::Reciprocal) {
+        draw_layer(i, target, true);
+        continue;
       }
+      if (gl::ensure_texture_array(second_scratch_, kDepthFormat, map_size, map_size, 1,
+                                   "shadow second surfaces")) {
+        second_scratch_framebuffer_ =
+            std::move(layer_framebuffers(second_scratch_, "shadow second surfaces")[0]);
+      }
+      draw_layer(i, second_scratch_framebuffer_.id(), true);
+      glCopyImageSubData(second_scratch_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, maps_.id(),
+                         GL_TEXTURE_2D_ARRAY, 0, 0, 0, view.second_layer, map_size, map_size, 1);
     }
     glDisable(GL_CULL_FACE);
   }

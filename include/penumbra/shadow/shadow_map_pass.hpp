@@ -62,8 +62,9 @@ class ShadowMapPass {
   // change of it draws every view again. Throws UsageError when the device
   // offers fewer (GL_MAX_DEPTH_TEXTURE_SAMPLES).
   //
-  // `draw_second` (backprojection; one sample only): each view's second
-  // surfaces, into layer second_layer(i, views.size()): the nearest
+  // `draw_second` (backprojection; one sample only): the second surfaces
+  // of each view whose second_layer is set (second_layer(i,
+  // views.size()): the array then has twice the layers), the nearest
   // surfaces facing the view's eye behind its first ones, drawn with the
   // first layers bound to UNIT_SHADOW_DEPTH by fragments that discard what
   // lies at or in front of their view's first layer (SECOND_SURFACES in
@@ -71,13 +72,11 @@ class ShadowMapPass {
   // closed caster's far side is skipped (triangles counter-clockwise seen
   // from outside, as OpenGL and glTF have them; a mesh wound the other way
   // gives its far side instead, which blocks no more than its near side
-  // already does). Drawn for the views whose second_layer is set, where
-  // `stale` flags them. A caster
-  // hidden behind another from the light's centre (the default scene's
-  // sphere under its slab) hides parts of an area light's source from
-  // receivers that see it through the source's edges (Bavoil, Callahan
-  // and Silva, "Robust Soft Shadow Mapping with Backprojection and Depth
-  // Peeling", JGT 2008).
+  // already does), where `stale` flags them. A caster hidden behind
+  // another from the light's centre (the default scene's sphere under its
+  // slab) hides parts of an area light's source from receivers that see
+  // it through the source's edges (Bavoil, Callahan and Silva, "Robust
+  // Soft Shadow Mapping with Backprojection and Depth Peeling", JGT 2008).
   int execute(const DrawCasters& draw, std::span<const gpu::GpuShadowView> views, int map_size,
               std::span<const std::uint8_t> stale = {}, int samples = 1,
               const DrawCasters& draw_second = {});
@@ -110,7 +109,7 @@ class ShadowMapPass {
   gl::Texture maps_;
   std::vector<gl::Framebuffer> framebuffers_;  // one per layer
   gl::Texture reciprocal_;                     // a spot view's z0 / z, one layer
-  gl::Texture second_scratch_;                 // a view's second surfaces, one layer
+  gl::Texture second_scratch_;  // a non-spot view's second surfaces, one layer (made on first use)
   gl::Framebuffer second_scratch_framebuffer_;
   gl::Framebuffer reciprocal_framebuffer_;
   gl::Program linearize_program_;
