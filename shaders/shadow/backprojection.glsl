@@ -31,7 +31,7 @@
 // The source is 16 x 16 points, one in each cell of a 16 x 16 grid and
 // multi-jittered (Chiu, Shirley and Wang, "Multi-Jittered Sampling",
 // Graphics Gems IV, 1994): no two share a column or a row of the 256 x
-// 256 finer grid, so an edge along either axis hides one of 256 fractions
+// 256 finer grid, so an edge along either axis hides one of 257 fractions
 // of the source, not one of 17 (a regular grid shifted per pixel read a
 // straight edge's penumbra with a pixel-to-pixel noise of RMS 0.021). In
 // each row of cells the points hidden by a rectangle are still a run of
@@ -176,7 +176,8 @@ uint backprojection_offsets_below(float t, float shift) {
 
 // How many points of each row lie below grid coordinate u (points i with
 // i + o < u, u = (x / width + 1/2) 16): `count` in the rows `rows` (bit
-// j), count - 1 in the others. (Of each column, for y, likewise.)
+// j), count - 1 in the others; a count of 0 holds in every row. (Of each
+// column, for y, likewise.)
 struct BackprojectionEdge {
   uint count;
   uint rows;
@@ -225,7 +226,7 @@ void backprojection_hide(inout uvec4 low, inout uvec4 high, vec2 lo, vec2 hi, ve
   // y0.count - 1 in the columns `bottom`.
   uint whole_rows = backprojection_below(y1.count - 1u) & ~backprojection_below(y0.count);
   uint top_row = y1.count - 1u, top = y1.rows;
-  uint bottom_row = max(y0.count, 1u) - 1u, bottom = y0.count > 0u ? ~y0.rows & 0xffffu : 0u;
+  uint bottom_row = max(y0.count, 1u) - 1u, bottom = ~y0.rows & 0xffffu;
   if (y0.count == y1.count) {
     top &= bottom;
     bottom = 0u;
