@@ -567,6 +567,17 @@ bool backprojection_joined(GpuShadowView view, BackprojectionReceiver r, int lay
          BACKPROJECTION_STEP * across;
 }
 
+// The reach (backprojection_hide_patch()'s `right` or `up`) of a patch at
+// z-bar `occluder` towards its neighbour at z-bar `neighbour`, centred
+// `centre` texels from the lookup: that neighbour's extent where a surface
+// may join them (backprojection_joined()), else 0.
+float backprojection_reach(GpuShadowView view, BackprojectionReceiver r, int layer, int level,
+                           float occluder, float neighbour, vec2 centre) {
+  return backprojection_joined(view, r, layer, level, occluder, neighbour)
+             ? backprojection_extent(view, r, centre, neighbour)
+             : 0.0;
+}
+
 // Hides the source points behind cell c of the hierarchy's level level - 1
 // (2^level texels wide, `cells` of them): a cell whose depths all lie in
 // front is a patch at its nearest depth; a cell the receiver's plane cuts
@@ -595,16 +606,14 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
   if (c.x + 1 < cells.x) {
     float depth = texelFetch(hierarchy, ivec3(c.x + 1, c.y, layer), level - 1).r;
     BACKPROJECTION_FETCHED(1);
-    if (backprojection_joined(view, r, layer, level, occluder, depth)) {
-      right = backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y), depth);
-    }
+    right = backprojection_reach(view, r, layer, level, occluder, depth,
+                                 vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y));
   }
   if (c.y + 1 < cells.y) {
     float depth = texelFetch(hierarchy, ivec3(c.x, c.y + 1, layer), level - 1).r;
     BACKPROJECTION_FETCHED(1);
-    if (backprojection_joined(view, r, layer, level, occluder, depth)) {
-      up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)), depth);
-    }
+    up = backprojection_reach(view, r, layer, level, occluder, depth,
+                              vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)));
   }
   backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
 }
@@ -774,18 +783,14 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
               if (px + 1 < parents.x) {
                 float depth = texelFetch(hierarchy, ivec3(px + 1, py, surface_layer), level).r;
                 BACKPROJECTION_FETCHED(1);
-                if (backprojection_joined(view, r, surface_layer, level + 1, b.x, depth)) {
-                  right = backprojection_extent(view, r, vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y),
-                                                depth);
-                }
+                right = backprojection_reach(view, r, surface_layer, level + 1, b.x, depth,
+                                             vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y));
               }
               if (py + 1 < parents.y) {
                 float depth = texelFetch(hierarchy, ivec3(px, py + 1, surface_layer), level).r;
                 BACKPROJECTION_FETCHED(1);
-                if (backprojection_joined(view, r, surface_layer, level + 1, b.x, depth)) {
-                  up = backprojection_extent(view, r, vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)),
-                                             depth);
-                }
+                up = backprojection_reach(view, r, surface_layer, level + 1, b.x, depth,
+                                          vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)));
               }
               backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
               continue;
