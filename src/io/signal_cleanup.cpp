@@ -61,13 +61,21 @@ void remove_folder_contents(int dir, int depth) {
   }
 }
 
+// Other threads run on while the handler does (the report's PNG writer
+// may put one more file into the folder after its contents are removed,
+// and rmdir then fails on it): the folder is emptied again until rmdir
+// takes it, a few times at most. Once it is gone, a file can no longer be
+// made in it.
+constexpr int kFolderRemovalAttempts = 64;
+
 void remove_folder(const char* path) {
-  const int dir = ::open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir >= 0) {
+  for (int attempt = 0; attempt < kFolderRemovalAttempts; ++attempt) {
+    const int dir = ::open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir < 0) return;  // gone (or never made)
     remove_folder_contents(dir, 0);
     ::close(dir);
+    if (::rmdir(path) == 0) return;
   }
-  ::rmdir(path);
 }
 
 void remove_registered() {
