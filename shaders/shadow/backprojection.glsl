@@ -581,7 +581,17 @@ float backprojection_reach(GpuShadowView view, BackprojectionReceiver r, int lay
 // Hides the source points behind cell c of the hierarchy's level level - 1
 // (2^level texels wide, `cells` of them): a cell whose depths all lie in
 // front is a patch at its nearest depth; a cell the receiver's plane cuts
-// is one where its centre texel blocks, at that texel's depth.
+// (a silhouette with what lies behind the receiver) is read as its four
+// quarters, each blocking where its centre texel lies in front: one patch
+// over the box of the blocking quarters, at the nearest of their depths,
+// reaching to a neighbour only across a side they touch. Taking the whole cell where
+// its centre texel blocked moved a silhouette by up to half a cell, this
+// by up to a quarter (a straight edge's penumbra read from cells 4 texels
+// wide, binned RMS at worst 0.0146 -> 0.0073; RMSE at 640x360, default
+// scene: spot 0.5 0.0036 -> 0.0030, point 1.5 0.0094 -> 0.0079, sun 8.45
+// degrees 0.0054 -> 0.0043; the lighting pass 1.2x on llvmpipe, which
+// runs the branch for every cell; a GPU reads the three more texels only
+// for cut cells).
 void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
                                GpuShadowView view, BackprojectionReceiver r, int level,
                                ivec2 cells, ivec2 c, inout uvec4 low, inout uvec4 high) {
@@ -594,28 +604,50 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
   float plane = r.z + dot(r.gradient, mid);
   if (m.x >= plane) return;
   float occluder = m.x;
+  vec2 b0 = a0, b1 = a1;  // the patch
+  bvec2 reaches = bvec2(true);
   if (m.y >= plane) {
-    ivec2 t = min(ivec2(floor(r.center + mid)), size - 1);
-    occluder = texelFetch(depth_maps, ivec3(t, layer), 0).r;
-    BACKPROJECTION_FETCHED(1);
+    // Its quarters' centre texels (x: lower left, y: lower right, z: upper
+    // left, w: upper right) against the plane at each.
+    int half_cell = 1 << (level - 1);
+    ivec2 t = (c << level) + (half_cell >> 1);
+    ivec2 across = ivec2(half_cell, 0), above = ivec2(0, half_cell);
+    vec4 d = vec4(texelFetch(depth_maps, ivec3(min(t, size - 1), layer), 0).r,
+                  texelFetch(depth_maps, ivec3(min(t + across, size - 1), layer), 0).r,
+                  texelFetch(depth_maps, ivec3(min(t + above, size - 1), layer), 0).r,
+                  texelFetch(depth_maps, ivec3(min(t + half_cell, size - 1), layer), 0).r);
+    BACKPROJECTION_FETCHED(4);
+    vec2 q = vec2(t) + 0.5 - r.center;
+    float h = float(half_cell);
+    vec4 planes = r.z + vec4(dot(r.gradient, q), dot(r.gradient, q + vec2(across)),
+                             dot(r.gradient, q + vec2(above)), dot(r.gradient, q + h));
+    bvec4 blocks = lessThan(d, planes);
+    if (!any(blocks)) return;
+    vec4 blocking = mix(vec4(m.y), d, blocks);
+    occluder = min(min(blocking.x, blocking.y), min(blocking.z, blocking.w));
+    bvec2 lower_half = bvec2(blocks.x || blocks.z, blocks.x || blocks.y);
+    reaches = bvec2(blocks.y || blocks.w, blocks.z || blocks.w);
+    b0 = mix(a0 + h, a0, lower_half);
+    b1 = mix(a0 + h, a1, reaches);
   }
-  float extent = backprojection_extent(view, r, mid, occluder);
-  if (extent <= 0.0 || !backprojection_above_plane(view, r, mid, occluder)) return;
+  vec2 centre = 0.5 * (b0 + b1);
+  float extent = backprojection_extent(view, r, centre, occluder);
+  if (extent <= 0.0 || !backprojection_above_plane(view, r, centre, occluder)) return;
   // The neighbours' nearest depths, at their centres as if as wide.
   float right = 0.0, up = 0.0;
-  if (c.x + 1 < cells.x) {
+  if (c.x + 1 < cells.x && reaches.x) {
     float depth = texelFetch(hierarchy, ivec3(c.x + 1, c.y, layer), level - 1).r;
     BACKPROJECTION_FETCHED(1);
     right = backprojection_reach(view, r, layer, level, occluder, depth,
                                  vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y));
   }
-  if (c.y + 1 < cells.y) {
+  if (c.y + 1 < cells.y && reaches.y) {
     float depth = texelFetch(hierarchy, ivec3(c.x, c.y + 1, layer), level - 1).r;
     BACKPROJECTION_FETCHED(1);
     up = backprojection_reach(view, r, layer, level, occluder, depth,
                               vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)));
   }
-  backprojection_hide_patch(r, a0, a1, extent, right, up, low, high);
+  backprojection_hide_patch(r, b0, b1, extent, right, up, low, high);
 }
 
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
@@ -710,8 +742,8 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   } else {
     // The hierarchy's cells 2^level texels wide (level - 1 of it). A cell
     // whose depths all lie in front is a patch at its nearest depth; a cell
-    // the receiver's plane cuts is one where its centre texel blocks, at
-    // that texel's depth.
+    // the receiver's plane cuts is read as its quarters
+    // (backprojection_cell_patch()).
     int level = min(findMSB((span - 1) / BACKPROJECTION_MAX_CELLS) + 1,
                     backprojection_levels(hierarchy));
     r.steps_open =

@@ -33,17 +33,23 @@ using testing::GpuTest;
 
 constexpr double kLightHeight = 10.0;
 constexpr double kSlabTop = 2.0;
-constexpr double kSlabEdge = 0.5;  // the slab covers x < kSlabEdge
-constexpr double kSourceWidth = 0.5;
 
-Scene edge_scene() {
-  // Close above the penumbra, a few pixels per shadow-map texel.
-  const float penumbra_x = float(kSlabEdge * kLightHeight / (kLightHeight - kSlabTop));
+// The slab covers x < edge; the source is a square `source` wide; the
+// camera looks down on the penumbra from `camera_height`.
+struct EdgeSetup {
+  double edge = 0.5;
+  double source = 0.5;
+  float camera_height = 0.45f;  // close above the penumbra: a few pixels per texel
+  float camera_back = 0.25f;
+};
+
+Scene edge_scene(const EdgeSetup& setup) {
+  const float penumbra_x = float(setup.edge * kLightHeight / (kLightHeight - kSlabTop));
   return testing::TestScene("edge")
       .ground(16.0f)
-      // x in [-3.5, 0.5], z in [-2, 2], y in [1.9, 2]
-      .box({float(kSlabEdge) - 2.0f, float(kSlabTop) - 0.05f, 0.0f}, {4.0f, 0.1f, 4.0f})
-      .camera({penumbra_x, 0.45f, 0.25f}, {penumbra_x, 0.0f, 0.0f})
+      // x in [edge - 4, edge], z in [-2, 2], y in [1.9, 2]
+      .box({float(setup.edge) - 2.0f, float(kSlabTop) - 0.05f, 0.0f}, {4.0f, 0.1f, 4.0f})
+      .camera({penumbra_x, setup.camera_height, setup.camera_back}, {penumbra_x, 0.0f, 0.0f})
       // cone 25 degrees: a 1024^2 map has 9 mm texels on the ground
       .light(
           testing::spot_light({0.0f, float(kLightHeight), 0.0f}, {0.0f, 0.0f, 0.0f}, 25.0f, 20.0f));
@@ -62,13 +68,13 @@ double inverse_square_squared(double a, double lo, double hi) {
 // on top of the slab (height kSlabTop): the source points with
 // l_x < x + (edge - x) H / h are hidden. Both cosines are H / d, so each
 // source point weighs 1 / d^4; the z integral is closed-form.
-double edge_lit_fraction(double x, double z, double edge) {
-  const double half = 0.5 * kSourceWidth;
+double edge_lit_fraction(double x, double z, double edge, double source) {
+  const double half = 0.5 * source;
   const double hidden_below = x + (edge - x) * kLightHeight / kSlabTop;
   constexpr int kColumns = 512;
   double lit = 0.0, total = 0.0;
   for (int i = 0; i < kColumns; ++i) {
-    const double lx = -half + (i + 0.5) / kColumns * kSourceWidth;
+    const double lx = -half + (i + 0.5) / kColumns * source;
     const double a = (lx - x) * (lx - x) + kLightHeight * kLightHeight;
     const double w = inverse_square_squared(a, -half - z, half - z);
     total += w;
@@ -80,14 +86,14 @@ double edge_lit_fraction(double x, double z, double edge) {
 // The slab's edge where the shadow map puts it: the texels whose centres
 // see the slab are the slab, so its silhouette lies on the texel boundary
 // nearest the true edge.
-double map_edge(const LightView& view, int map_size) {
+double map_edge(const LightView& view, int map_size, double slab_edge) {
   auto texel = [&](double x) {
     const glm::vec4 clip = view.view_projection * glm::vec4(float(x), float(kSlabTop), 0.0f, 1.0f);
     return glm::dvec2(clip.x / clip.w, clip.y / clip.w) * (0.5 * map_size) + 0.5 * map_size;
   };
-  const glm::dvec2 at = texel(kSlabEdge), step = texel(kSlabEdge + 0.01) - at;
+  const glm::dvec2 at = texel(slab_edge), step = texel(slab_edge + 0.01) - at;
   const int axis = std::abs(step.x) > std::abs(step.y) ? 0 : 1;
-  return kSlabEdge + (std::round(at[axis]) - at[axis]) * 0.01 / step[axis];
+  return slab_edge + (std::round(at[axis]) - at[axis]) * 0.01 / step[axis];
 }
 
 struct EdgeError {
@@ -97,23 +103,23 @@ struct EdgeError {
   double pixel_rms = 0.0;  // of each pixel's error: the bins' bias and the noise around it
 };
 
-EdgeError edge_error(Technique technique, int map_size) {
-  Renderer renderer(edge_scene());
+EdgeError edge_error(Technique technique, int map_size, const EdgeSetup& setup = {}) {
+  Renderer renderer(edge_scene(setup));
   RenderSettings rs = testing::small_frame(320, 240);
   ShadowSettings s;
   s.technique = technique;
   s.map_size = map_size;
-  s.light_size = float(kSourceWidth);
+  s.light_size = float(setup.source);
   s.normal_offset = 0.0f;  // the receiver stays on the ground the integral assumes
   renderer.render(rs, s);
   const Image image = renderer.read_view();
   const SurfacePoints surfaces = renderer.read_surfaces();
-  const double edge = map_edge(renderer.light_view(0), map_size);
+  const double edge = map_edge(renderer.light_view(0), map_size, setup.edge);
   // World width of a texel on the ground.
   const LightView& view = renderer.light_view(0);
   const double texel = view.texel_world * kLightHeight;
   const double centre = edge * kLightHeight / (kLightHeight - kSlabTop);
-  const double half_penumbra = 0.5 * kSourceWidth * kSlabTop / (kLightHeight - kSlabTop);
+  const double half_penumbra = 0.5 * setup.source * kSlabTop / (kLightHeight - kSlabTop);
   const double from = centre - 1.5 * half_penumbra, to = centre + 1.5 * half_penumbra;
   const double bin_width = texel / 8.0;
   const int bins = int(std::ceil((to - from) / bin_width));
@@ -128,7 +134,8 @@ EdgeError edge_error(Technique technique, int map_size) {
       const glm::vec3 p = surfaces.position[i];
       if (std::abs(p.y) > 1e-3f || std::abs(p.z) > 0.3f || p.x < from || p.x >= to) continue;
       const int b = int((p.x - from) / bin_width);
-      const double error = double(image.pixel(x, y)[0]) - edge_lit_fraction(p.x, p.z, edge);
+      const double error =
+          double(image.pixel(x, y)[0]) - edge_lit_fraction(p.x, p.z, edge, setup.source);
       sum[b] += error;
       ++count[b];
       pixel_squares += error * error;
@@ -166,6 +173,29 @@ TEST_F(GpuTest, BackprojectionHasNeitherSawtoothNorNoiseAcrossAStraightEdge) {
   ASSERT_GT(e.bins, 60) << "too few receivers across the penumbra";
   EXPECT_LE(e.rms, 0.005);
   EXPECT_LE(e.pixel_rms, 0.005) << "the penumbra is noisy from pixel to pixel";
+}
+
+// A source 4 wide: a penumbra of about 110 texels, read from the depth
+// hierarchy's cells 4 texels wide. A cell that the slab's edge cuts stood
+// for the slab wholly or not at all, as its centre texel did, moving the
+// silhouette by up to half a cell with the edge's place among the cells:
+// over four places a texel apart, binned RMS 0.0073, 0.0146, 0.0073 and
+// 0.0003. Read as its quarters (each as its centre texel does), by up to
+// a quarter: 0.0073, 0.0003, 0.0073, 0.0003.
+TEST_F(GpuTest, BackprojectionReadsACellCutByAnEdgeAsItsQuarters) {
+  const double slab_texel = 2.0 * std::tan(glm::radians(25.0)) * (kLightHeight - kSlabTop) / 1024;
+  double worst = 0.0;
+  for (int shift = 0; shift < 4; ++shift) {
+    EdgeSetup setup;
+    setup.edge = 0.5 + shift * slab_texel;
+    setup.source = 4.0;
+    setup.camera_height = 1.2f;
+    setup.camera_back = 0.6f;
+    const EdgeError e = edge_error(Technique::Backprojection, 1024, setup);
+    ASSERT_GT(e.bins, 60) << "too few receivers across the penumbra";
+    worst = std::max(worst, e.rms);
+  }
+  EXPECT_LE(worst, 0.01);
 }
 
 // A box floating over the ground, lit by a sun or a point light with a
