@@ -578,20 +578,55 @@ float backprojection_reach(GpuShadowView view, BackprojectionReceiver r, int lay
              : 0.0;
 }
 
+// Hides the source points behind the patch [b0, b1] (texels from the
+// lookup) at z-bar `occluder` inside cell c of the hierarchy's level
+// level - 1 (its corners a0, a1; `cells` of them), reaching to the right
+// and upper neighbour cells' projections of their shared sides where the
+// patch touches them (`touches`).
+void backprojection_cell_box(sampler2DArray hierarchy, int layer, GpuShadowView view,
+                             BackprojectionReceiver r, int level, ivec2 cells, ivec2 c, vec2 a0,
+                             vec2 a1, vec2 b0, vec2 b1, float occluder, bvec2 touches,
+                             inout uvec4 low, inout uvec4 high) {
+  vec2 centre = 0.5 * (b0 + b1);
+  float extent = backprojection_extent(view, r, centre, occluder);
+  if (extent <= 0.0 || !backprojection_above_plane(view, r, centre, occluder)) return;
+  // The neighbours' nearest depths, at their centres as if as wide.
+  vec2 mid = 0.5 * (a0 + a1);
+  float right = 0.0, up = 0.0;
+  if (c.x + 1 < cells.x && touches.x) {
+    float depth = texelFetch(hierarchy, ivec3(c.x + 1, c.y, layer), level - 1).r;
+    BACKPROJECTION_FETCHED(1);
+    right = backprojection_reach(view, r, layer, level, occluder, depth,
+                                 vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y));
+  }
+  if (c.y + 1 < cells.y && touches.y) {
+    float depth = texelFetch(hierarchy, ivec3(c.x, c.y + 1, layer), level - 1).r;
+    BACKPROJECTION_FETCHED(1);
+    up = backprojection_reach(view, r, layer, level, occluder, depth,
+                              vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)));
+  }
+  backprojection_hide_patch(r, b0, b1, extent, right, up, low, high);
+}
+
 // Hides the source points behind cell c of the hierarchy's level level - 1
 // (2^level texels wide, `cells` of them): a cell whose depths all lie in
-// front is a patch at its nearest depth; a cell the receiver's plane cuts
+// front is a patch at its nearest depth. A cell the receiver's plane cuts
 // (a silhouette with what lies behind the receiver) is read as its four
-// quarters, each blocking where its centre texel lies in front: one patch
-// over the box of the blocking quarters, at the nearest of their depths,
-// reaching to a neighbour only across a side they touch. Taking the whole cell where
+// quarters, each blocking where its centre texel lies in front: a patch
+// over each row of quarters where some block, at the nearest of their
+// depths (one over both rows where the two rows block alike), reaching to
+// a neighbour only across a side it touches. Taking the whole cell where
 // its centre texel blocked moved a silhouette by up to half a cell, this
-// by up to a quarter (a straight edge's penumbra read from cells 4 texels
-// wide, binned RMS at worst 0.0146 -> 0.0073; RMSE at 640x360, default
-// scene: spot 0.5 0.0036 -> 0.0030, point 1.5 0.0094 -> 0.0079, sun 8.45
-// degrees 0.0054 -> 0.0043; the lighting pass 1.2x on llvmpipe, which
-// runs the branch for every cell; a GPU reads the three more texels only
-// for cut cells).
+// by up to a quarter: a straight edge's penumbra read from cells 4 texels
+// wide, binned RMS at worst 0.0146 -> 0.0073. RMSE at 640x360, default
+// scene: spot 0.5 0.0036 -> 0.0030, 1.5 0.0047 -> 0.0041, point 1.5
+// 0.0094 -> 0.0077, sun 8.45 degrees 0.0054 -> 0.0042; foliage, spot 1.5:
+// 0.0202 -> 0.0183. One patch over the box of the blocking quarters,
+// which an L or a diagonal of them fills wholly, gave 0.0045 at spot 1.5
+// and 0.0201 on the foliage. On llvmpipe, which runs a branch for every
+// cell when one pixel of eight takes it, the lighting pass takes 1.4x the
+// time (1.2x with the one box); a GPU reads the quarters and hides the
+// second row's patch only for the cells that need them.
 void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
                                GpuShadowView view, BackprojectionReceiver r, int level,
                                ivec2 cells, ivec2 c, inout uvec4 low, inout uvec4 high) {
@@ -600,54 +635,40 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
   vec2 a1 = vec2(mix(ivec2(c + 1) << level, size, equal(c, cells - 1))) - r.center;
   vec2 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rg;
   BACKPROJECTION_FETCHED(1);
-  vec2 mid = 0.5 * (a0 + a1);
-  float plane = r.z + dot(r.gradient, mid);
+  float plane = r.z + dot(r.gradient, 0.5 * (a0 + a1));
   if (m.x >= plane) return;
-  float occluder = m.x;
-  vec2 b0 = a0, b1 = a1;  // the patch
-  bvec2 reaches = bvec2(true);
+  // The quarters (x: lower left, y: lower right, z: upper left, w: upper
+  // right): their depths, and which of them block.
+  vec4 d = vec4(m.x);
+  bvec4 blocks = bvec4(true);
+  float h = float(1 << (level - 1));
   if (m.y >= plane) {
-    // Its quarters' centre texels (x: lower left, y: lower right, z: upper
-    // left, w: upper right) against the plane at each.
+    // Their centre texels against the plane at each.
     int half_cell = 1 << (level - 1);
     ivec2 t = (c << level) + (half_cell >> 1);
     ivec2 across = ivec2(half_cell, 0), above = ivec2(0, half_cell);
-    vec4 d = vec4(texelFetch(depth_maps, ivec3(min(t, size - 1), layer), 0).r,
-                  texelFetch(depth_maps, ivec3(min(t + across, size - 1), layer), 0).r,
-                  texelFetch(depth_maps, ivec3(min(t + above, size - 1), layer), 0).r,
-                  texelFetch(depth_maps, ivec3(min(t + half_cell, size - 1), layer), 0).r);
+    d = vec4(texelFetch(depth_maps, ivec3(min(t, size - 1), layer), 0).r,
+             texelFetch(depth_maps, ivec3(min(t + across, size - 1), layer), 0).r,
+             texelFetch(depth_maps, ivec3(min(t + above, size - 1), layer), 0).r,
+             texelFetch(depth_maps, ivec3(min(t + half_cell, size - 1), layer), 0).r);
     BACKPROJECTION_FETCHED(4);
     vec2 q = vec2(t) + 0.5 - r.center;
-    float h = float(half_cell);
     vec4 planes = r.z + vec4(dot(r.gradient, q), dot(r.gradient, q + vec2(across)),
                              dot(r.gradient, q + vec2(above)), dot(r.gradient, q + h));
-    bvec4 blocks = lessThan(d, planes);
-    if (!any(blocks)) return;
-    vec4 blocking = mix(vec4(m.y), d, blocks);
-    occluder = min(min(blocking.x, blocking.y), min(blocking.z, blocking.w));
-    bvec2 lower_half = bvec2(blocks.x || blocks.z, blocks.x || blocks.y);
-    reaches = bvec2(blocks.y || blocks.w, blocks.z || blocks.w);
-    b0 = mix(a0 + h, a0, lower_half);
-    b1 = mix(a0 + h, a1, reaches);
+    blocks = lessThan(d, planes);
   }
-  vec2 centre = 0.5 * (b0 + b1);
-  float extent = backprojection_extent(view, r, centre, occluder);
-  if (extent <= 0.0 || !backprojection_above_plane(view, r, centre, occluder)) return;
-  // The neighbours' nearest depths, at their centres as if as wide.
-  float right = 0.0, up = 0.0;
-  if (c.x + 1 < cells.x && reaches.x) {
-    float depth = texelFetch(hierarchy, ivec3(c.x + 1, c.y, layer), level - 1).r;
-    BACKPROJECTION_FETCHED(1);
-    right = backprojection_reach(view, r, layer, level, occluder, depth,
-                                 vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y));
+  d = mix(vec4(m.y), d, blocks);  // the nearest of the blocking ones below
+  bool alike = all(equal(blocks.xy, blocks.zw));
+  for (int row = 0; row < (alike ? 1 : 2); ++row) {
+    bvec2 row_blocks = row == 0 ? blocks.xy : blocks.zw;
+    if (!any(row_blocks)) continue;
+    vec2 depths = alike ? min(d.xy, d.zw) : (row == 0 ? d.xy : d.zw);
+    bool lower = alike || row == 0, upper = alike || row == 1;
+    vec2 b0 = vec2(row_blocks.x ? a0.x : a0.x + h, lower ? a0.y : a0.y + h);
+    vec2 b1 = vec2(row_blocks.y ? a1.x : a0.x + h, upper ? a1.y : a0.y + h);
+    backprojection_cell_box(hierarchy, layer, view, r, level, cells, c, a0, a1, b0, b1,
+                            min(depths.x, depths.y), bvec2(row_blocks.y, upper), low, high);
   }
-  if (c.y + 1 < cells.y && reaches.y) {
-    float depth = texelFetch(hierarchy, ivec3(c.x, c.y + 1, layer), level - 1).r;
-    BACKPROJECTION_FETCHED(1);
-    up = backprojection_reach(view, r, layer, level, occluder, depth,
-                              vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)));
-  }
-  backprojection_hide_patch(r, b0, b1, extent, right, up, low, high);
 }
 
 // Lit fraction of the receiver of lookup s (biased z-bar z, receiver-plane
