@@ -619,14 +619,14 @@ void backprojection_cell_box(sampler2DArray hierarchy, int layer, GpuShadowView 
 // its centre texel blocked moved a silhouette by up to half a cell, this
 // by up to a quarter: a straight edge's penumbra read from cells 4 texels
 // wide, binned RMS at worst 0.0146 -> 0.0073. RMSE at 640x360, default
-// scene: spot 0.5 0.0036 -> 0.0030, 1.5 0.0047 -> 0.0041, point 1.5
-// 0.0094 -> 0.0077, sun 8.45 degrees 0.0054 -> 0.0042; foliage, spot 1.5:
-// 0.0202 -> 0.0183. One patch over the box of the blocking quarters,
-// which an L or a diagonal of them fills wholly, gave 0.0045 at spot 1.5
-// and 0.0201 on the foliage. On llvmpipe, which runs a branch for every
-// cell when one pixel of eight takes it, the lighting pass takes 1.4x the
-// time (1.2x with the one box); a GPU reads the quarters and hides the
-// second row's patch only for the cells that need them.
+// scene: spot 0.5 0.0036 -> 0.0030, 1.5 0.0047 -> 0.0040, point 1.5
+// 0.0094 -> 0.0067, sun 8.45 degrees 0.0054 -> 0.0042; foliage, spot 1.5:
+// 0.0202 -> 0.0181. One patch over the box of the blocking quarters,
+// which an L or a diagonal of them fills wholly, gave 0.0045, 0.0079 and
+// 0.0201 there. On llvmpipe, which runs a branch for every cell when one
+// pixel of the eight it shades together takes it, the lighting pass takes
+// 1.37x the time (1.19x with the one box); a GPU reads the quarters and
+// hides the second row's patch only in the cells that need them.
 void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
                                GpuShadowView view, BackprojectionReceiver r, int level,
                                ivec2 cells, ivec2 c, inout uvec4 low, inout uvec4 high) {
@@ -641,10 +641,10 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
   // right): their depths, and which of them block.
   vec4 d = vec4(m.x);
   bvec4 blocks = bvec4(true);
-  float h = float(1 << (level - 1));
+  int half_cell = 1 << (level - 1);
+  float h = float(half_cell);
   if (m.y >= plane) {
     // Their centre texels against the plane at each.
-    int half_cell = 1 << (level - 1);
     ivec2 t = (c << level) + (half_cell >> 1);
     ivec2 across = ivec2(half_cell, 0), above = ivec2(0, half_cell);
     d = vec4(texelFetch(depth_maps, ivec3(min(t, size - 1), layer), 0).r,
