@@ -148,7 +148,8 @@ struct ShadowMapSettings {
   // own depth over +-W texels of its slope. Without it, MSM darkens sloped
   // lit surfaces under wide filters (measured on the default scene).
   float filter_slope_bias = 0.25f;
-  // Normal offset: the lookup moves this many texels along the surface normal.
+  // Normal offset: the lookup moves this many texels along the surface normal
+  // (backprojection: times 1 - cos theta, backprojection_normal_offset()).
   float normal_offset = 0.5f;
 
   // PCF: width of the square window in texels (0: the plain hard test),
@@ -485,8 +486,10 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowF
      &ShadowMapSettings::max_slope, OptionGroup::Bias},
     {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
      0.0f, 4.0f, &ShadowMapSettings::filter_slope_bias, OptionGroup::Bias},
-    {"normal-offset", "normal-offset distance, in shadow-map texels", 0.0f, 64.0f,
-     &ShadowMapSettings::normal_offset, OptionGroup::Bias},
+    {"normal-offset",
+     "normal-offset distance, in shadow-map texels (backprojection: times 1 - cos theta, theta "
+     "the angle between the surface's normal and the direction to the light)",
+     0.0f, 64.0f, &ShadowMapSettings::normal_offset, OptionGroup::Bias},
     {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
      &ShadowMapSettings::pcf_width, OptionGroup::Technique},
     {"esm-c", "ESM exponent c, per unit of the shadow view's relative depth z-bar", 1.0f, kEsmMaxC,

@@ -247,7 +247,13 @@ float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderC
 float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 shading_normal,
                          bool reference, vec2 rotation, PixelFootprint footprint) {
   GpuShadowView view = shadow_views[v];
-  ShadowLookup s = shadow_lookup(view, world, normal, shadow_params.normal_offset);
+#if SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
+  float normal_offset = backprojection_normal_offset(shadow_params.normal_offset, normal,
+                                                     direction_to_light(light, world));
+#else
+  float normal_offset = shadow_params.normal_offset;
+#endif
+  ShadowLookup s = shadow_lookup(view, world, normal, normal_offset);
   if (!s.inside) return 1.0;
   float filter_radius =
       SHADOW_TECHNIQUE >= TECHNIQUE_VSM && !reference ? float(shadow_params.blur_radius) : 0.0;

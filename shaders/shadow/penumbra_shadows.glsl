@@ -69,11 +69,14 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
                            vec2 pixel, float noise, vec2 rotation) {
   GpuShadowView view = penumbra_block.views[v];
   GpuShadow params = penumbra_block.params;
-  ShadowLookup s = shadow_lookup(view, world, normal, params.normal_offset);
+  vec3 to_light = direction_to_light(light, world);
+  float normal_offset = technique == TECHNIQUE_BACKPROJECTION
+                            ? backprojection_normal_offset(params.normal_offset, normal, to_light)
+                            : params.normal_offset;
+  ShadowLookup s = shadow_lookup(view, world, normal, normal_offset);
   if (!s.inside) return 1.0;
   bool filterable = technique >= TECHNIQUE_VSM;
-  float bias = shadow_bias(params, s, normal, direction_to_light(light, world),
-                           filterable ? params.blur_radius : 0);
+  float bias = shadow_bias(params, s, normal, to_light, filterable ? params.blur_radius : 0);
   float z = s.depth - bias;
   if (technique == TECHNIQUE_HARD) return shadow_hard(penumbra_depth, v, s.uv, z, 0.0);
   if (technique == TECHNIQUE_PCF) {

@@ -35,12 +35,16 @@ constexpr double kLightHeight = 10.0;
 constexpr double kSlabTop = 2.0;
 
 // The slab covers x < edge; the source is a square `source` wide; the
-// camera looks down on the penumbra from `camera_height`.
+// camera looks down on the penumbra from `camera_height`. The receiver
+// stays on the ground the integral assumes unless `normal_offset` (texels)
+// is given.
 struct EdgeSetup {
   double edge = 0.5;
   double source = 0.5;
   float camera_height = 0.45f;  // close above the penumbra: a few pixels per texel
   float camera_back = 0.25f;
+  float cone_degrees = 25.0f;
+  float normal_offset = 0.0f;
 };
 
 Scene edge_scene(const EdgeSetup& setup) {
@@ -51,8 +55,8 @@ Scene edge_scene(const EdgeSetup& setup) {
       .box({float(setup.edge) - 2.0f, float(kSlabTop) - 0.05f, 0.0f}, {4.0f, 0.1f, 4.0f})
       .camera({penumbra_x, setup.camera_height, setup.camera_back}, {penumbra_x, 0.0f, 0.0f})
       // cone 25 degrees: a 1024^2 map has 9 mm texels on the ground
-      .light(
-          testing::spot_light({0.0f, float(kLightHeight), 0.0f}, {0.0f, 0.0f, 0.0f}, 25.0f, 20.0f));
+      .light(testing::spot_light({0.0f, float(kLightHeight), 0.0f}, {0.0f, 0.0f, 0.0f},
+                                 setup.cone_degrees, 20.0f));
 }
 
 // Integral over t in [lo, hi] of 1 / (a + t^2)^2.
@@ -110,7 +114,7 @@ EdgeError edge_error(Technique technique, int map_size, const EdgeSetup& setup =
   s.technique = technique;
   s.map_size = map_size;
   s.light_size = float(setup.source);
-  s.normal_offset = 0.0f;  // the receiver stays on the ground the integral assumes
+  s.normal_offset = setup.normal_offset;
   renderer.render(rs, s);
   const Image image = renderer.read_view();
   const SurfacePoints surfaces = renderer.read_surfaces();
@@ -173,6 +177,22 @@ TEST_F(GpuTest, BackprojectionHasNeitherSawtoothNorNoiseAcrossAStraightEdge) {
   ASSERT_GT(e.bins, 60) << "too few receivers across the penumbra";
   EXPECT_LE(e.rms, 0.005);
   EXPECT_LE(e.pixel_rms, 0.005) << "the penumbra is noisy from pixel to pixel";
+}
+
+// The same edge 27 degrees off the light's axis, with the default normal
+// offset (half a texel): moving the lookup along the ground's normal moved
+// it half a texel times sin 27 degrees across the map, and the 9-texel
+// penumbra with it (binned RMS 0.0222); backprojection moves it by the
+// offset times 1 - cos theta (backprojection_normal_offset(): 0.0024).
+TEST_F(GpuTest, BackprojectionKeepsAPenumbraInPlaceWhateverTheNormalOffset) {
+  EdgeSetup setup;
+  setup.edge = 4.0;
+  setup.cone_degrees = 35.0f;
+  setup.normal_offset = ShadowSettings{}.normal_offset;
+  ASSERT_GT(setup.normal_offset, 0.0f);
+  const EdgeError e = edge_error(Technique::Backprojection, 1024, setup);
+  ASSERT_GT(e.bins, 60) << "too few receivers across the penumbra";
+  EXPECT_LE(e.rms, 0.005);
 }
 
 // A source 4 wide: a penumbra of about 110 texels, read from the depth
