@@ -141,7 +141,8 @@ struct ShadowMapSettings {
   float constant_bias = 0.5f;
   // Slope-scaled bias: multiples of the receiver's depth change across one texel.
   float slope_bias = 1.5f;
-  // Largest tan(angle to the light) the slope-scaled bias follows.
+  // Largest tan(angle to the light) the slope-scaled bias follows (backprojection:
+  // at most BACKPROJECTION_BIAS_MAX_SLOPE, 2) and the receiver's depth gradient takes.
   float max_slope = 10.0f;
   // Filtered techniques (vsm, esm, msm, msm16): extra slope-scaled bias per
   // texel of filter radius W, since a filter spreads a planar receiver's
@@ -482,8 +483,10 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowF
      64.0f, &ShadowMapSettings::constant_bias, OptionGroup::Bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
      &ShadowMapSettings::slope_bias, OptionGroup::Bias},
-    {"max-slope", "largest slope tan(theta) the slope-scaled bias follows", 0.0f, 1000.0f,
-     &ShadowMapSettings::max_slope, OptionGroup::Bias},
+    {"max-slope",
+     "largest slope tan(theta) the slope-scaled bias follows (backprojection: at most 2) and the "
+     "receiver's depth gradient takes",
+     0.0f, 1000.0f, &ShadowMapSettings::max_slope, OptionGroup::Bias},
     {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
      0.0f, 4.0f, &ShadowMapSettings::filter_slope_bias, OptionGroup::Bias},
     {"normal-offset",

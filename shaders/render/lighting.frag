@@ -247,13 +247,14 @@ float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderC
 float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 shading_normal,
                          bool reference, vec2 rotation, PixelFootprint footprint) {
   GpuShadowView view = shadow_views[v];
+  // The settings the lookup and the bias take.
 #if SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
-  float normal_offset = backprojection_normal_offset(shadow_params.normal_offset, normal,
-                                                     direction_to_light(light, world));
+  GpuShadow lookup_params =
+      backprojection_bias_settings(shadow_params, normal, direction_to_light(light, world));
 #else
-  float normal_offset = shadow_params.normal_offset;
+  GpuShadow lookup_params = shadow_params;
 #endif
-  ShadowLookup s = shadow_lookup(view, world, normal, normal_offset);
+  ShadowLookup s = shadow_lookup(view, world, normal, lookup_params.normal_offset);
   if (!s.inside) return 1.0;
   float filter_radius =
       SHADOW_TECHNIQUE >= TECHNIQUE_VSM && !reference ? float(shadow_params.blur_radius) : 0.0;
@@ -270,7 +271,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
   vec2 duv_dx = vec2(0.0), duv_dy = vec2(0.0);
 #endif
   float bias =
-      shadow_bias(shadow_params, s, normal, direction_to_light(light, world), filter_radius);
+      shadow_bias(lookup_params, s, normal, direction_to_light(light, world), filter_radius);
   if (reference) {
     return filtered_hard_reference(v, s.uv, ReceiverPlane(s.position, normal, s.depth, bias));
   }

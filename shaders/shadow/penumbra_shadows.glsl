@@ -70,13 +70,15 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
   GpuShadowView view = penumbra_block.views[v];
   GpuShadow params = penumbra_block.params;
   vec3 to_light = direction_to_light(light, world);
-  float normal_offset = technique == TECHNIQUE_BACKPROJECTION
-                            ? backprojection_normal_offset(params.normal_offset, normal, to_light)
-                            : params.normal_offset;
-  ShadowLookup s = shadow_lookup(view, world, normal, normal_offset);
+  // The settings the lookup and the bias take.
+  GpuShadow lookup_params = technique == TECHNIQUE_BACKPROJECTION
+                                ? backprojection_bias_settings(params, normal, to_light)
+                                : params;
+  ShadowLookup s = shadow_lookup(view, world, normal, lookup_params.normal_offset);
   if (!s.inside) return 1.0;
   bool filterable = technique >= TECHNIQUE_VSM;
-  float bias = shadow_bias(params, s, normal, to_light, filterable ? params.blur_radius : 0);
+  float bias =
+      shadow_bias(lookup_params, s, normal, to_light, filterable ? params.blur_radius : 0);
   float z = s.depth - bias;
   if (technique == TECHNIQUE_HARD) return shadow_hard(penumbra_depth, v, s.uv, z, 0.0);
   if (technique == TECHNIQUE_PCF) {

@@ -243,11 +243,10 @@ float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLig
   // The first level's cut region's half-width, in units of the view's
   // depth_range.z (world units, or tangent units of a spot's map).
   float cut = -1.0;
-  GpuShadow offset_params = params;
-  offset_params.normal_offset = backprojection_normal_offset(params.normal_offset, normal,
-                                                             direction_to_light(light, world));
+  GpuShadow lookup_params =
+      backprojection_bias_settings(params, normal, direction_to_light(light, world));
   for (int pass = 0; pass < 2; ++pass) {
-    VirtualReceiver v = virtual_receiver(level, offset_params, light, world, normal);
+    VirtualReceiver v = virtual_receiver(level, lookup_params, light, world, normal);
     GpuShadowView view = v.view;
     vec2 gradient = receiver_depth_gradient(view, v.s, normal, params.max_slope);
     ivec2 size = ivec2(virtual_level_texels(level));

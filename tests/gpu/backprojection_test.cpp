@@ -426,6 +426,46 @@ TEST_F(GpuTest, BackprojectionKeepsTheBlockersOfTheSourceAboveATerminatorsHorizo
   EXPECT_LT(m.max_error, 0.5);
 }
 
+// A wall 80 degrees from facing a spot light, a rod 1 cm thick held 4 mm
+// off it: along the light's rays the rod lies 2.3 cm in front of the wall
+// where its shadow falls, 6 texels of the map's depth. The slope-scaled
+// bias, following the wall's slope tan 80 degrees = 5.7, had moved the
+// receiver's plane 9 texels towards the light and dropped the rod where
+// it is nearest the wall: its umbra on the wall (where the traced
+// reference reads under 0.1) read 0.38 lit on average; following it only
+// up to BACKPROJECTION_BIAS_MAX_SLOPE (3.5 texels), 0.17, all of it from
+// the umbra's lower edge (four rows read lit, as a hard map would read
+// them: half a texel of the rod's silhouette moves the shadow's edge by a
+// centimetre on a wall this steep).
+TEST_F(GpuTest, BackprojectionKeepsABlockerCloseToASteepReceiver) {
+  const glm::vec3 to_light(0.0f, std::sin(glm::radians(80.0f)), std::cos(glm::radians(80.0f)));
+  const glm::vec3 aim(0.0f, 1.1f, 0.0f);
+  Scene scene = testing::TestScene("rod before a wall")
+                    .box({0.0f, 1.0f, -0.05f}, {2.0f, 2.0f, 0.1f})  // the wall's face at z = 0
+                    .box({0.0f, 1.2f, 0.009f}, {1.6f, 0.01f, 0.01f})
+                    .camera({0.0f, 1.12f, 0.6f}, {0.0f, 1.12f, 0.0f}, 30.0f)
+                    .light(testing::spot_light(aim + 5.0f * to_light, aim, 20.0f, 20.0f));
+  Renderer renderer(scene);
+  RenderSettings rs = testing::small_frame(160, 120);
+  ShadowSettings s;
+  s.technique = Technique::Backprojection;
+  s.map_size = 1024;
+  s.light_size = 0.02f;
+  const TracedReference reference = traced_reference(renderer, rs, s, 64, "");
+  renderer.render(rs, s);
+  const Image image = renderer.read_view();
+  double sum = 0.0;
+  int umbra = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    if (reference.image.rgba[i + 3] <= 0.0f || reference.image.rgba[i] >= 0.1f) continue;
+    sum += image.rgba[i];
+    ++umbra;
+  }
+  ASSERT_GT(umbra, 200) << "too little of the rod's umbra in view";
+  std::printf("the rod's umbra on the wall: %d pixels, mean %.3f lit\n", umbra, sum / umbra);
+  EXPECT_LT(sum / umbra, 0.25);
+}
+
 // The ground under the default scene's sphere, where the high slab hides
 // the sphere's top from the source's centre (1.5 wide): the first surfaces
 // of the map there are the slab's, and a receiver under the sphere sees
