@@ -263,6 +263,26 @@ TEST_F(GpuTest, BackprojectionSoftensAPointLightsShadowOnItsCubeFaces) {
   EXPECT_LT(e.backprojection, 0.8 * e.pcss);
 }
 
+// A backprojection image and its traced reference.
+struct CloseUp {
+  Image shadow;
+  Image reference;
+};
+
+// Backprojection and the traced reference (64 rays) on a small test scene,
+// 160 x 120, 1024^2 maps, under its light with a source `light_size` wide.
+CloseUp small_scene_images(const Scene& scene, float light_size) {
+  Renderer renderer(scene);
+  RenderSettings rs = testing::small_frame(160, 120);
+  ShadowSettings s;
+  s.technique = Technique::Backprojection;
+  s.map_size = 1024;
+  s.light_size = light_size;
+  TracedReference reference = traced_reference(renderer, rs, s, 64, "");
+  renderer.render(rs, s);
+  return {renderer.read_view(), std::move(reference.image)};
+}
+
 // A slab 39 degrees off the point light's downward axis, its shadow seen
 // from above (backprojection_sphere_source() and the near cut of
 // shadow_backprojection()):
@@ -283,23 +303,16 @@ TEST_F(GpuTest, BackprojectionDarkensTheUmbraOfABlockerOffACubeFacesAxis) {
                           .box({4.0f, 3.0f, 0.0f}, {2.5f, 0.1f, 2.5f})
                           .camera({6.4f, 5.0f, 0.5f}, {6.4f, 0.0f, 0.0f}, 50.0f)
                           .light(testing::point_light({0.0f, 8.0f, 0.0f}, 60.0f));
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(160, 120);
-  ShadowSettings s;
-  s.technique = Technique::Backprojection;
-  s.map_size = 1024;
-  s.light_size = 0.6f;
-  const TracedReference reference = traced_reference(renderer, rs, s, 64, "");
-  renderer.render(rs, s);
-  const Image shadow = renderer.read_view();
+  const CloseUp images = small_scene_images(scene, 0.6f);
+  const Image& shadow = images.shadow;
   long umbra = 0, lit_in_umbra = 0;
   for (std::size_t i = 0; i < shadow.rgba.size(); i += 4) {
-    const bool judged = reference.image.rgba[i + 3] > 0.0f;
-    if (!judged || reference.image.rgba[i] > 0.01f) continue;  // outside the umbra
+    const bool judged = images.reference.rgba[i + 3] > 0.0f;
+    if (!judged || images.reference.rgba[i] > 0.01f) continue;  // outside the umbra
     ++umbra;
     if (shadow.rgba[i] > 0.1f) ++lit_in_umbra;
   }
-  const ShadowMetrics m = compare_shadow(shadow, reference.image);
+  const ShadowMetrics m = compare_shadow(shadow, images.reference);
   std::printf("slab off the axis: %ld of %ld umbra pixels over 0.1, RMSE %.4f\n", lit_in_umbra,
               umbra, m.rmse);
   ASSERT_GT(umbra, 2000) << "too little of the umbra in view";
@@ -316,10 +329,6 @@ TEST_F(GpuTest, BackprojectionSoftensTheSunsShadowOnItsCascades) {
 // Backprojection and the traced reference (256 rays) on a close-up of the
 // default scene, 200 x 150, under its spot light with a source
 // `light_size` wide.
-struct CloseUp {
-  Image shadow;
-  Image reference;
-};
 
 CloseUp default_scene_images(glm::vec3 camera, glm::vec3 target, float fov_y_degrees,
                              float light_size) {
@@ -440,25 +449,18 @@ TEST_F(GpuTest, BackprojectionKeepsTheBlockersOfTheSourceAboveATerminatorsHorizo
 TEST_F(GpuTest, BackprojectionKeepsABlockerCloseToASteepReceiver) {
   const glm::vec3 to_light(0.0f, std::sin(glm::radians(80.0f)), std::cos(glm::radians(80.0f)));
   const glm::vec3 aim(0.0f, 1.1f, 0.0f);
-  Scene scene = testing::TestScene("rod before a wall")
-                    .box({0.0f, 1.0f, -0.05f}, {2.0f, 2.0f, 0.1f})  // the wall's face at z = 0
-                    .box({0.0f, 1.2f, 0.009f}, {1.6f, 0.01f, 0.01f})
-                    .camera({0.0f, 1.12f, 0.6f}, {0.0f, 1.12f, 0.0f}, 30.0f)
-                    .light(testing::spot_light(aim + 5.0f * to_light, aim, 20.0f, 20.0f));
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(160, 120);
-  ShadowSettings s;
-  s.technique = Technique::Backprojection;
-  s.map_size = 1024;
-  s.light_size = 0.02f;
-  const TracedReference reference = traced_reference(renderer, rs, s, 64, "");
-  renderer.render(rs, s);
-  const Image image = renderer.read_view();
+  const Scene scene =
+      testing::TestScene("rod before a wall")
+          .box({0.0f, 1.0f, -0.05f}, {2.0f, 2.0f, 0.1f})  // the wall's face at z = 0
+          .box({0.0f, 1.2f, 0.009f}, {1.6f, 0.01f, 0.01f})
+          .camera({0.0f, 1.12f, 0.6f}, {0.0f, 1.12f, 0.0f}, 30.0f)
+          .light(testing::spot_light(aim + 5.0f * to_light, aim, 20.0f, 20.0f));
+  const CloseUp images = small_scene_images(scene, 0.02f);
   double sum = 0.0;
   int umbra = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-    if (reference.image.rgba[i + 3] <= 0.0f || reference.image.rgba[i] >= 0.1f) continue;
-    sum += image.rgba[i];
+  for (std::size_t i = 0; i < images.shadow.rgba.size(); i += 4) {
+    if (images.reference.rgba[i + 3] <= 0.0f || images.reference.rgba[i] >= 0.1f) continue;
+    sum += images.shadow.rgba[i];
     ++umbra;
   }
   ASSERT_GT(umbra, 200) << "too little of the rod's umbra in view";
