@@ -247,10 +247,10 @@ float pcss_lit_fraction(int v, ShadowLookup s, float z, vec2 gradient, OccluderC
 float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 shading_normal,
                          bool reference, vec2 rotation, PixelFootprint footprint) {
   GpuShadowView view = shadow_views[v];
+  vec3 to_light = direction_to_light(light, world);
   // The settings the lookup and the bias take.
 #if SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
-  GpuShadow lookup_params =
-      backprojection_bias_settings(shadow_params, normal, direction_to_light(light, world));
+  GpuShadow lookup_params = backprojection_bias_settings(shadow_params, normal, to_light);
 #else
   GpuShadow lookup_params = shadow_params;
 #endif
@@ -270,8 +270,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
 #else
   vec2 duv_dx = vec2(0.0), duv_dy = vec2(0.0);
 #endif
-  float bias =
-      shadow_bias(lookup_params, s, normal, direction_to_light(light, world), filter_radius);
+  float bias = shadow_bias(lookup_params, s, normal, to_light, filter_radius);
   if (reference) {
     return filtered_hard_reference(v, s.uv, ReceiverPlane(s.position, normal, s.depth, bias));
   }
