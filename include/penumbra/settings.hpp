@@ -20,6 +20,10 @@
 #include "penumbra/light.hpp"
 #include "penumbra/shared/bindings.h"
 
+// A macro's value as a string literal (help texts that quote shader constants).
+#define PENUMBRA_QUOTED_TEXT(x) #x
+#define PENUMBRA_QUOTED(x) PENUMBRA_QUOTED_TEXT(x)
+
 namespace penumbra {
 
 enum class Technique { None, Hard, Pcf, Pcss, Backprojection, Vsm, Esm, Msm, Msm16, Evsm2, Evsm4 };
@@ -142,7 +146,7 @@ struct ShadowMapSettings {
   // Slope-scaled bias: multiples of the receiver's depth change across one texel.
   float slope_bias = 1.5f;
   // Largest tan(angle to the light) the slope-scaled bias follows (backprojection:
-  // at most BACKPROJECTION_BIAS_MAX_SLOPE, 2) and the receiver's depth gradient takes.
+  // at most BACKPROJECTION_BIAS_MAX_SLOPE) and the receiver's depth gradient takes.
   float max_slope = 10.0f;
   // Filtered techniques (vsm, esm, msm, msm16): extra slope-scaled bias per
   // texel of filter radius W, since a filter spreads a planar receiver's
@@ -477,16 +481,19 @@ inline constexpr int kMaxContactShadowSteps = 64;
 // each device's own limit is checked where the maps are made).
 inline constexpr int kMaxShadowMsaa = 8;
 
+// --max-slope's help, quoting backprojection's own cap (shared/bindings.h).
+inline constexpr std::string_view kMaxSlopeHelp =
+    "largest slope tan(theta) the slope-scaled bias follows (backprojection: at "
+    "most " PENUMBRA_QUOTED(
+        BACKPROJECTION_BIAS_MAX_SLOPE) ") and the receiver's depth gradient takes";
+
 inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowFloatParams{{
     {"constant-bias",
      "constant depth bias, in shadow-map texels (a texel's world size at the receiver)", 0.0f,
      64.0f, &ShadowMapSettings::constant_bias, OptionGroup::Bias},
     {"slope-bias", "slope-scaled depth bias, in texels of the receiver's depth slope", 0.0f, 64.0f,
      &ShadowMapSettings::slope_bias, OptionGroup::Bias},
-    {"max-slope",
-     "largest slope tan(theta) the slope-scaled bias follows (backprojection: at most 2) and the "
-     "receiver's depth gradient takes",
-     0.0f, 1000.0f, &ShadowMapSettings::max_slope, OptionGroup::Bias},
+    {"max-slope", kMaxSlopeHelp, 0.0f, 1000.0f, &ShadowMapSettings::max_slope, OptionGroup::Bias},
     {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
      0.0f, 4.0f, &ShadowMapSettings::filter_slope_bias, OptionGroup::Bias},
     {"normal-offset",

@@ -115,9 +115,10 @@ float backprojection_normal_offset(float normal_offset, vec3 normal, vec3 to_lig
   return normal_offset * (1.0 - abs(dot(normal, to_light)));
 }
 
-// The steepest slope tan(theta) backprojection's slope-scaled bias follows
-// (the settings' max_slope, 10 by default, still caps the receiver's depth
-// gradient). The hard test compares the receiver with a texel's depth up
+// BACKPROJECTION_BIAS_MAX_SLOPE (shared/bindings.h): the steepest slope
+// tan(theta) backprojection's slope-scaled bias follows (the settings'
+// max_slope, 10 by default, still caps the receiver's depth gradient).
+// The hard test compares the receiver with a texel's depth up
 // to half a texel away, an error of up to half a texel times tan(theta)
 // that the slope-scaled bias covers; backprojection compares each patch
 // with the receiver's plane at the patch's own centre, and a bias of up to
@@ -130,7 +131,6 @@ float backprojection_normal_offset(float normal_offset, vec3 normal, vec3 to_lig
 // (480x270, source 1.0) 0.0220 unchanged, `far_ground` 0.0438 -> 0.0396.
 // At 1: the foliage's sun 0.0213, but creases 0.0231; at 3: 0.0237 and
 // 0.0216.
-const float BACKPROJECTION_BIAS_MAX_SLOPE = 2.0;
 
 // The settings `params` as backprojection's lookup and bias take them for a
 // receiver with the triangle's normal `normal`: its share of the normal

@@ -115,6 +115,11 @@
 // silhouette moves by up to half a cell); the lighting pass takes 1.5x,
 // 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
 #define BACKPROJECTION_MAX_CELLS 40
+// Backprojection: the steepest slope tan(theta) its slope-scaled bias
+// follows (shaders/shadow/backprojection.glsl says why; the settings'
+// max_slope still caps its receiver's depth gradient). The help of
+// --max-slope quotes it.
+#define BACKPROJECTION_BIAS_MAX_SLOPE 2.0
 // Virtual shadow maps: PCSS reads its blocker search and its filter from
 // a level where each is at most this many texels wide (half a page, so a
 // window reads at most 2 x 2 pages; a wider penumbra is read from a
