@@ -203,7 +203,8 @@ TEST_F(GpuTest, BackprojectionKeepsAPenumbraInPlaceWhateverTheNormalOffset) {
 // 0.0003. Read as its quarters (each as its centre texel does), by up to
 // a quarter: 0.0073, 0.0003, 0.0073, 0.0003.
 TEST_F(GpuTest, BackprojectionReadsACellCutByAnEdgeAsItsQuarters) {
-  const double slab_texel = 2.0 * std::tan(glm::radians(25.0)) * (kLightHeight - kSlabTop) / 1024;
+  const double cone = glm::radians(double(EdgeSetup{}.cone_degrees));
+  const double slab_texel = 2.0 * std::tan(cone) * (kLightHeight - kSlabTop) / 1024;
   double worst = 0.0;
   for (int shift = 0; shift < 4; ++shift) {
     EdgeSetup setup;
