@@ -8,7 +8,19 @@
 // SOFT_SHADOWS (0/1: penumbra-sized filters from the summed-area table),
 // SHADOW_MIPS (0/1: the filtered map has a mip chain, read over the
 // pixel's footprint), VIRTUAL_SHADOWS (0/1: the lights with levels in
-// virtual_shadow.lights read virtual shadow maps, shaders/shadow/virtual_shadow.glsl).
+// virtual_shadow.lights read virtual shadow maps, shaders/shadow/virtual_shadow.glsl),
+// LIGHTING_VIEWS (LIGHTING_VIEWS_*: the views the program writes),
+// CONTACT_SHADOWS (0/1: the screen-space march, contact_shadow.glsl) and
+// ACCUMULATE_SUBFRAMES (0/1: a hard --accumulate sub-frame's rays).
+#ifndef LIGHTING_VIEWS
+#define LIGHTING_VIEWS LIGHTING_VIEWS_SHADED
+#endif
+#ifndef CONTACT_SHADOWS
+#define CONTACT_SHADOWS 0
+#endif
+#ifndef ACCUMULATE_SUBFRAMES
+#define ACCUMULATE_SUBFRAMES 0
+#endif
 #include "../common/uniforms.glsl"
 #include "../common/world_position.glsl"
 #include "../shadow/lookup.glsl"
@@ -276,7 +288,8 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
   }
   float z = s.depth - bias;
 #if SHADOW_TECHNIQUE == TECHNIQUE_HARD
-  if (shadow_params.accumulate_count > 0 && view.perspective != 0 && view.radial_depth == 0) {
+#if ACCUMULATE_SUBFRAMES
+  if (view.perspective != 0 && view.radial_depth == 0) {
     // An --accumulate sub-frame of a spot light: rays to the pixel's own
     // points of the sub-frame's cell.
     vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
@@ -295,6 +308,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
     }
     return lit / float(ACCUMULATE_RAYS);
   }
+#endif
   return shadow_hard(shadow_depth, v, s.uv, z, 0.0);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCF || SHADOW_TECHNIQUE == TECHNIQUE_PCSS
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
@@ -375,7 +389,7 @@ float shadow_factor(int i, vec3 world, vec3 normal, vec3 shading_normal, bool re
 // the shading normal, whose horizon weighs the source (see
 // contact_visible_source()).
 float with_contact_shadow(float lit, int i, ivec2 pixel, vec3 start, vec3 n) {
-  if (frame.contact_shadows == 0 || lit <= 0.0) return lit;
+  if (lit <= 0.0) return lit;
   GpuLight light = lights[i];
   // The source's angular radius as source_above_horizon() takes it, but a
   // spot light's square as its equal-area disc (w / sqrt(pi)).
@@ -484,14 +498,9 @@ void main() {
   vec4 facet = texelFetch(gbuffer_facet, pixel, 0);
   vec3 facet_normal = normalize(facet.xyz);
   vec3 albedo = texelFetch(gbuffer_albedo, pixel, 0).rgb;
-  float angle = 6.28318530718 * interleaved_gradient_noise(vec2(pixel));
-#if SHADOW_MIPS
-  PixelFootprint footprint = pixel_footprint(pixel, world, n);
-#else
-  PixelFootprint footprint = PixelFootprint(vec3(0.0), vec3(0.0));
-#endif
-  vec2 rotation = vec2(cos(angle), sin(angle));
-
+  // Fraction of the ambient light that reaches the point.
+  float ao = frame.options.w != 0 ? texelFetch(ambient_occlusion, pixel, 0).r : 1.0;
+#if LIGHTING_VIEWS == LIGHTING_VIEWS_INSPECT
   if (view == VIEW_NORMALS) {
     out_color = vec4(n * 0.5 + 0.5, 1.0);
     return;
@@ -500,8 +509,6 @@ void main() {
     out_color = vec4(albedo, 1.0);
     return;
   }
-  // Fraction of the ambient light that reaches the point.
-  float ao = frame.options.w != 0 ? texelFetch(ambient_occlusion, pixel, 0).r : 1.0;
   if (view == VIEW_AO) {
     out_color = vec4(vec3(ao), 1.0);
     return;
@@ -566,11 +573,22 @@ void main() {
                      1.0);
     return;
   }
+  out_color = vec4(0.0);  // not a view of this program
+#else
+  float angle = 6.28318530718 * interleaved_gradient_noise(vec2(pixel));
+#if SHADOW_MIPS
+  PixelFootprint footprint = pixel_footprint(pixel, world, n);
+#else
+  PixelFootprint footprint = PixelFootprint(vec3(0.0), vec3(0.0));
+#endif
+  vec2 rotation = vec2(cos(angle), sin(angle));
+
   // The shadow views read the chosen light alone; the lit image sums every
   // light. One loop, so that the technique's lookup (shadow_factor) and
   // the contact shadows have one call site: the shader compiler inlines
   // each call, and two call sites would double the shader.
-  bool shadow_view = view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE;
+  const bool reference = LIGHTING_VIEWS == LIGHTING_VIEWS_REFERENCE;
+  bool shadow_view = reference || view == VIEW_SHADOW;
   int first_light = shadow_view ? frame.options.z : 0;
   int light_end = shadow_view ? first_light + 1 : frame.options.x;
   vec3 specular = texelFetch(gbuffer_specular, pixel, 0).rgb;
@@ -597,9 +615,10 @@ void main() {
       if (dot(n, to_light) <= 0.0 || all(equal(irradiance, vec3(0.0)))) continue;
     }
     vec3 start = lifted_point(lights[i], world, n, facet);
-    float lit = shadow_factor(i, start, facet_normal, n, view == VIEW_SHADOW_REFERENCE, rotation,
-                              footprint);
-    if (view != VIEW_SHADOW_REFERENCE) lit = with_contact_shadow(lit, i, pixel, start, n);
+    float lit = shadow_factor(i, start, facet_normal, n, reference, rotation, footprint);
+#if CONTACT_SHADOWS
+    if (!reference) lit = with_contact_shadow(lit, i, pixel, start, n);
+#endif
     if (shadow_view) {
       float weight = accumulate_source_weight(lights[i], world, n);
       out_color = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)
@@ -613,4 +632,5 @@ void main() {
     color += lit * irradiance * dot(n, to_light) * brdf;
   }
   out_color = vec4(color, 1.0);
+#endif
 }

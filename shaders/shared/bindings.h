@@ -160,6 +160,14 @@
 // colour, or the values themselves in red (Renderer::read_texel_density)
 #define VIEW_TEXEL_DENSITY 8
 #define VIEW_TEXEL_DENSITY_VALUES 9
+// Which of those views a lighting program writes (compile-time define
+// LIGHTING_VIEWS): the shaded ones, the filtered hard-shadow reference, or
+// the views that inspect the frame without a technique's lookup. A CPU
+// rasterizer (llvmpipe) runs the code of an `if` whether any pixel takes it
+// or not, so a view's code in every program costs every frame.
+#define LIGHTING_VIEWS_SHADED 0     // VIEW_FINAL, VIEW_SHADOW
+#define LIGHTING_VIEWS_REFERENCE 1  // VIEW_SHADOW_REFERENCE
+#define LIGHTING_VIEWS_INSPECT 2    // normals, albedo, AO, cascades, pages, texel density
 
 // Shadow techniques (compile-time define SHADOW_TECHNIQUE)
 // (the filterable ones, from TECHNIQUE_VSM on, last)

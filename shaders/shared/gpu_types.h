@@ -66,12 +66,13 @@ struct GpuFrame {
   ivec4 options;
   vec4 ambient;  // rgb: ambient light colour
   // Screen-space contact shadows (ShadowSettings::contact_shadows,
-  // shaders/render/contact_shadow.glsl): 1 when on; the march's length and
-  // the depth thickness of what it meets, in world units; its step count.
-  int contact_shadows;
+  // shaders/render/contact_shadow.glsl; on where the lighting program is
+  // compiled with CONTACT_SHADOWS 1): the march's length and the depth
+  // thickness of what it meets, in world units; its step count.
   float contact_length;
   float contact_thickness;
   int contact_steps;
+  int unused0;
 };
 
 // Shadow parameters (see ShadowSettings in include/penumbra/settings.hpp for their

@@ -20,21 +20,45 @@ LightingPass::LightingPass()
   cpu_rasterizer_ = renderer != nullptr && gl::is_cpu_rasterizer(renderer);
 }
 
-const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
-  const auto key =
-      std::make_tuple(technique_define(settings.technique), filter_define(settings), settings.soft,
-                      uses_shadow_mips(settings),
-                      fetch_counts_ != 0 && settings.technique == Technique::Backprojection,
-                      settings.shadow_maps == ShadowMapKind::Virtual);
+namespace {
+
+// The LIGHTING_VIEWS program that writes a VIEW_*.
+int lighting_views(int view) {
+  if (view == VIEW_FINAL || view == VIEW_SHADOW) return LIGHTING_VIEWS_SHADED;
+  if (view == VIEW_SHADOW_REFERENCE) return LIGHTING_VIEWS_REFERENCE;
+  return LIGHTING_VIEWS_INSPECT;
+}
+
+const char* flag(bool on) {
+  return on ? "1" : "0";
+}
+
+}  // namespace
+
+const gl::Program& LightingPass::program_for(const ShadowSettings& settings, int view) {
+  const ProgramKey key{
+      .technique = technique_define(settings.technique),
+      .filter = filter_define(settings),
+      .quantized_moments = uses_quantized_moments(settings),
+      .soft = settings.soft,
+      .shadow_mips = uses_shadow_mips(settings),
+      .count_fetches = fetch_counts_ != 0 && settings.technique == Technique::Backprojection,
+      .virtual_maps = settings.shadow_maps == ShadowMapKind::Virtual,
+      .views = lighting_views(view),
+      .contact_shadows = settings.contact_shadows,
+      .accumulate_subframes = settings.accumulate > 1 && settings.technique == Technique::Hard};
   auto it = programs_.find(key);
   if (it == programs_.end()) {
-    gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(std::get<0>(key))},
-                           {"SHADOW_FILTER", std::to_string(std::get<1>(key))},
-                           {"MSM_QUANTIZED", uses_quantized_moments(settings) ? "1" : "0"},
-                           {"SOFT_SHADOWS", settings.soft ? "1" : "0"},
-                           {"SHADOW_MIPS", std::get<3>(key) ? "1" : "0"},
-                           {"BACKPROJECTION_COUNT_FETCHES", std::get<4>(key) ? "1" : "0"},
-                           {"VIRTUAL_SHADOWS", std::get<5>(key) ? "1" : "0"}};
+    const gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(key.technique)},
+                                 {"SHADOW_FILTER", std::to_string(key.filter)},
+                                 {"MSM_QUANTIZED", flag(key.quantized_moments)},
+                                 {"SOFT_SHADOWS", flag(key.soft)},
+                                 {"SHADOW_MIPS", flag(key.shadow_mips)},
+                                 {"BACKPROJECTION_COUNT_FETCHES", flag(key.count_fetches)},
+                                 {"VIRTUAL_SHADOWS", flag(key.virtual_maps)},
+                                 {"LIGHTING_VIEWS", std::to_string(key.views)},
+                                 {"CONTACT_SHADOWS", flag(key.contact_shadows)},
+                                 {"ACCUMULATE_SUBFRAMES", flag(key.accumulate_subframes)}};
     it = programs_
              .emplace(key, gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
                                                  defines))
@@ -44,7 +68,7 @@ const gl::Program& LightingPass::program_for(const ShadowSettings& settings) {
 }
 
 void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_maps,
-                           GLuint filtered_maps, const ShadowSettings& settings,
+                           GLuint filtered_maps, const ShadowSettings& settings, int view,
                            GLuint ambient_occlusion, int width, int height) {
   if (width != width_ || height != height_) {
     output_ = gl::Texture(gl::TextureInfo{
@@ -65,7 +89,7 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
-  program_for(settings).use();
+  program_for(settings, view).use();
   glBindTextureUnit(UNIT_GBUFFER_DEPTH, gbuffer.depth().id());
   glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
   glBindTextureUnit(UNIT_GBUFFER_ALBEDO, gbuffer.albedo().id());

@@ -2,7 +2,6 @@
 // Full-screen deferred lighting into a 32-bit float target: the final
 // linear colour, or one of the debug views.
 #include <map>
-#include <tuple>
 
 #include "penumbra/gl/program.hpp"
 #include "penumbra/gl/resources.hpp"
@@ -22,8 +21,11 @@ class LightingPass {
   // that read the depth maps. `ambient_occlusion` is the AO texture at the
   // G-buffer's size, read when the frame block's options.w is 1; 0 when
   // there is none.
+  // `view` is the VIEW_* the frame block's options.y names: it picks the
+  // program (LIGHTING_VIEWS).
   void execute(const GBufferPass& gbuffer, const gl::Texture* depth_maps, GLuint filtered_maps,
-               const ShadowSettings& settings, GLuint ambient_occlusion, int width, int height);
+               const ShadowSettings& settings, int view, GLuint ambient_occlusion, int width,
+               int height);
 
   // While `counts` (a GL_R32UI texture at the output's size) is not 0,
   // backprojection runs in a variant that adds each pixel's texel reads
@@ -35,11 +37,24 @@ class LightingPass {
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
  private:
-  const gl::Program& program_for(const ShadowSettings& settings);
+  // What tells one lighting program from another: its defines.
+  struct ProgramKey {
+    int technique = 0;  // TECHNIQUE_*
+    int filter = 0;     // FILTER_*
+    bool quantized_moments = false;
+    bool soft = false;
+    bool shadow_mips = false;
+    bool count_fetches = false;
+    bool virtual_maps = false;
+    int views = 0;  // LIGHTING_VIEWS_*
+    bool contact_shadows = false;
+    bool accumulate_subframes = false;
+    auto operator<=>(const ProgramKey&) const = default;
+  };
+  const gl::Program& program_for(const ShadowSettings& settings, int view);
 
-  // One per (technique, filter, soft, mips, counting fetches) combination,
-  // compiled on first use.
-  std::map<std::tuple<int, int, bool, bool, bool, bool>, gl::Program> programs_;
+  // One per combination of defines, compiled on first use.
+  std::map<ProgramKey, gl::Program> programs_;
   GLuint fetch_counts_ = 0;
   gl::VertexArray empty_vao_;
   gl::Sampler nearest_;

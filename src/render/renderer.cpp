@@ -393,7 +393,6 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
   frame.options = glm::ivec4(light_count, view_define(render.view), render.light_index,
                              ambient_occlusion ? 1 : 0);
   frame.ambient = glm::vec4(0.06f, 0.065f, 0.08f, 0.0f);
-  frame.contact_shadows = shadow.contact_shadows ? 1 : 0;
   frame.contact_length = shadow.contact_shadow_length;
   frame.contact_thickness = shadow.contact_shadow_thickness;
   frame.contact_steps = shadow.contact_shadow_steps;
@@ -548,7 +547,7 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     gl::GpuPassScope timed(profiler, gl::GpuPass::Lighting);
     const GLuint filtered_id = filtered != nullptr ? filtered->id() : 0;
     lighting_pass_.execute(gbuffer_pass_, shadows ? &shadow_pass_.depth_maps() : nullptr,
-                           filtered_id, shadow, ao, render.width, render.height);
+                           filtered_id, shadow, frame.options.y, ao, render.width, render.height);
     last_frame_ = frame;
     last_filtered_ = filtered_id;
     last_ao_ = ao;
@@ -660,7 +659,7 @@ void Renderer::shade_as(int define, bool ambient_occlusion) {
   if (last_shadow_.shadow_maps == ShadowMapKind::Virtual) virtual_pass_.bind(kVirtualBindings);
   if (define == VIEW_SHADOW_REFERENCE) bind_reference_weights(last_shadow_);
   lighting_pass_.execute(gbuffer_pass_, last_shadows_ ? &shadow_pass_.depth_maps() : nullptr,
-                         last_filtered_, last_shadow_, ambient_occlusion ? last_ao_ : 0,
+                         last_filtered_, last_shadow_, define, ambient_occlusion ? last_ao_ : 0,
                          last_render_.width, last_render_.height);
 }
 

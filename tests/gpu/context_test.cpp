@@ -147,6 +147,34 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
                             {{"SHADOW_TECHNIQUE", std::to_string(TECHNIQUE_BACKPROJECTION)},
                              {"BACKPROJECTION_COUNT_FETCHES", "1"}}));
+  // The programs of the other views, and of the options compiled in only
+  // where they are on (LightingPass::program_for).
+  for (int technique = TECHNIQUE_NONE; technique <= TECHNIQUE_EVSM4; ++technique) {
+    for (const gl::Defines& defines :
+         {gl::Defines{{"LIGHTING_VIEWS", std::to_string(LIGHTING_VIEWS_REFERENCE)}},
+          gl::Defines{{"CONTACT_SHADOWS", "1"}}}) {
+      gl::Defines with_technique = defines;
+      with_technique.push_back({"SHADOW_TECHNIQUE", std::to_string(technique)});
+      with_technique.push_back(
+          {"SHADOW_FILTER",
+           std::to_string(technique >= TECHNIQUE_VSM ? FILTER_GAUSSIAN : FILTER_NONE)});
+      with_technique.push_back({"MSM_QUANTIZED", "0"});
+      EXPECT_NO_THROW(
+          gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag", with_technique))
+          << "lighting, technique " << technique << ", " << defines.front().first;
+    }
+  }
+  for (const char* virtual_maps : {"0", "1"}) {
+    EXPECT_NO_THROW(
+        gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
+                              {{"LIGHTING_VIEWS", std::to_string(LIGHTING_VIEWS_INSPECT)},
+                               {"SHADOW_TECHNIQUE", std::to_string(TECHNIQUE_PCF)},
+                               {"VIRTUAL_SHADOWS", virtual_maps}}))
+        << "lighting's inspecting views, virtual maps " << virtual_maps;
+  }
+  EXPECT_NO_THROW(gl::Program::graphics(
+      "common/fullscreen.vert", "render/lighting.frag",
+      {{"SHADOW_TECHNIQUE", std::to_string(TECHNIQUE_HARD)}, {"ACCUMULATE_SUBFRAMES", "1"}}));
   // The lookups through virtual maps (shaders/shadow/virtual_shadow.glsl).
   for (int technique : {TECHNIQUE_HARD, TECHNIQUE_PCF, TECHNIQUE_PCSS, TECHNIQUE_BACKPROJECTION}) {
     EXPECT_NO_THROW(gl::Program::graphics(

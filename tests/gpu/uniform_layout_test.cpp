@@ -33,7 +33,8 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
                                                {{"SHADOW_TECHNIQUE", std::to_string(TECHNIQUE_MSM)},
                                                 {"SHADOW_FILTER", std::to_string(FILTER_SAT)},
                                                 {"MSM_QUANTIZED", "0"},
-                                                {"SOFT_SHADOWS", "1"}});
+                                                {"SOFT_SHADOWS", "1"},
+                                                {"CONTACT_SHADOWS", "1"}});
   const GLuint p = lighting.id();
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, constant_bias);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, normal_offset);
@@ -49,7 +50,6 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   EXPECT_OFFSET(p, "frame", GpuFrame, viewport);
   EXPECT_OFFSET(p, "frame", GpuFrame, options);
   EXPECT_OFFSET(p, "frame", GpuFrame, ambient);
-  EXPECT_OFFSET(p, "frame", GpuFrame, contact_shadows);
   EXPECT_OFFSET(p, "frame", GpuFrame, contact_length);
   EXPECT_OFFSET(p, "frame", GpuFrame, contact_thickness);
   EXPECT_OFFSET(p, "frame", GpuFrame, contact_steps);
