@@ -21,6 +21,9 @@ constexpr int kDirectRows = 8;  // GROUP_Y: the direct passes' workgroups are 32
 // MB (2048 wide, msm, W = 16: 9 MB), and the apron adds 2 W / 256 to the
 // horizontal pass's work.
 constexpr int kDirectBandRows = 256;
+// DIRECT_RUN: the texels one invocation of a direct pass filters, along its
+// row (step 2) or its column (step 3).
+constexpr int kDirectRun = 4;
 
 }  // namespace
 
@@ -81,6 +84,7 @@ const gl::Program& FusedFilterPass::program(const ProgramKey& key) {
       {"SAMPLES", std::to_string(samples)},
       {"STAGE_IN_SHARED_MEMORY", pass == 0 ? "1" : "0"},
       {"PASS", std::to_string(pass)},
+      {"DIRECT_RUN", std::to_string(kDirectRun)},
       {"ROWS_FORMAT", image_format_qualifier(float_format_with_channels_of(format))}};
   return programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines))
       .first->second;
@@ -142,7 +146,10 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
       glBindImageTexture(IMAGE_OUTPUT, target.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, target_format);
       glProgramUniform1i(program.id(), 3, layer);
       glProgramUniform3i(program.id(), 4, from, to, band_first);
-      glDispatchCompute(groups_x, gl::work_groups(to - from, kDirectRows), 1);
+      const bool along_rows = &program == &horizontal;
+      glDispatchCompute(gl::work_groups(output_.width(), kTileX * (along_rows ? kDirectRun : 1)),
+                        gl::work_groups(to - from, kDirectRows * (along_rows ? 1 : kDirectRun)),
+                        1);
     };
     for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
       for (int layer = first; layer < first + count; ++layer) {
