@@ -148,8 +148,7 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
       glProgramUniform3i(program.id(), 4, from, to, band_first);
       const bool along_rows = &program == &horizontal;
       glDispatchCompute(gl::work_groups(output_.width(), kTileX * (along_rows ? kDirectRun : 1)),
-                        gl::work_groups(to - from, kDirectRows * (along_rows ? 1 : kDirectRun)),
-                        1);
+                        gl::work_groups(to - from, kDirectRows * (along_rows ? 1 : kDirectRun)), 1);
     };
     for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
       for (int layer = first; layer < first + count; ++layer) {
