@@ -79,6 +79,11 @@ in vec2 v_uv;
 layout(r32ui, binding = IMAGE_OUTPUT) uniform uimage2D backprojection_fetch_counts;
 #endif
 layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
+#if LIGHTING_VIEWS == LIGHTING_VIEWS_SHADED
+// The chosen light's shadow view (VIEW_SHADOW) in either view: the lit
+// image's pass leaves it too, so a study that reads both pays one pass.
+layout(location = 1) out vec4 out_shadow;
+#endif
 
 #include "contact_shadow.glsl"
 
@@ -491,6 +496,9 @@ void main() {
     bool unoccluded = view == VIEW_SHADOW || view == VIEW_SHADOW_REFERENCE || view == VIEW_AO;
     out_color = view == VIEW_FINAL ? vec4(frame.ambient.rgb * 0.5, 0.0)
                                    : vec4(unoccluded ? vec3(1.0) : vec3(0.0), 0.0);
+#if LIGHTING_VIEWS == LIGHTING_VIEWS_SHADED
+    out_shadow = vec4(1.0, 1.0, 1.0, 0.0);
+#endif
     return;
   }
   vec3 n = normalize(normal_shininess.xyz);
@@ -584,9 +592,10 @@ void main() {
   vec2 rotation = vec2(cos(angle), sin(angle));
 
   // The shadow views read the chosen light alone; the lit image sums every
-  // light. One loop, so that the technique's lookup (shadow_factor) and
-  // the contact shadows have one call site: the shader compiler inlines
-  // each call, and two call sites would double the shader.
+  // light and keeps the chosen one's shadow view as well. One loop, so
+  // that the technique's lookup (shadow_factor) and the contact shadows
+  // have one call site: the shader compiler inlines each call, and two
+  // call sites would double the shader.
   const bool reference = LIGHTING_VIEWS == LIGHTING_VIEWS_REFERENCE;
   bool shadow_view = reference || view == VIEW_SHADOW;
   int first_light = shadow_view ? frame.options.z : 0;
@@ -595,41 +604,44 @@ void main() {
   float shininess = normal_shininess.w;
   vec3 to_eye = normalize(frame.camera_position.xyz - world);
   vec3 color = frame.ambient.rgb * albedo * ao;
+  // The chosen light's shadow view. Where no point of its source is above
+  // the horizon of the shading normal no light arrives, occluders or not:
+  // 0, and alpha 0 (not judged, as the traced reference marks it).
+  // Elsewhere the technique decides, also on surfaces turned away from the
+  // light's centre, which an area light's source still reaches over their
+  // horizon, and below their triangle's plane (from the point the
+  // terminator model lifts).
+  vec4 shadow = vec4(0.0);
   for (int i = first_light; i < light_end; ++i) {
     vec3 to_light = vec3(0.0);
-    vec3 irradiance = vec3(0.0);
-    if (shadow_view) {
-      // Where no point of the source is above the horizon of the shading
-      // normal no light arrives, occluders or not: 0, and alpha 0 (not
-      // judged, as the traced reference marks it). Elsewhere the technique
-      // decides, also on surfaces turned away from the light's centre,
-      // which an area light's source still reaches over their horizon, and
-      // below their triangle's plane (from the point the terminator model
-      // lifts).
-      if (!source_above_horizon(lights[i], world, n)) {
-        out_color = vec4(0.0);
-        return;
-      }
-    } else {
-      irradiance = incident_light(i, world, to_light);
-      if (dot(n, to_light) <= 0.0 || all(equal(irradiance, vec3(0.0)))) continue;
-    }
+    vec3 irradiance = incident_light(i, world, to_light);
+    bool lights_pixel =
+        !shadow_view && dot(n, to_light) > 0.0 && any(notEqual(irradiance, vec3(0.0)));
+    bool judged = i == frame.options.z && source_above_horizon(lights[i], world, n);
+    if (!lights_pixel && !judged) continue;
     vec3 start = lifted_point(lights[i], world, n, facet);
     float lit = shadow_factor(i, start, facet_normal, n, reference, rotation, footprint);
 #if CONTACT_SHADOWS
     if (!reference) lit = with_contact_shadow(lit, i, pixel, start, n);
 #endif
-    if (shadow_view) {
+    if (judged) {
       float weight = accumulate_source_weight(lights[i], world, n);
-      out_color = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)
-                                                         : vec4(vec3(lit), 1.0);
-      return;
+      shadow = shadow_params.accumulate_weighted != 0 ? vec4(lit, vec2(lit, 1.0) * weight, 1.0)
+                                                      : vec4(vec3(lit), 1.0);
     }
+    if (!lights_pixel) continue;
     vec3 h = normalize(to_light + to_eye);
     // Normalized Blinn-Phong: (s + 8) / 8 keeps the highlight's energy
     // constant as the exponent changes (Akenine-Moller et al., RTR 4th ed.).
     vec3 brdf = albedo + specular * ((shininess + 8.0) / 8.0) * pow(max(dot(n, h), 0.0), shininess);
     color += lit * irradiance * dot(n, to_light) * brdf;
+  }
+#if LIGHTING_VIEWS == LIGHTING_VIEWS_SHADED
+  out_shadow = shadow;
+#endif
+  if (shadow_view) {
+    out_color = shadow;
+    return;
   }
   out_color = vec4(color, 1.0);
 #endif

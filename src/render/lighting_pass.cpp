@@ -73,13 +73,16 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
   if (width != width_ || height != height_) {
     output_ = gl::Texture(gl::TextureInfo{
         .format = GL_RGBA32F, .width = width, .height = height, .label = "lighting output"});
+    shadow_output_ = gl::Texture(gl::TextureInfo{
+        .format = GL_RGBA32F, .width = width, .height = height, .label = "lighting shadow view"});
     unoccluded_ = gl::Texture(gl::TextureInfo{
         .format = GL_R32F, .width = width, .height = height, .label = "no ambient occlusion"});
     const float one = 1.0f;
     glClearTexImage(unoccluded_.id(), 0, GL_RED, GL_FLOAT, &one);
     framebuffer_ = gl::Framebuffer("lighting");
     framebuffer_.attach_color(0, output_);
-    framebuffer_.set_draw_buffers(1);
+    framebuffer_.attach_color(1, shadow_output_);
+    framebuffer_.set_draw_buffers(2);
     framebuffer_.check_complete();
     width_ = width;
     height_ = height;
@@ -90,6 +93,7 @@ void LightingPass::execute(const GBufferPass& gbuffer, const gl::Texture* depth_
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
   program_for(settings, view).use();
+  shadow_view_written_ = lighting_views(view) == LIGHTING_VIEWS_SHADED;
   glBindTextureUnit(UNIT_GBUFFER_DEPTH, gbuffer.depth().id());
   glBindTextureUnit(UNIT_GBUFFER_NORMAL, gbuffer.normal().id());
   glBindTextureUnit(UNIT_GBUFFER_ALBEDO, gbuffer.albedo().id());

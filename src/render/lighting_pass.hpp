@@ -36,6 +36,14 @@ class LightingPass {
   // RGBA32F: rgb as the view defines, alpha 1 where geometry was seen.
   [[nodiscard]] const gl::Texture& output() const { return output_; }
 
+  // RGBA32F: the shadow view (VIEW_SHADOW) of the frame block's chosen
+  // light, which the lit image's pass writes as well (the second target);
+  // valid while shadow_view_written().
+  [[nodiscard]] const gl::Texture& shadow_output() const { return shadow_output_; }
+  // Whether the last pass wrote shadow_output(): a pass of the final or the
+  // shadow view (the other views' programs leave it undefined).
+  [[nodiscard]] bool shadow_view_written() const { return shadow_view_written_; }
+
  private:
   // What tells one lighting program from another: its defines.
   struct ProgramKey {
@@ -64,6 +72,8 @@ class LightingPass {
   bool cpu_rasterizer_ = false;  // llvmpipe and the like (see execute())
   gl::Sampler compare_;
   gl::Texture output_;
+  gl::Texture shadow_output_;
+  bool shadow_view_written_ = false;
   // Bound as the AO texture where there is none (never read then): an
   // R32F texture at the output's size, as SSAO's output is. A software
   // rasterizer (llvmpipe) compiles a shader variant per bound textures'

@@ -638,6 +638,9 @@ void Renderer::shade(View view) {
     throw std::logic_error("shade() of a view that needs SSAO the last render() skipped");
   }
   last_render_.view = view;
+  // The lit image's pass left the shadow view already (read_view() reads
+  // it from there).
+  if (view == View::Shadow && lighting_pass_.shadow_view_written()) return;
   shade_as(view_define(view), ambient_occlusion);
 }
 
@@ -679,6 +682,7 @@ ViewSource Renderer::view_source() {
     }
     return {&tiling_pass_.output(), ViewEncoding::Data};
   }
+  if (view == View::Shadow) return {&lighting_pass_.shadow_output(), ViewEncoding::Data};
   return {&lighting_pass_.output(),
           view == View::Final ? ViewEncoding::LinearColor : ViewEncoding::Data};
 }

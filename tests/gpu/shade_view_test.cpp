@@ -51,6 +51,30 @@ TEST_F(GpuTest, ShadingAnotherViewMatchesRenderingIt) {
   }
 }
 
+// The lit image's pass leaves the chosen light's shadow view as well
+// (LightingPass::shadow_output), which shade(View::Shadow) shows without a
+// pass: for either light of the scene, and after another view's pass, which
+// leaves no shadow view, from a pass of its own.
+TEST_F(GpuTest, TheLitImageLeavesTheChosenLightsShadowView) {
+  Renderer renderer(*builtin_scene("default"));
+  ShadowSettings shadow;
+  shadow.technique = Technique::Pcss;
+  shadow.map_size = 256;
+  for (int light : {0, 1}) {
+    RenderSettings rs = view(View::Shadow);
+    rs.light_index = light;
+    renderer.render(rs, shadow);
+    const Image rendered = renderer.read_view();
+    rs.view = View::Final;
+    renderer.render(rs, shadow);
+    renderer.shade(View::Shadow);
+    EXPECT_EQ(renderer.read_view().rgba, rendered.rgba) << "light " << light;
+    renderer.shade(View::Normals);
+    renderer.shade(View::Shadow);
+    EXPECT_EQ(renderer.read_view().rgba, rendered.rgba) << "light " << light << ", after normals";
+  }
+}
+
 TEST_F(GpuTest, ShadeRefusesWhatTheLastFrameDidNotMake) {
   Renderer renderer(*builtin_scene("default"));
   ShadowSettings shadow;
