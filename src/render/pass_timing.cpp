@@ -65,7 +65,9 @@ std::array<std::optional<TexelTraffic>, kPassCount> shadow_map_traffic(const Sha
   if (shadow.technique == Technique::Backprojection) {
     set(GpuPass::DepthHierarchy, DepthHierarchyPass::texel_traffic(depth, width, height));
   }
-  set(GpuPass::BandwidthCopy, TextureCopyPass::texel_traffic(maps));
+  if (shadow.technique != Technique::None) {
+    set(GpuPass::BandwidthCopy, TextureCopyPass::texel_traffic(maps));
+  }
   return traffic;
 }
 
@@ -115,7 +117,9 @@ PassTimes measure_pass_times(Renderer& renderer, const RenderSettings& render,
     } else {
       renderer.render(render, shadow, {}, &profiler);
     }
-    {
+    // The yardstick copies the frame's shadow maps: none without a
+    // technique.
+    if (shadow.technique != Technique::None) {
       gl::GpuPassScope timed(&profiler, GpuPass::BandwidthCopy);
       copy.execute(renderer.shadow_maps());
     }

@@ -104,6 +104,25 @@ TEST(Cli, BenchWritesJsonWithEveryPass) {
   EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT columns"));
 }
 
+// --technique none is the frame without shadows: it has no maps, so no
+// pass over them and no yardstick copying them.
+TEST(Cli, BenchTimesAFrameWithoutShadows) {
+  const std::string json_path = out_path("bench-none.json");
+  const Result r =
+      run("bench --frames 1 --warmup 0 --technique none,hard --width 32 --height 32 "
+          "--shadow-map-size 128 --json " +
+          json_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j.at("runs").size(), 2u);
+  const auto& none = j.at("runs").at(0).at("passes");
+  EXPECT_TRUE(none.contains("lighting"));
+  EXPECT_FALSE(none.contains("shadow depth"));
+  EXPECT_FALSE(none.contains("copy (yardstick)"));
+  EXPECT_TRUE(j.at("runs").at(1).at("passes").contains("copy (yardstick)"));
+}
+
 // Cached shadow maps in the same run: a frame drawing every view, a static
 // frame (no view drawn) and one where an object moved (the views that see
 // it drawn), their times in the JSON.
