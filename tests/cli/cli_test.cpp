@@ -20,6 +20,16 @@ using penumbra::testing::out_path;
 using penumbra::testing::Result;
 using penumbra::testing::run;
 
+// Runs `bench ARGS --json FILE` (FILE a test output named `name`) and
+// returns the JSON it wrote.
+nlohmann::json bench_json(const std::string& args, const std::string& name) {
+  const std::string path = out_path(name);
+  const Result r = run("bench " + args + " --json " + path);
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::ifstream in(path);
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
 TEST(Cli, UsageErrorsExitWithStatus2) {
   const std::string out = out_path("bad.png");
   expect_error("render --scene nosuchscene", 2, "nosuchscene", out);
@@ -71,14 +81,11 @@ TEST(Cli, FilteredTechniqueUsageErrors) {
 
 // A smoke test, not a speed test: every pass is present with a time.
 TEST(Cli, BenchWritesJsonWithEveryPass) {
-  const std::string json_path = out_path("bench.json");
-  Result r =
-      run("bench --frames 2 --warmup 1 --technique msm,vsm --filter gaussian --blur 2 --fused off "
-          "--width 64 --height 48 --shadow-map-size 256 --json " +
-          json_path);
-  ASSERT_EQ(r.status, 0) << r.err;
-  std::ifstream in(json_path);
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = bench_json(
+      "--frames 2 --warmup 1 --technique msm,vsm --filter gaussian --blur 2 --fused off "
+      "--width 64 --height 48 --shadow-map-size 256",
+      "bench.json");
+  ASSERT_TRUE(j.contains("renderer"));
   EXPECT_FALSE(j.at("renderer").get<std::string>().empty());
   ASSERT_EQ(j.at("runs").size(), 2u);
   for (const auto& run : j.at("runs")) {
@@ -93,13 +100,11 @@ TEST(Cli, BenchWritesJsonWithEveryPass) {
     EXPECT_GT(run.at("total").at("wall_median_ms").get<double>(), 0.0);
     EXPECT_TRUE(run.at("times_the_copy").contains("filter H"));
   }
-  r =
-      run("bench --frames 1 --warmup 0 --technique msm --filter sat --width 32 --height 32 "
-          "--shadow-map-size 128 --json " +
-          json_path);
-  ASSERT_EQ(r.status, 0) << r.err;
-  std::ifstream again(json_path);
-  const nlohmann::json sat = nlohmann::json::parse(again);
+  const nlohmann::json sat = bench_json(
+      "--frames 1 --warmup 0 --technique msm --filter sat --width 32 --height 32 "
+      "--shadow-map-size 128",
+      "bench-sat.json");
+  ASSERT_TRUE(sat.contains("runs"));
   EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT rows"));
   EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT columns"));
 }
@@ -107,14 +112,10 @@ TEST(Cli, BenchWritesJsonWithEveryPass) {
 // --technique none is the frame without shadows: it has no maps, so no
 // pass over them and no yardstick copying them.
 TEST(Cli, BenchTimesAFrameWithoutShadows) {
-  const std::string json_path = out_path("bench-none.json");
-  const Result r =
-      run("bench --frames 1 --warmup 0 --technique none,hard --width 32 --height 32 "
-          "--shadow-map-size 128 --json " +
-          json_path);
-  ASSERT_EQ(r.status, 0) << r.err;
-  std::ifstream in(json_path);
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = bench_json(
+      "--frames 1 --warmup 0 --technique none,hard --width 32 --height 32 --shadow-map-size 128",
+      "bench-none.json");
+  ASSERT_TRUE(j.contains("runs"));
   ASSERT_EQ(j.at("runs").size(), 2u);
   const auto& none = j.at("runs").at(0).at("passes");
   EXPECT_TRUE(none.contains("lighting"));
