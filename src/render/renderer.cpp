@@ -682,7 +682,11 @@ ViewSource Renderer::view_source() {
     }
     return {&tiling_pass_.output(), ViewEncoding::Data};
   }
-  if (view == View::Shadow) return {&lighting_pass_.shadow_output(), ViewEncoding::Data};
+  // The shadow view from the lit image's second target, unless another
+  // view's pass (read_texel_density()) came after it.
+  if (view == View::Shadow && lighting_pass_.shadow_view_written()) {
+    return {&lighting_pass_.shadow_output(), ViewEncoding::Data};
+  }
   return {&lighting_pass_.output(),
           view == View::Final ? ViewEncoding::LinearColor : ViewEncoding::Data};
 }

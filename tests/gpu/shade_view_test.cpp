@@ -72,6 +72,10 @@ TEST_F(GpuTest, TheLitImageLeavesTheChosenLightsShadowView) {
     renderer.shade(View::Normals);
     renderer.shade(View::Shadow);
     EXPECT_EQ(renderer.read_view().rgba, rendered.rgba) << "light " << light << ", after normals";
+    // read_view() after read_texel_density() shows its values, as it says,
+    // not the shadow view the lit image left.
+    const Image density = renderer.read_texel_density();
+    EXPECT_EQ(renderer.read_view().rgba, density.rgba) << "light " << light;
   }
 }
 
