@@ -50,13 +50,14 @@
 // keeps). There (STAGE_IN_SHARED_MEMORY 0) steps 2 and 3 run as two
 // dispatches, PASS 1 and PASS 2, a band of rows of a layer at a time,
 // through a float map of the band and its apron, `rows` as a texture (a
-// few MB, not a layer's 64). Each invocation filters a run of DIRECT_RUN
-// texels, along a row in PASS 1 and down a column in PASS 2, and reads and
-// expands each texel of the run's window once: DIRECT_RUN + 2 RADIUS reads
-// for DIRECT_RUN texels instead of 2 RADIUS + 1 for each. The same taps
-// are summed in the same order with the same weights as in the tile; where
-// a value serves several sums the compiler may keep a multiply and an add
-// apart that it fuses in the tile, so the maps agree to rounding
+// few MB, not a layer's 64). Each invocation filters a run of
+// FILTER_DIRECT_RUN texels (shared/filter_tiles.h), along a row in PASS 1
+// and down a column in PASS 2, and reads and expands each texel of the
+// run's window once: FILTER_DIRECT_RUN + 2 RADIUS reads for the run
+// instead of 2 RADIUS + 1 for each texel. The same taps are summed in the
+// same order with the same weights as in the tile; where a value serves
+// several sums the compiler may keep a multiply and an add apart that it
+// fuses in the tile, so the maps agree to rounding
 // (FusedFilterStagingsAgreeToRounding). llvmpipe, msm, 2048^2, W = 16:
 // 5.1 s for the whole render with the tile, 0.9 s with two dispatches of
 // one texel an invocation; W = 4, one layer (`bench --light spot --blur
@@ -66,10 +67,10 @@
 // representation.glsl), IMAGE_FORMAT, RADIUS (W, 1..16), GAUSSIAN_WEIGHTS
 // (the weights, comma-separated), TILE_Y (a multiple of GROUP_Y, chosen by the host so that the
 // shared memory fits the device's limit), SAMPLES (1, 2, 4, 8),
-// STAGE_IN_SHARED_MEMORY (1: the tile, one pass; 0: PASS 1 or 2,
-// ROWS_FORMAT, the float image format of the rows between them, and
-// DIRECT_RUN, the texels an invocation filters).
+// STAGE_IN_SHARED_MEMORY (1: the tile, one pass; 0: PASS 1 or 2, and
+// ROWS_FORMAT, the float image format of the rows between them).
 #include "../shared/bindings.h"
+#include "../shared/filter_tiles.h"
 #include "../shadow/representation.glsl"
 
 #ifndef SAMPLES
@@ -214,7 +215,7 @@ vec4 as_vec4(float m) { return vec4(m, 0.0, 0.0, 0.0); }
 vec4 as_vec4(vec2 m) { return vec4(m, 0.0, 0.0); }
 vec4 as_vec4(vec4 m) { return m; }
 
-// Step 2 for DIRECT_RUN consecutive texels of a row of layer
+// Step 2 for FILTER_DIRECT_RUN consecutive texels of a row of layer
 // u_first_layer: their taps, from the depth map, into the rows (as
 // REPRESENTATION_TYPE floats). Each texel of the run's window is read and
 // expanded once, not once for every tap that reads it.
@@ -226,16 +227,16 @@ void main() {
 #else
   const ivec2 size = textureSize(depth_map, 0).xy;
 #endif
-  const ivec2 p = ivec2(int(gl_GlobalInvocationID.x) * DIRECT_RUN,
+  const ivec2 p = ivec2(int(gl_GlobalInvocationID.x) * FILTER_DIRECT_RUN,
                         u_rows.x + int(gl_GlobalInvocationID.y));
   if (p.x >= size.x || p.y >= u_rows.y) return;
   const int layer = u_first_layer;
-  REPRESENTATION_TYPE window[DIRECT_RUN + 2 * RADIUS];
-  for (int j = 0; j < DIRECT_RUN + 2 * RADIUS; ++j) {
+  REPRESENTATION_TYPE window[FILTER_DIRECT_RUN + 2 * RADIUS];
+  for (int j = 0; j < FILTER_DIRECT_RUN + 2 * RADIUS; ++j) {
     const ivec3 q = ivec3(clamp(p.x + j - RADIUS, 0, size.x - 1), p.y, layer);
     window[j] = staged_expand(staged_texel(q, constants), constants);
   }
-  for (int r = 0; r < DIRECT_RUN; ++r) {
+  for (int r = 0; r < FILTER_DIRECT_RUN; ++r) {
     // The taps' order is the tile's: the centre, then the pairs outwards.
     REPRESENTATION_TYPE sum = weights[RADIUS] * window[r + RADIUS];
     for (int k = 1; k <= RADIUS; ++k) {
@@ -246,25 +247,25 @@ void main() {
   }
 }
 #else
-// Step 3 for DIRECT_RUN consecutive texels of a column of layer
+// Step 3 for FILTER_DIRECT_RUN consecutive texels of a column of layer
 // u_first_layer: their column's taps of the rows, each row read once for
 // the run, in the tile's order (k = 0 .. 2 RADIUS, from 0).
 void main() {
   const ivec2 size = imageSize(target).xy;
   const ivec2 p = ivec2(gl_GlobalInvocationID.x,
-                        u_rows.x + int(gl_GlobalInvocationID.y) * DIRECT_RUN);
+                        u_rows.x + int(gl_GlobalInvocationID.y) * FILTER_DIRECT_RUN);
   if (p.x >= size.x || p.y >= u_rows.y) return;
-  REPRESENTATION_TYPE sums[DIRECT_RUN];
-  for (int r = 0; r < DIRECT_RUN; ++r) sums[r] = REPRESENTATION_TYPE(0.0);
-  for (int j = 0; j < DIRECT_RUN + 2 * RADIUS; ++j) {
+  REPRESENTATION_TYPE sums[FILTER_DIRECT_RUN];
+  for (int r = 0; r < FILTER_DIRECT_RUN; ++r) sums[r] = REPRESENTATION_TYPE(0.0);
+  for (int j = 0; j < FILTER_DIRECT_RUN + 2 * RADIUS; ++j) {
     const int y = clamp(p.y + j - RADIUS, 0, size.y - 1) - u_rows.z;
     const REPRESENTATION_TYPE v = REPRESENTATION_TYPE(texelFetch(rows_map, ivec3(p.x, y, 0), 0));
-    for (int r = 0; r < DIRECT_RUN; ++r) {
+    for (int r = 0; r < FILTER_DIRECT_RUN; ++r) {
       const int k = j - r;
       if (k >= 0 && k <= 2 * RADIUS) sums[r] += weights[k] * v;
     }
   }
-  for (int r = 0; r < DIRECT_RUN; ++r) {
+  for (int r = 0; r < FILTER_DIRECT_RUN; ++r) {
     // The band's rows alone: the next band's are filtered from its own.
     if (p.y + r < u_rows.y) {
       imageStore(target, ivec3(p.x, p.y + r, u_first_layer), representation_store(sums[r]));

@@ -7,9 +7,12 @@
 // On a CPU rasterizer (llvmpipe) the tile in shared memory costs more than
 // it saves: there a barrier switches between coroutines and each lane's
 // shared load is a scalar one, so every tap reads the source instead
-// (STAGE_IN_SHARED_MEMORY 0): 2048^2, W = 32, 5.5 times less CPU time. The
-// same texels are summed in the same order with the same weights: both
-// variants give the same floats.
+// (STAGE_IN_SHARED_MEMORY 0): 2048^2, W = 32, 5.5 times less CPU time.
+// There each invocation filters a run of FILTER_DIRECT_RUN texels along
+// the axis (shared/filter_tiles.h) from one read of their window
+// (FILTER_DIRECT_RUN + 2 RADIUS reads for the run instead of 2 RADIUS + 1
+// for each texel). The same texels are summed in the same order with the
+// same weights: both variants give the same floats.
 //
 // Defines: AXIS (0: along x, 1: along y), RADIUS (W), GAUSSIAN_WEIGHTS (the
 // 2 RADIUS + 1 weights, comma-separated), IMAGE_FORMAT,
@@ -63,6 +66,15 @@ vec4 source_texel(int a, int across, int layer) {
 #endif
 }
 
+// Writes the filtered texel `a` along the pass's axis, on line `across`.
+void store_texel(int a, int across, int layer, vec4 value) {
+#if AXIS == 0
+  imageStore(target, ivec3(a, across, layer), value);
+#else
+  imageStore(target, ivec3(across, a, layer), value);
+#endif
+}
+
 void main() {
   const ivec2 size = textureSize(source, 0).xy;
   const int layer = u_first_layer + int(gl_WorkGroupID.z);
@@ -86,19 +98,28 @@ void main() {
   barrier();
 #endif
 
+#if STAGE_IN_SHARED_MEMORY
   const int along = group.x + local.x;
   if (along >= along_size || group.y + local.y >= across_size) return;
   vec4 sum = vec4(0.0);
-#if STAGE_IN_SHARED_MEMORY
   for (int k = 0; k <= 2 * RADIUS; ++k) sum += weights[k] * tile[local.y][local.x + k];
+  store_texel(along, across, layer, sum);
 #else
-  for (int k = 0; k <= 2 * RADIUS; ++k) {
-    sum += weights[k] * source_texel(clamp(along + k - RADIUS, 0, along_size - 1), across, layer);
+  // FILTER_DIRECT_RUN consecutive texels along the axis, each source texel of
+  // their window read once for all of them; each sum takes its taps in the
+  // tile's order (k = 0 .. 2 RADIUS).
+  const int along = (group.x + local.x) * FILTER_DIRECT_RUN;
+  if (along >= along_size || group.y + local.y >= across_size) return;
+  vec4 sums[FILTER_DIRECT_RUN];
+  for (int r = 0; r < FILTER_DIRECT_RUN; ++r) sums[r] = vec4(0.0);
+  for (int j = 0; j < FILTER_DIRECT_RUN + 2 * RADIUS; ++j) {
+    const vec4 v = source_texel(clamp(along + j - RADIUS, 0, along_size - 1), across, layer);
+    for (int r = 0; r < FILTER_DIRECT_RUN; ++r) {  // constant bounds: unrolled, sums in registers
+      const int k = j - r;
+      if (k >= 0 && k <= 2 * RADIUS) sums[r] += weights[k] * v;
+    }
   }
-#endif
-#if AXIS == 0
-  imageStore(target, ivec3(along, across, layer), sum);
-#else
-  imageStore(target, ivec3(across, along, layer), sum);
+  // Past the map's end a store does nothing (an image's rules).
+  for (int r = 0; r < FILTER_DIRECT_RUN; ++r) store_texel(along + r, across, layer, sums[r]);
 #endif
 }

@@ -9,6 +9,12 @@
 #define GAUSSIAN_TILE_ALONG 64
 #define GAUSSIAN_TILE_ACROSS 8
 
+// Without a tile in shared memory (CPU rasterizers: the direct passes of
+// the Gaussian and of the fused filter, shaders/filter/fused_filter.comp),
+// an invocation filters FILTER_DIRECT_RUN consecutive texels from one read
+// of their window.
+#define FILTER_DIRECT_RUN 4
+
 // The parallel summed-area table (shaders/filter/sat_scan.comp): a
 // workgroup scans SAT_TILE_ACROSS lines, SAT_TILE_ALONG texels at a time,
 // with SAT_THREADS_ALONG threads a line, each scanning a run of SAT_RUN

@@ -10,6 +10,8 @@
 #include "penumbra/filter/layer_runs.hpp"
 #include "penumbra/shadow/representation.hpp"
 #include "penumbra/shared/bindings.h"
+#include "shared/filter_tiles.h"
+#include "shared/filter_tiles.h"
 
 namespace penumbra {
 
@@ -21,9 +23,6 @@ constexpr int kDirectRows = 8;  // GROUP_Y: the direct passes' workgroups are 32
 // MB (2048 wide, msm, W = 16: 9 MB), and the apron adds 2 W / 256 to the
 // horizontal pass's work.
 constexpr int kDirectBandRows = 256;
-// DIRECT_RUN: the texels one invocation of a direct pass filters, along its
-// row (step 2) or its column (step 3).
-constexpr int kDirectRun = 4;
 
 }  // namespace
 
@@ -84,7 +83,6 @@ const gl::Program& FusedFilterPass::program(const ProgramKey& key) {
       {"SAMPLES", std::to_string(samples)},
       {"STAGE_IN_SHARED_MEMORY", pass == 0 ? "1" : "0"},
       {"PASS", std::to_string(pass)},
-      {"DIRECT_RUN", std::to_string(kDirectRun)},
       {"ROWS_FORMAT", image_format_qualifier(float_format_with_channels_of(format))}};
   return programs_.emplace(key, gl::Program::compute("filter/fused_filter.comp", defines))
       .first->second;
@@ -147,8 +145,8 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
       glProgramUniform1i(program.id(), 3, layer);
       glProgramUniform3i(program.id(), 4, from, to, band_first);
       const bool along_rows = &program == &horizontal;
-      glDispatchCompute(gl::work_groups(output_.width(), kTileX * (along_rows ? kDirectRun : 1)),
-                        gl::work_groups(to - from, kDirectRows * (along_rows ? 1 : kDirectRun)), 1);
+      glDispatchCompute(gl::work_groups(output_.width(), kTileX * (along_rows ? FILTER_DIRECT_RUN : 1)),
+                        gl::work_groups(to - from, kDirectRows * (along_rows ? 1 : FILTER_DIRECT_RUN)), 1);
     };
     for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
       for (int layer = first; layer < first + count; ++layer) {

@@ -45,16 +45,17 @@ void GaussianBlurPass::dispatch(const gl::Program& program, const gl::Texture& f
   glBindTextureUnit(UNIT_COMPUTE_INPUT, from.id());
   glBindSampler(UNIT_COMPUTE_INPUT, 0);
   glBindImageTexture(IMAGE_OUTPUT, to.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, to.format());
+  // Without the tile an invocation filters a run of texels along the axis.
+  const int along = GAUSSIAN_TILE_ALONG * (shared_memory_ ? 1 : FILTER_DIRECT_RUN);
   for_each_layer_run(layers, from.layers(), all, [&](int first, int count) {
     glProgramUniform1i(program.id(), 0, first);
     if (axis == 0) {
-      glDispatchCompute(gl::work_groups(from.width(), GAUSSIAN_TILE_ALONG),
+      glDispatchCompute(gl::work_groups(from.width(), along),
                         gl::work_groups(from.height(), GAUSSIAN_TILE_ACROSS),
                         static_cast<GLuint>(count));
     } else {
       glDispatchCompute(gl::work_groups(from.width(), GAUSSIAN_TILE_ACROSS),
-                        gl::work_groups(from.height(), GAUSSIAN_TILE_ALONG),
-                        static_cast<GLuint>(count));
+                        gl::work_groups(from.height(), along), static_cast<GLuint>(count));
     }
   });
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
