@@ -11,7 +11,6 @@
 #include "penumbra/shadow/representation.hpp"
 #include "penumbra/shared/bindings.h"
 #include "shared/filter_tiles.h"
-#include "shared/filter_tiles.h"
 
 namespace penumbra {
 
@@ -145,8 +144,9 @@ void FusedFilterPass::execute(const gl::Texture& depth_maps, const ShadowMapSett
       glProgramUniform1i(program.id(), 3, layer);
       glProgramUniform3i(program.id(), 4, from, to, band_first);
       const bool along_rows = &program == &horizontal;
-      glDispatchCompute(gl::work_groups(output_.width(), kTileX * (along_rows ? FILTER_DIRECT_RUN : 1)),
-                        gl::work_groups(to - from, kDirectRows * (along_rows ? 1 : FILTER_DIRECT_RUN)), 1);
+      glDispatchCompute(
+          gl::work_groups(output_.width(), kTileX * (along_rows ? FILTER_DIRECT_RUN : 1)),
+          gl::work_groups(to - from, kDirectRows * (along_rows ? 1 : FILTER_DIRECT_RUN)), 1);
     };
     for_each_layer_run(layers, output_.layers(), all, [&](int first, int count) {
       for (int layer = first; layer < first + count; ++layer) {
