@@ -65,7 +65,7 @@
 #define UNIT_PRESENT_SOURCE 0
 
 // Uniform locations
-#define LOCATION_FIRST_INDEX 0  // GpuScene::draw: the batch's first index, for gl_PrimitiveID
+#define LOCATION_FIRST_INDEX 0   // GpuScene::draw: the batch's first index, for gl_PrimitiveID
 #define LOCATION_VIRTUAL_DRAW 5  // virtual_page.vert: the caster draw, for its pages
 #define LOCATION_VIRTUAL_LIST 6  // virtual_page.vert: the page list (orthographic, perspective)
 

@@ -165,8 +165,7 @@ TEST_F(GpuTest, FusedFilterStagingsAgreeToRounding) {
           worst = std::max(worst, std::abs(double(a[i]) - b[i]) / tolerance(technique, a[i]));
         }
         EXPECT_LE(worst, 1.0) << std::string(enum_name<Technique>(kTechniqueNames, technique))
-                              << " " << width << "x" << height << " x" << layers
-                              << " W=" << radius;
+                              << " " << width << "x" << height << " x" << layers << " W=" << radius;
       }
     }
   }
