@@ -94,12 +94,13 @@ struct GpuShadow {
   int pcss_blocker_samples;
   int pcss_filter_samples;
   int two_moment_blockers;  // 1: msm --soft estimates blockers as vsm does
-  // --accumulate (src/render/accumulation.hpp): the sub-frame's point of a
-  // spot light's square, in [0, 1]^2; the number of sub-frames N (0: not
-  // accumulating); the sub-frame index, which seeds each pixel's dither.
+  // --accumulate (src/render/accumulation.hpp; its rays are compiled in
+  // with ACCUMULATE_SUBFRAMES): the sub-frame's point of a spot light's
+  // square, in [0, 1]^2; the sub-frame index, which seeds each pixel's
+  // dither.
   float accumulate_u;
   float accumulate_v;
-  int accumulate_count;
+  int unused0;
   int accumulate_frame;
   float evsm_positive;  // EVSM exponents c+ and c- (shaders/shadow/evsm.glsl)
   float evsm_negative;

@@ -40,7 +40,6 @@ const VirtualBindings kVirtualBindings{.block = BINDING_VIRTUAL_UBO,
 void set_subframe_params(gpu::GpuShadow& block, const ShadowSettings& shadow) {
   block.accumulate_u = shadow.subframe_u;
   block.accumulate_v = shadow.subframe_v;
-  block.accumulate_count = shadow.accumulate > 1 ? shadow.accumulate : 0;
   block.accumulate_normal_x = shadow.subframe_normal[0];
   block.accumulate_normal_y = shadow.subframe_normal[1];
   block.accumulate_normal_z = shadow.subframe_normal[2];
