@@ -36,6 +36,11 @@ const char* flag(bool on) {
 }  // namespace
 
 const gl::Program& LightingPass::program_for(const ShadowSettings& settings, int view) {
+  // Only the shaded views march the contact shadows or cast a sub-frame's
+  // rays (the reference returns before them, the inspecting views take no
+  // lookup): the other views' programs do not differ by them.
+  const int views = lighting_views(view);
+  const bool shaded = views == LIGHTING_VIEWS_SHADED;
   const ProgramKey key{
       .technique = technique_define(settings.technique),
       .filter = filter_define(settings),
@@ -44,9 +49,10 @@ const gl::Program& LightingPass::program_for(const ShadowSettings& settings, int
       .shadow_mips = uses_shadow_mips(settings),
       .count_fetches = fetch_counts_ != 0 && settings.technique == Technique::Backprojection,
       .virtual_maps = settings.shadow_maps == ShadowMapKind::Virtual,
-      .views = lighting_views(view),
-      .contact_shadows = settings.contact_shadows,
-      .accumulate_subframes = settings.accumulate > 1 && settings.technique == Technique::Hard};
+      .views = views,
+      .contact_shadows = shaded && settings.contact_shadows,
+      .accumulate_subframes =
+          shaded && settings.accumulate > 1 && settings.technique == Technique::Hard};
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     const gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(key.technique)},
