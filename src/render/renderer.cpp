@@ -342,13 +342,13 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
       views[view_count_++] = gpu_shadow_view(light, view, shadow);
     }
   }
-  // Second surfaces (backprojection) for the spot and directional views; a
-  // point light's six faces keep one layer each (a second would add 96 MB
-  // of depth and 67 MB of hierarchy at 2048^2).
+  // Second surfaces (backprojection) for every view; on a point light's
+  // six faces (their fragments write their radial depth) they add 96 MB of
+  // depth and 67 MB of hierarchy at 2048^2, for RMSE 0.0070 -> 0.0053 on
+  // the default scene's point light at 1.5 (640x360).
   bool second_surfaces = false;
   if (draws_second_surfaces(shadow)) {
     for (int i = 0; i < view_count_; ++i) {
-      if (caster_depth(views[i]) == CasterDepth::Written) continue;
       views[i].second_layer = ShadowMapPass::second_layer(i, view_count_);
       second_surfaces = true;
     }
@@ -453,7 +453,8 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
         },
         drawn, shadow.map_size, stale, depth_samples(shadow),
         second_surfaces ? ShadowMapPass::DrawCasters([&](int view) {
-          shadow_casters_.draw_second_surfaces(gpu_scene_, view);
+          shadow_casters_.draw_second_surfaces(gpu_scene_, view,
+                                               caster_depth(views[view]) == CasterDepth::Written);
         })
                         : ShadowMapPass::DrawCasters());
   }

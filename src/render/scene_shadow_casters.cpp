@@ -17,12 +17,13 @@ SceneShadowCasters::SceneShadowCasters()
     : programs_{{caster_program(false, false), caster_program(false, true)},
                 {caster_program(true, false), caster_program(true, true)}} {}
 
-void SceneShadowCasters::draw_second_surfaces(const GpuScene& scene, int view) {
+void SceneShadowCasters::draw_second_surfaces(const GpuScene& scene, int view, bool radial) {
   // Made on first use: only backprojection draws them.
-  if (!second_programs_[0]) {
-    for (int c = 0; c < 2; ++c) second_programs_[c] = caster_program(false, c == 1, true);
+  gl::Program(&programs)[2] = second_programs_[radial ? 1 : 0];
+  if (!programs[0]) {
+    for (int c = 0; c < 2; ++c) programs[c] = caster_program(radial, c == 1, true);
   }
-  draw_with(second_programs_, scene, view, 1);
+  draw_with(programs, scene, view, 1);
 }
 
 void SceneShadowCasters::draw(const GpuScene& scene, int view, bool radial, int samples) const {

@@ -19,9 +19,9 @@ class SceneShadowCasters {
   // (ShadowSettings::shadow_msaa).
   void draw(const GpuScene& scene, int view, bool radial, int samples = 1) const;
   // The same view's second surfaces (ShadowMapPass::execute()'s
-  // draw_second; spot and directional views): the programs that discard
-  // what lies at or in front of the view's first layer.
-  void draw_second_surfaces(const GpuScene& scene, int view);
+  // draw_second): the programs that discard what lies at or in front of
+  // the view's first layer; `radial` as for draw().
+  void draw_second_surfaces(const GpuScene& scene, int view, bool radial);
 
  private:
   static void draw_with(const gl::Program (&programs)[2], const GpuScene& scene, int view,
@@ -30,7 +30,7 @@ class SceneShadowCasters {
   // [radial][cut-outs]: opaque surfaces, then alpha-tested and
   // single-sided ones.
   gl::Program programs_[2][2];
-  gl::Program second_programs_[2];  // [cut-outs], SECOND_SURFACES 1, made on first use
+  gl::Program second_programs_[2][2];  // [radial][cut-outs], SECOND_SURFACES 1, made on first use
 };
 
 }  // namespace penumbra
