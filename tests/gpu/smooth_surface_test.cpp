@@ -83,28 +83,44 @@ Scene sphere_scene() {
       .light(testing::spot_light({6.0f, 2.5f, 0.0f}, kCentre, 25.0f, 20.0f));
 }
 
+// The scene's shadow view at 160 x 120 with `shadow`, and the traced
+// reference with `rays` rays a pixel.
+struct SphereImages {
+  Image shadow, reference;
+  SurfacePoints surfaces;
+  // Whether pixel i shows the sphere (the ground's pixels outside the
+  // spot's cone are not judged by the reference alone).
+  bool on_sphere(std::size_t i) const {
+    return surfaces.covered[i] && glm::length(surfaces.position[i] - kCentre) <= 1.01f;
+  }
+};
+SphereImages sphere_images(const Scene& scene, const ShadowSettings& shadow, int rays) {
+  Renderer renderer(scene);
+  const RenderSettings rs = testing::small_frame(160, 120);
+  TracedReference reference = traced_reference(renderer, rs, shadow, rays, "");
+  SphereImages images{Image{}, std::move(reference.image), renderer.read_surfaces()};
+  renderer.render(rs, shadow);
+  images.shadow = renderer.read_view();
+  return images;
+}
+
 TEST_F(GpuTest, ShadowLookupsStartOnTheSmoothSurfaceOfACoarseMesh) {
-  Renderer renderer(sphere_scene());
-  RenderSettings rs = testing::small_frame(160, 120);
   ShadowSettings shadow;  // hard shadows from a point, the default biases
   shadow.map_size = 1024;
   shadow.light_size = 0.0f;
-  const TracedReference reference = traced_reference(renderer, rs, shadow, 1, "");
-  const SurfacePoints surfaces = renderer.read_surfaces();
-  renderer.render(rs, shadow);
-  const Image image = renderer.read_view();
+  const SphereImages images = sphere_images(sphere_scene(), shadow, 1);
+  const Image& image = images.shadow;
+  const Image& reference_image = images.reference;
   int lit = 0, shadowed = 0, judged_differently = 0;
-  for (int y = 0; y < rs.height; ++y) {
-    for (int x = 0; x < rs.width; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * rs.width + x;
-      // The sphere only (the ground's pixels outside the spot's cone are
-      // not judged by the reference alone).
-      if (!surfaces.covered[i] || glm::length(surfaces.position[i] - kCentre) > 1.01f) continue;
-      if ((reference.image.pixel(x, y)[3] > 0.0f) != (image.pixel(x, y)[3] > 0.0f)) {
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * image.width + x;
+      if (!images.on_sphere(i)) continue;
+      if ((reference_image.pixel(x, y)[3] > 0.0f) != (image.pixel(x, y)[3] > 0.0f)) {
         ++judged_differently;
       }
-      if (reference.image.pixel(x, y)[3] == 0.0f) continue;
-      if (reference.image.pixel(x, y)[0] < 1.0f) continue;
+      if (reference_image.pixel(x, y)[3] == 0.0f) continue;
+      if (reference_image.pixel(x, y)[0] < 1.0f) continue;
       ++lit;
       if (image.pixel(x, y)[0] < 0.5f) ++shadowed;
     }
@@ -132,30 +148,21 @@ TEST_F(GpuTest, BackprojectionKeepsTheBlockersBelowATrianglesPlaneAboveItsShadin
   wall.size = {0.05f, 1.8f, 4.0f};
   wall.position = {3.0f, 0.9f, 0.0f};
   scene.shapes.push_back(wall);
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(160, 120);
   ShadowSettings shadow;
   shadow.technique = Technique::Backprojection;
   shadow.map_size = 1024;
   shadow.light_size = 1.5f;
-  const TracedReference reference = traced_reference(renderer, rs, shadow, 256, "");
-  const SurfacePoints surfaces = renderer.read_surfaces();
-  renderer.render(rs, shadow);
-  const Image image = renderer.read_view();
+  const SphereImages images = sphere_images(scene, shadow, 256);
   double sum = 0.0;
   int pixels = 0, umbra = 0, leaks = 0;
-  for (int y = 0; y < rs.height; ++y) {
-    for (int x = 0; x < rs.width; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * rs.width + x;
-      if (!surfaces.covered[i] || glm::length(surfaces.position[i] - kCentre) > 1.01f) continue;
-      if (reference.image.pixel(x, y)[3] == 0.0f) continue;
-      const double e = image.pixel(x, y)[0] - reference.image.pixel(x, y)[0];
-      sum += e * e;
-      ++pixels;
-      if (reference.image.pixel(x, y)[0] > 0.01f) continue;
-      ++umbra;
-      if (image.pixel(x, y)[0] > 0.1f) ++leaks;
-    }
+  for (std::size_t i = 0; i < images.shadow.rgba.size() / 4; ++i) {
+    const float reference = images.reference.rgba[4 * i], lit = images.shadow.rgba[4 * i];
+    if (!images.on_sphere(i) || images.reference.rgba[4 * i + 3] == 0.0f) continue;
+    sum += (lit - reference) * (lit - reference);
+    ++pixels;
+    if (reference > 0.01f) continue;
+    ++umbra;
+    if (lit > 0.1f) ++leaks;
   }
   const double rmse = std::sqrt(sum / pixels);
   std::printf("sphere: %d pixels, RMSE %.4f; %d of %d umbra pixels over 0.1\n", pixels, rmse, leaks,
