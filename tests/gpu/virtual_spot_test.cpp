@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <tuple>
@@ -15,6 +16,8 @@
 #include "gpu_fixture.hpp"
 #include "penumbra/shadow/shadow_block_data.hpp"
 #include "penumbra/shadow/shadow_map_pass.hpp"
+#include "reference/shadow_metrics.hpp"
+#include "reference/traced_reference.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_shadow_casters.hpp"
@@ -385,6 +388,26 @@ TEST_F(GpuTest, VirtualSpotPagesAreCachedUntilACasterOverThemMoves) {
 
 // --view pages for a spot: inside its frustum every pixel shows the page
 // it reads, a colour per level; outside it, black.
+// Backprojection through a spot light's virtual maps, source 1.0 wide,
+// against the traced reference. Its cut of the cone to the source reads
+// the depth bounds of the pages' cells, which the bounds pass made only for
+// the orthographic levels' pages: a spot's pages read bounds of 0, and
+// receivers took the umbra's early exit (before: RMSE 0.80, 56 % of the
+// pixels over-dark; now 0.0166, 0.003 %).
+TEST_F(GpuTest, VirtualSpotBackprojectionReadsItsPagesDepthBounds) {
+  Renderer renderer(spot_scene());
+  const RenderSettings rs = camera_view(View::Shadow);
+  ShadowSettings shadow = virtual_maps(Technique::Backprojection);
+  shadow.light_size = 1.0f;
+  const TracedReference reference = traced_reference(renderer, rs, shadow, 64, "");
+  renderer.render(rs, shadow);
+  const ShadowMetrics m = compare_shadow(renderer.read_view(), reference.image);
+  std::printf("virtual spot backprojection: RMSE %.4f, over-dark %.3f %%\n", m.rmse,
+              100.0 * m.over_dark_fraction);
+  EXPECT_LT(m.rmse, 0.03);
+  EXPECT_LT(m.over_dark_fraction, 0.001);
+}
+
 TEST_F(GpuTest, VirtualSpotPagesView) {
   Renderer renderer(spot_scene());
   renderer.render(camera_view(View::Pages), virtual_maps(Technique::Hard));
