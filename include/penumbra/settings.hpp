@@ -154,7 +154,8 @@ struct ShadowMapSettings {
   // lit surfaces under wide filters (measured on the default scene).
   float filter_slope_bias = 0.25f;
   // Normal offset: the lookup moves this many texels along the surface normal
-  // (backprojection: times 1 - cos theta, backprojection_normal_offset()).
+  // (backprojection: none where the surface's slope from the light is under
+  // max_slope, all of it at grazing and beyond; backprojection_normal_offset()).
   float normal_offset = 0.5f;
 
   // PCF: width of the square window in texels (0: the plain hard test),
@@ -497,8 +498,8 @@ inline constexpr std::array<NumericParam<ShadowMapSettings, float>, 15> kShadowF
     {"filter-slope-bias", "filtered techniques: extra slope-scaled bias per texel of filter radius",
      0.0f, 4.0f, &ShadowMapSettings::filter_slope_bias, OptionGroup::Bias},
     {"normal-offset",
-     "normal-offset distance, in shadow-map texels (backprojection: times 1 - cos theta, theta "
-     "the angle between the surface's normal and the direction to the light)",
+     "normal-offset distance, in shadow-map texels (backprojection: none on a surface whose "
+     "slope from the light is under --max-slope, all of it at grazing and beyond)",
      0.0f, 64.0f, &ShadowMapSettings::normal_offset, OptionGroup::Bias},
     {"pcf-width", "PCF window width in texels (0: the plain hard test)", 0.0f, MAX_PCF_WIDTH,
      &ShadowMapSettings::pcf_width, OptionGroup::Technique},

@@ -106,25 +106,36 @@ uint backprojection_fetches = 0u;
 
 // Backprojection's normal offset, in texels, for a receiver whose
 // triangle's normal makes the angle theta with the direction to the light
-// `to_light`: the settings' normal_offset (1 - cos theta). The offset
-// moves the lookup normal_offset sin theta texels across the map, and
-// every shadow on the receiver with it, where the traced reference starts
-// its rays on the surface. The receiver's plane (its depth gradient, and
-// backprojection_above_plane()) keeps the receiver's own surface out
-// where it faces the light; towards grazing, where that slope is capped
-// and a texel spans more depth, the offset keeps the surface's own
-// texels off it as before. RMSE at 640x360, 2048^2 maps, 256 rays, the
-// whole offset -> this: default scene, spot 0.5 0.0030 -> 0.0025, spot
-// 1.5 0.0040 -> 0.0041, point 1.5 0.0067 -> 0.0070, sun 2.82 degrees
-// 0.0045 -> 0.0035, sun 8.45 degrees 0.0042 -> 0.0039; bunny, spot 0.5
-// 0.0124 -> 0.0115, spot 1.5 0.0105 -> 0.0100, point 1.5 0.0122 ->
-// 0.0117, sun 11.86 degrees 0.0278 -> 0.0273; foliage, spot 1.5 0.0181 ->
-// 0.0169, sun 8.90 degrees 0.0323 -> 0.0299. With no offset at all, the
-// default scene's box side, 60 degrees from facing the 8.45 degree sun,
-// was streaked with its own texels (0.0186); with (1 - cos theta)^2, much
-// the same as this (0.0024 ... 0.0288), sin theta worse (0.0027 ...).
-float backprojection_normal_offset(float normal_offset, vec3 normal, vec3 to_light) {
-  return normal_offset * (1.0 - abs(dot(normal, to_light)));
+// `to_light`, where the settings' max_slope caps its depth gradient
+// (receiver_depth_gradient()): none where cos theta is at least the cap's
+// cosine 1 / sqrt(1 + max_slope^2), rising to the settings' normal_offset
+// at grazing and beyond. The offset moves the lookup normal_offset sin
+// theta texels across the map, and every shadow on the receiver with it,
+// where the traced reference starts its rays on the surface: on a
+// surface lit at grazing that is normal_offset tan theta texels along
+// it, and a blocker a few texels in front (the foliage's fence rails,
+// 78 degrees from facing its lamp) threw its shadow two pixels off. Where
+// the gradient follows the surface, the receiver's plane (and
+// backprojection_above_plane()) keeps its own texels out without it;
+// past the cap the plane no longer follows them, and past grazing the
+// plane is cut flat at the receiver's depth (backprojection_receiver())
+// and its slack lets the edge of a convex face's neighbour in (the
+// default scene's box side, 3 degrees past grazing under the 8.45 degree
+// sun, streaked from its top edge: 0.0285 without any offset). RMSE at
+// 640x360, 2048^2 maps, 256 rays, the offset times 1 - cos theta (as
+// before) -> this: foliage, point 0.5 0.0330 -> 0.0208, point 1.5 0.0235
+// -> 0.0213, sun 2.97 degrees 0.0348 -> 0.0270, sun 8.90 degrees 0.0225
+// -> 0.0194, spot 1.5 0.0170 -> 0.0157; bunny, spot 0.5 0.0103 ->
+// 0.0098, spot 1.5 0.0092 -> 0.0089, point 1.5 0.0100 -> 0.0093, sun
+// 11.86 degrees 0.0196 -> 0.0189; the default scene within 0.0001 but
+// its sun at 2.82 degrees, 0.0035 -> 0.0039 (a few pixels at the tip of
+// the torus's self-shadow, along its terminator). Cut at a cosine of 0.3
+// instead: that one 0.0035, the foliage's point 0.5 0.0228 and sun 2.97
+// degrees 0.0281; at 0.05, 0.0043, 0.0205 and 0.0269.
+float backprojection_normal_offset(float normal_offset, float max_slope, vec3 normal,
+                                   vec3 to_light) {
+  float capped_cos = inversesqrt(1.0 + max_slope * max_slope);
+  return normal_offset * clamp(1.0 - dot(normal, to_light) / capped_cos, 0.0, 1.0);
 }
 
 // BACKPROJECTION_BIAS_MAX_SLOPE (shared/bindings.h): the steepest slope
@@ -149,7 +160,8 @@ float backprojection_normal_offset(float normal_offset, vec3 normal, vec3 to_lig
 // offset (backprojection_normal_offset()) and a slope-scaled bias that
 // follows the slope up to BACKPROJECTION_BIAS_MAX_SLOPE.
 GpuShadow backprojection_bias_settings(GpuShadow params, vec3 normal, vec3 to_light) {
-  params.normal_offset = backprojection_normal_offset(params.normal_offset, normal, to_light);
+  params.normal_offset =
+      backprojection_normal_offset(params.normal_offset, params.max_slope, normal, to_light);
   params.max_slope = min(params.max_slope, BACKPROJECTION_BIAS_MAX_SLOPE);
   return params;
 }
