@@ -159,9 +159,10 @@ void Renderer::fit_virtual_lights(const ShadowSettings& shadow, const CameraFrus
     return nullptr;
   };
   if (virtual_light_ >= 0) {
-    virtual_lights_.push_back({virtual_light_,
-                               scene_.lights[static_cast<std::size_t>(virtual_light_)],
-                               virtual_clipmap_});
+    virtual_lights_.push_back(
+        {virtual_light_,
+         with_source_size(scene_.lights[static_cast<std::size_t>(virtual_light_)], shadow),
+         virtual_clipmap_});
   }
   for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
     const Light& light = scene_.lights[i];
