@@ -258,8 +258,8 @@ SoftErrors soft_errors(LightType type, bool virtual_maps = false) {
     (t == Technique::Pcss ? e.pcss : e.backprojection) = rmse;
   }
   std::printf("%s%s: RMSE pcss %.4f, backprojection %.4f\n",
-              type == LightType::Point ? "point light" : "sun", virtual_maps ? ", virtual maps" : "",
-              e.pcss, e.backprojection);
+              type == LightType::Point ? "point light" : "sun",
+              virtual_maps ? ", virtual maps" : "", e.pcss, e.backprojection);
   return e;
 }
 
