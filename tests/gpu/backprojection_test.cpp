@@ -456,6 +456,30 @@ TEST_F(GpuTest, BackprojectionKeepsTheBlockersOfTheSourceAboveATerminatorsHorizo
   EXPECT_LT(m.max_error, 0.5);
 }
 
+// A wall whose face is the plane z = 0, a square bar along x in front of
+// it, and a spot light `degrees` from facing the wall, aimed at the wall's
+// point at `aim_height` from `light_distance` away; the camera looks
+// straight at the wall from `camera_distance` at `camera_height`.
+struct BarBeforeAWall {
+  const char* name;
+  float degrees;
+  glm::vec3 bar_centre;
+  float bar_side;
+  float aim_height, light_distance, camera_height, camera_distance;
+
+  Scene scene() const {
+    const float theta = glm::radians(degrees);
+    const glm::vec3 to_light(0.0f, std::sin(theta), std::cos(theta));
+    const glm::vec3 aim(0.0f, aim_height, 0.0f);
+    const glm::vec3 eye(0.0f, camera_height, camera_distance);
+    return testing::TestScene(name)
+        .box({0.0f, 1.0f, -0.05f}, {2.0f, 2.0f, 0.1f})
+        .box(bar_centre, {1.6f, bar_side, bar_side})
+        .camera(eye, {0.0f, camera_height, 0.0f}, 30.0f)
+        .light(testing::spot_light(aim + light_distance * to_light, aim, 20.0f, 20.0f));
+  }
+};
+
 // A wall 80 degrees from facing a spot light, a rod 1 cm thick held 4 mm
 // off it: along the light's rays the rod lies 2.3 cm in front of the wall
 // where its shadow falls, 6 texels of the map's depth. The slope-scaled
@@ -469,15 +493,9 @@ TEST_F(GpuTest, BackprojectionKeepsTheBlockersOfTheSourceAboveATerminatorsHorizo
 // steep; without it where the wall's slope is under the settings'
 // max_slope (backprojection_normal_offset()), 0.043.
 TEST_F(GpuTest, BackprojectionKeepsABlockerCloseToASteepReceiver) {
-  const glm::vec3 to_light(0.0f, std::sin(glm::radians(80.0f)), std::cos(glm::radians(80.0f)));
-  const glm::vec3 aim(0.0f, 1.1f, 0.0f);
-  const Scene scene =
-      testing::TestScene("rod before a wall")
-          .box({0.0f, 1.0f, -0.05f}, {2.0f, 2.0f, 0.1f})  // the wall's face at z = 0
-          .box({0.0f, 1.2f, 0.009f}, {1.6f, 0.01f, 0.01f})
-          .camera({0.0f, 1.12f, 0.6f}, {0.0f, 1.12f, 0.0f}, 30.0f)
-          .light(testing::spot_light(aim + 5.0f * to_light, aim, 20.0f, 20.0f));
-  const CloseUp images = small_scene_images(scene, 0.02f);
+  const BarBeforeAWall rod{
+      "rod before a wall", 80.0f, {0.0f, 1.2f, 0.009f}, 0.01f, 1.1f, 5.0f, 1.12f, 0.6f};
+  const CloseUp images = small_scene_images(rod.scene(), 0.02f);
   double sum = 0.0;
   int umbra = 0;
   for (std::size_t i = 0; i < images.shadow.rgba.size(); i += 4) {
@@ -501,16 +519,9 @@ TEST_F(GpuTest, BackprojectionKeepsABlockerCloseToASteepReceiver) {
 // 0.0381, most of it the rail's lower silhouette placed on a texel
 // boundary, which a wall this steep stretches to two pixels).
 TEST_F(GpuTest, BackprojectionKeepsAShadowInPlaceOnAWallLitAtGrazing) {
-  const float theta = glm::radians(78.0f);
-  const glm::vec3 to_light(0.0f, std::sin(theta), std::cos(theta));
-  const glm::vec3 aim(0.0f, 1.0f, 0.0f);
-  const Scene scene =
-      testing::TestScene("rail before a wall")
-          .box({0.0f, 1.0f, -0.05f}, {2.0f, 2.0f, 0.1f})  // the wall's face at z = 0
-          .box({0.0f, 1.2f, 0.06f}, {1.6f, 0.02f, 0.02f})
-          .camera({0.0f, 1.05f, 0.8f}, {0.0f, 1.05f, 0.0f}, 30.0f)
-          .light(testing::spot_light(aim + 8.0f * to_light, aim, 20.0f, 20.0f));
-  const CloseUp images = small_scene_images(scene, 0.3f);
+  const BarBeforeAWall rail{
+      "rail before a wall", 78.0f, {0.0f, 1.2f, 0.06f}, 0.02f, 1.0f, 8.0f, 1.05f, 0.8f};
+  const CloseUp images = small_scene_images(rail.scene(), 0.3f);
   const ShadowMetrics m = compare_shadow(images.shadow, images.reference);
   long shadowed = 0;
   for (std::size_t i = 0; i < images.reference.rgba.size(); i += 4) {
