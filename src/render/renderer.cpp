@@ -446,15 +446,15 @@ void Renderer::render(const RenderSettings& render, const ShadowSettings& shadow
     }
     gl::GpuPassScope timed(profiler, gl::GpuPass::ShadowDepth);
     const std::span<const gpu::GpuShadowView> drawn(views, static_cast<std::size_t>(view_count_));
+    // A view whose fragments write their depth (a cube face's radial one).
+    const auto radial = [&](int view) { return caster_depth(views[view]) == CasterDepth::Written; };
     shadow_views_drawn_ = shadow_pass_.execute(
         [&](int view) {
-          shadow_casters_.draw(gpu_scene_, view, caster_depth(views[view]) == CasterDepth::Written,
-                               depth_samples(shadow));
+          shadow_casters_.draw(gpu_scene_, view, radial(view), depth_samples(shadow));
         },
         drawn, shadow.map_size, stale, depth_samples(shadow),
         second_surfaces ? ShadowMapPass::DrawCasters([&](int view) {
-          shadow_casters_.draw_second_surfaces(gpu_scene_, view,
-                                               caster_depth(views[view]) == CasterDepth::Written);
+          shadow_casters_.draw_second_surfaces(gpu_scene_, view, radial(view));
         })
                         : ShadowMapPass::DrawCasters());
   }

@@ -345,11 +345,9 @@ TEST_F(GpuTest, VirtualMapsSoftenTheSunsShadowByTheSettingsSunAngle) {
 }
 
 // Backprojection and the traced reference (256 rays) on a close-up of the
-// default scene, 200 x 150, under its spot light with a source
+// default scene, 200 x 150, under its spot light, or under `light`
+// (--light's choice: a point light where the spot is), with a source
 // `light_size` wide.
-
-// The default scene lit by its spot light, or by `light` (--light's
-// choice: a point light where the spot is).
 CloseUp default_scene_images(glm::vec3 camera, glm::vec3 target, float fov_y_degrees,
                              float light_size, const std::string& light = "") {
   Scene scene = *builtin_scene("default");

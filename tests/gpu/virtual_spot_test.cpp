@@ -386,8 +386,6 @@ TEST_F(GpuTest, VirtualSpotPagesAreCachedUntilACasterOverThemMoves) {
   EXPECT_EQ(cached.rgba, renderer.read_view().rgba);
 }
 
-// --view pages for a spot: inside its frustum every pixel shows the page
-// it reads, a colour per level; outside it, black.
 // Backprojection through a spot light's virtual maps, source 1.0 wide,
 // against the traced reference. Its cut of the cone to the source reads
 // the depth bounds of the pages' cells, which the bounds pass made only for
@@ -408,6 +406,8 @@ TEST_F(GpuTest, VirtualSpotBackprojectionReadsItsPagesDepthBounds) {
   EXPECT_LT(m.over_dark_fraction, 0.001);
 }
 
+// --view pages for a spot: inside its frustum every pixel shows the page
+// it reads, a colour per level; outside it, black.
 TEST_F(GpuTest, VirtualSpotPagesView) {
   Renderer renderer(spot_scene());
   renderer.render(camera_view(View::Pages), virtual_maps(Technique::Hard));
