@@ -58,13 +58,10 @@
 #include "penumbra.glsl"
 
 #define BACKPROJECTION_SIDE 16  // source points per side (a uint holds two rows)
-// BACKPROJECTION_MAX_CELLS (shared/bindings.h): patches per side of the
-// blockers' region at most; a wider region is read from the hierarchy's
-// level whose cells it spans in at most this many.
-// Default scene, source 1.5, 320x180, 1024^2 maps (pcss_noise_test.cpp):
-// RMSE 0.0246 at 16, 0.0167 at 32, 0.0150 at 36, 0.0115 at 40 and 48 (a
-// silhouette moves by up to half a cell); the lighting pass takes 1.5x,
-// 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
+// BACKPROJECTION_MAX_CELLS (shared/bindings.h, with what it costs and
+// buys): patches per side of the blockers' region at most; a wider region
+// is read from the hierarchy's level whose cells it spans in at most this
+// many.
 // The coarsest cells (2^level texels wide) whose 2 x 2 around the receiver
 // are read as texels: up to 16 x 16 gathers. Default scene, source 1.5,
 // 4096^2 maps (cells of 8 texels), 640x360: RMSE 0.0148 at 2, 0.0117 at 3.
@@ -78,6 +75,14 @@ const float BACKPROJECTION_FLAT = 1.0 / 64.0;
 // Spot 1.5, 640x360, RMSE at 4, 8, 16 and 64: the default scene 0.0049,
 // 0.0047, 0.0047, 0.0047; the foliage 0.0211, 0.0207, 0.0202, 0.0201.
 const float BACKPROJECTION_STEP = 16.0;
+// The narrowest cell, in texels, that a step is measured in: between
+// texels, or cells 2 texels wide, a step is one of over 4 x 16 texel
+// widths of depth. Between texels, at BACKPROJECTION_MAX_CELLS 64 (640x360,
+// RMSE), 1 -> this: the default scene's sun at 8.45 degrees 0.0037 ->
+// 0.0035, the foliage's sun at 8.90 degrees 0.0199 -> 0.0193 (its
+// leaves' walls stand for the layers the map lost; with every texel's
+// wall, as before, 0.0051 and 0.0194); 8: 0.0035 and 0.0194.
+const int BACKPROJECTION_STEP_CELL = 4;
 
 // Occluders below the receiver's tangent plane cannot block the light that
 // reaches it (the rays that count lie above the plane), within a sine of
@@ -437,6 +442,43 @@ void backprojection_hide_patch(BackprojectionReceiver r, vec2 a0, vec2 a1, float
   backprojection_hide(low, high, lo, hi, r.shift);
 }
 
+// Whether a surface may join neighbouring cells of the hierarchy's level
+// level - 1 (2^level texels wide; level 0: texels) whose patches lie at
+// z-bars `depth_a` and `depth_b`, so that the first's reach to the
+// second's projection of their shared edge (Guennebaud et al. 2006's gap
+// filling, backprojection_hide_patch()) stands for that surface: depths
+// within BACKPROJECTION_STEP cell widths of each other, cells taken at
+// least BACKPROJECTION_STEP_CELL texels wide. A larger step is a gap
+// between two casters, left open where the map holds what lies behind the
+// nearer one (BackprojectionReceiver::steps_open; not among the second
+// surfaces' own cells). Elsewhere the wall it fills stands for surfaces
+// the map lost: without second surfaces (an engine's maps, drawn once
+// through ShadowMaps) the default scene's point light at 1.5 read 0.0137
+// with its steps open, 0.0094 with the walls (RMSE, 640x360); with them
+// on its cube faces as well, 0.0053. Over the default scene's box, the wall
+// from the slab's edge down to the box hid the light that passes between
+// them: the ground at the box's foot read 0.05 where the traced reference
+// reads 0.2 (spot 1.5: RMSE 0.0059 -> 0.0047; sun 8.45 degrees: 0.0064 ->
+// 0.0054).
+bool backprojection_joined(GpuShadowView view, BackprojectionReceiver r, int layer, int level,
+                           float depth_a, float depth_b) {
+  if (!r.steps_open || layer == view.second_layer) return true;
+  float near = min(depth_a, depth_b);
+  float across = float(max(1 << level, BACKPROJECTION_STEP_CELL)) * view.depth_range.z *
+                 (view.perspective != 0 ? linear_depth_of(view, near) : 1.0);
+  return abs(depth_b - depth_a) * (view.depth_range.y - view.depth_range.x) <=
+         BACKPROJECTION_STEP * across;
+}
+
+// The reach (backprojection_hide_patch()'s `right` or `up`) of a texel's
+// patch at z-bar `occluder` towards its neighbour at z-bar `neighbour`,
+// whose extent is `extent`: that extent where a surface may join them
+// (backprojection_joined()), else 0.
+float backprojection_texel_reach(GpuShadowView view, BackprojectionReceiver r, int layer,
+                                 float occluder, float neighbour, float extent) {
+  return backprojection_joined(view, r, layer, 0, occluder, neighbour) ? extent : 0.0;
+}
+
 // The extents (backprojection_extent()) of texels t and t + step at
 // z-bars `first` and `second`: 0 outside the map (`size` texels).
 vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, ivec2 t,
@@ -449,61 +491,75 @@ vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, i
 }
 
 // Hides the source points behind the patches of texels [t0, t1] (inside
-// the map; each reaching to its blocking right and upper neighbours), two
-// by two: GATHER reads a texel (w), its right (z), upper (x) and upper
-// right (y) neighbours (textureGather at its upper right corner;
+// the map; each reaching to its blocking right and upper neighbours where
+// a surface may join them: backprojection_texel_reach()), two by two:
+// GATHER reads a texel (w), its right (z), upper (x) and upper right (y)
+// neighbours (textureGather at its upper right corner;
 // depth_map_hooks.glsl). A 2 x 2 whose texels all lie behind the
 // receiver's plane hides nothing and is left after that one read; the
 // others read the column to their right and the row above them as well,
 // where their texels need them as neighbours.
-#define BACKPROJECTION_TEXEL_PATCHES_DEFINE(NAME, MAPS, TEXELS, GATHER)                         \
-  void NAME(MAPS depth_maps, int layer, GpuShadowView view, BackprojectionReceiver r,           \
-            ivec2 t0, ivec2 t1, inout uvec4 low, inout uvec4 high) {                            \
-    ivec2 size = TEXELS(depth_maps, layer);                                                     \
-    for (int ty = t0.y; ty <= t1.y; ty += 2) {                                                  \
-      for (int tx = t0.x; tx <= t1.x; tx += 2) {                                                \
-        ivec2 t = ivec2(tx, ty);                                                                \
-        vec4 g = GATHER(depth_maps, layer, t);                                                  \
-        BACKPROJECTION_FETCHED(1);                                                              \
-        /* Lower row (x: left, y: right) and upper row. */                                      \
-        vec2 lower = backprojection_pair_extents(view, r, t, ivec2(1, 0), g.w, g.z, size);      \
-        vec2 upper = backprojection_pair_extents(view, r, t + ivec2(0, 1), ivec2(1, 0), g.x,    \
-                                                 g.y, size);                                    \
-        /* The region's own texels; those past t1 are only neighbours. */                       \
-        bvec2 second = lessThanEqual(t + 1, t1);                                                \
-        vec4 own = vec4(lower.x, second.x ? lower.y : 0.0, second.y ? upper.x : 0.0,            \
-                        all(second) ? upper.y : 0.0);                                           \
-        if (all(equal(own, vec4(0.0)))) continue;                                               \
-        vec2 right = vec2(0.0), above = vec2(0.0);                                              \
-        if (own.y > 0.0 || own.w > 0.0) {                                                       \
-          vec4 h = GATHER(depth_maps, layer, t + ivec2(2, 0));                                  \
-          BACKPROJECTION_FETCHED(1);                                                            \
-          right = backprojection_pair_extents(view, r, t + ivec2(2, 0), ivec2(0, 1), h.w, h.x,  \
-                                              size);                                            \
-        }                                                                                       \
-        if (own.z > 0.0 || own.w > 0.0) {                                                       \
-          vec4 h = GATHER(depth_maps, layer, t + ivec2(0, 2));                                  \
-          BACKPROJECTION_FETCHED(1);                                                            \
-          above = backprojection_pair_extents(view, r, t + ivec2(0, 2), ivec2(1, 0), h.w, h.z,  \
-                                              size);                                            \
-        }                                                                                       \
-        vec2 a = vec2(t) - r.center;                                                            \
-        if (own.x > 0.0 && backprojection_above_plane(view, r, a + 0.5, g.w)) {                 \
-          backprojection_hide_patch(r, a, a + 1.0, own.x, lower.y, upper.x, low, high);         \
-        }                                                                                       \
-        if (own.y > 0.0 && backprojection_above_plane(view, r, a + vec2(1.5, 0.5), g.z)) {      \
-          backprojection_hide_patch(r, a + vec2(1.0, 0.0), a + vec2(2.0, 1.0), own.y, right.x,  \
-                                    upper.y, low, high);                                        \
-        }                                                                                       \
-        if (own.z > 0.0 && backprojection_above_plane(view, r, a + vec2(0.5, 1.5), g.x)) {      \
-          backprojection_hide_patch(r, a + vec2(0.0, 1.0), a + vec2(1.0, 2.0), own.z, upper.y,  \
-                                    above.x, low, high);                                        \
-        }                                                                                       \
-        if (own.w > 0.0 && backprojection_above_plane(view, r, a + 1.5, g.y)) {                 \
-          backprojection_hide_patch(r, a + 1.0, a + 2.0, own.w, right.y, above.y, low, high);   \
-        }                                                                                       \
-      }                                                                                         \
-    }                                                                                           \
+#define BACKPROJECTION_TEXEL_PATCHES_DEFINE(NAME, MAPS, TEXELS, GATHER)                            \
+  void NAME(MAPS depth_maps, int layer, GpuShadowView view, BackprojectionReceiver r,              \
+            ivec2 t0, ivec2 t1, inout uvec4 low, inout uvec4 high) {                               \
+    ivec2 size = TEXELS(depth_maps, layer);                                                        \
+    for (int ty = t0.y; ty <= t1.y; ty += 2) {                                                     \
+      for (int tx = t0.x; tx <= t1.x; tx += 2) {                                                   \
+        ivec2 t = ivec2(tx, ty);                                                                   \
+        vec4 g = GATHER(depth_maps, layer, t);                                                     \
+        BACKPROJECTION_FETCHED(1);                                                                 \
+        /* Lower row (x: left, y: right) and upper row. */                                         \
+        vec2 lower = backprojection_pair_extents(view, r, t, ivec2(1, 0), g.w, g.z, size);         \
+        vec2 upper = backprojection_pair_extents(view, r, t + ivec2(0, 1), ivec2(1, 0), g.x,       \
+                                                 g.y, size);                                       \
+        /* The region's own texels; those past t1 are only neighbours. */                          \
+        bvec2 second = lessThanEqual(t + 1, t1);                                                   \
+        vec4 own = vec4(lower.x, second.x ? lower.y : 0.0, second.y ? upper.x : 0.0,               \
+                        all(second) ? upper.y : 0.0);                                              \
+        if (all(equal(own, vec4(0.0)))) continue;                                                  \
+        /* The column to the right and the row above: extents and depths. */                       \
+        vec2 right = vec2(0.0), above = vec2(0.0);                                                 \
+        vec2 right_depth = vec2(1.0), above_depth = vec2(1.0);                                     \
+        if (own.y > 0.0 || own.w > 0.0) {                                                          \
+          vec4 h = GATHER(depth_maps, layer, t + ivec2(2, 0));                                     \
+          BACKPROJECTION_FETCHED(1);                                                               \
+          right = backprojection_pair_extents(view, r, t + ivec2(2, 0), ivec2(0, 1), h.w, h.x,     \
+                                              size);                                               \
+          right_depth = h.wx;                                                                      \
+        }                                                                                          \
+        if (own.z > 0.0 || own.w > 0.0) {                                                          \
+          vec4 h = GATHER(depth_maps, layer, t + ivec2(0, 2));                                     \
+          BACKPROJECTION_FETCHED(1);                                                               \
+          above = backprojection_pair_extents(view, r, t + ivec2(0, 2), ivec2(1, 0), h.w, h.z,     \
+                                              size);                                               \
+          above_depth = h.wz;                                                                      \
+        }                                                                                          \
+        vec2 a = vec2(t) - r.center;                                                               \
+        if (own.x > 0.0 && backprojection_above_plane(view, r, a + 0.5, g.w)) {                    \
+          backprojection_hide_patch(                                                               \
+              r, a, a + 1.0, own.x, backprojection_texel_reach(view, r, layer, g.w, g.z, lower.y), \
+              backprojection_texel_reach(view, r, layer, g.w, g.x, upper.x), low, high);           \
+        }                                                                                          \
+        if (own.y > 0.0 && backprojection_above_plane(view, r, a + vec2(1.5, 0.5), g.z)) {         \
+          backprojection_hide_patch(                                                               \
+              r, a + vec2(1.0, 0.0), a + vec2(2.0, 1.0), own.y,                                    \
+              backprojection_texel_reach(view, r, layer, g.z, right_depth.x, right.x),             \
+              backprojection_texel_reach(view, r, layer, g.z, g.y, upper.y), low, high);           \
+        }                                                                                          \
+        if (own.z > 0.0 && backprojection_above_plane(view, r, a + vec2(0.5, 1.5), g.x)) {         \
+          backprojection_hide_patch(                                                               \
+              r, a + vec2(0.0, 1.0), a + vec2(1.0, 2.0), own.z,                                    \
+              backprojection_texel_reach(view, r, layer, g.x, g.y, upper.y),                       \
+              backprojection_texel_reach(view, r, layer, g.x, above_depth.x, above.x), low, high); \
+        }                                                                                          \
+        if (own.w > 0.0 && backprojection_above_plane(view, r, a + 1.5, g.y)) {                    \
+          backprojection_hide_patch(                                                               \
+              r, a + 1.0, a + 2.0, own.w,                                                          \
+              backprojection_texel_reach(view, r, layer, g.y, right_depth.y, right.y),             \
+              backprojection_texel_reach(view, r, layer, g.y, above_depth.y, above.y), low, high); \
+        }                                                                                          \
+      }                                                                                            \
+    }                                                                                              \
   }
 BACKPROJECTION_TEXEL_PATCHES_DEFINE(backprojection_texel_patches, sampler2DArray,
                                     shadow_map_texels, shadow_map_gather)
@@ -644,33 +700,6 @@ float backprojection_lit_fraction(GpuShadowView view, BackprojectionReceiver r, 
     }
   }
   return nearest_lit;
-}
-
-// Whether a surface may join neighbouring cells of the hierarchy's level
-// level - 1 (2^level texels wide) whose patches lie at z-bars `depth_a`
-// and `depth_b`, so that the first's reach to the second's projection of
-// their shared edge (Guennebaud et al. 2006's gap filling,
-// backprojection_hide_patch()) stands for that surface: depths within
-// BACKPROJECTION_STEP cell widths of each other. A larger step is a gap
-// between two casters, left open where the map holds what lies behind the
-// nearer one (BackprojectionReceiver::steps_open; not among the second
-// surfaces' own cells). Elsewhere the wall it fills stands for surfaces
-// the map lost: without second surfaces (an engine's maps, drawn once
-// through ShadowMaps) the default scene's point light at 1.5 read 0.0137
-// with its steps open, 0.0094 with the walls (RMSE, 640x360); with them
-// on its cube faces as well, 0.0053. Over the default scene's box, the wall
-// from the slab's edge down to the box hid the light that passes between
-// them: the ground at the box's foot read 0.05 where the traced reference
-// reads 0.2 (spot 1.5: RMSE 0.0059 -> 0.0047; sun 8.45 degrees: 0.0064 ->
-// 0.0054).
-bool backprojection_joined(GpuShadowView view, BackprojectionReceiver r, int layer, int level,
-                           float depth_a, float depth_b) {
-  if (!r.steps_open || layer == view.second_layer) return true;
-  float near = min(depth_a, depth_b);
-  float across = float(1 << level) * view.depth_range.z *
-                 (view.perspective != 0 ? linear_depth_of(view, near) : 1.0);
-  return abs(depth_b - depth_a) * (view.depth_range.y - view.depth_range.x) <=
-         BACKPROJECTION_STEP * across;
 }
 
 // The reach (backprojection_hide_patch()'s `right` or `up`) of a patch at
@@ -859,6 +888,10 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   // JGT 2008). They lie behind the first surfaces texel by texel, so
   // wherever the first are behind the receiver's plane, so are they.
   int surfaces = view.second_layer > 0 ? 2 : 1;
+  r.steps_open =
+      view.second_layer > 0 &&
+      texelFetch(depth_maps, ivec3(ivec2(floor(r.center)), view.second_layer), 0).r >= z;
+  BACKPROJECTION_FETCHED(int(view.second_layer > 0));
   if (span <= BACKPROJECTION_MAX_CELLS) {
     // The texels themselves, and the row and column below the region,
     // whose patches may reach into it.
@@ -878,10 +911,6 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     // (backprojection_cell_patch()).
     int level = min(findMSB((span - 1) / BACKPROJECTION_MAX_CELLS) + 1,
                     backprojection_levels(hierarchy));
-    r.steps_open =
-        view.second_layer > 0 &&
-        texelFetch(depth_maps, ivec3(ivec2(floor(r.center)), view.second_layer), 0).r >= z;
-    BACKPROJECTION_FETCHED(int(view.second_layer > 0));
     ivec2 cells = backprojection_cells(hierarchy, level - 1);
     // The 2 x 2 cells around the receiver are its texels: there a blocker
     // is nearest, its patch hides the most of the source, and a cell the

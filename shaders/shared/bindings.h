@@ -109,12 +109,19 @@
 #define MAX_PCF_WIDTH 128
 // Backprojection (shaders/shadow/backprojection.glsl): patches per side
 // of the blockers' region at most: a wider region is read from the
-// hierarchy's level whose cells it spans in at most this many.
-// Default scene, source 1.5, 320x180, 1024^2 maps (pcss_noise_test.cpp):
-// RMSE 0.0246 at 16, 0.0167 at 32, 0.0150 at 36, 0.0115 at 40 and 48 (a
-// silhouette moves by up to half a cell); the lighting pass takes 1.5x,
-// 1.8x, 2.1x and 2.7x PCSS's time (bench, 640x360, 2048^2, llvmpipe).
-#define BACKPROJECTION_MAX_CELLS 40
+// hierarchy's level whose cells it spans in at most this many, a
+// narrower one texel by texel. Default scene, source 1.5, 320x180,
+// 1024^2 maps (pcss_noise_test.cpp): RMSE 0.0246 at 16, 0.0167 at 32,
+// 0.0150 at 36, 0.0115 at 40 (a silhouette moves by up to half a cell).
+// 40 -> 64 (640x360, 2048^2 maps, 256 rays): default scene, spot 1.5
+// 0.0041 -> 0.0039, point 1.5 0.0053 -> 0.0044, sun 8.45 degrees 0.0037
+// -> 0.0035; foliage, point 1.5 0.0213 -> 0.0185, spot 1.5 0.0157 ->
+// 0.0149; creases.json (480x270, source 1.0) 0.0203 -> 0.0128; no cell
+// of the study worse by over 0.0001. The lighting pass (bench, spot 1.5,
+// llvmpipe) 682 -> 886 ms, PCSS's 125 ms. At 48 and 64 before the texels'
+// patches judged steps (backprojection_texel_reach()), their walls
+// darkened the default scene's torus: sun 8.45 degrees 0.0040, 0.0051.
+#define BACKPROJECTION_MAX_CELLS 64
 // Backprojection: the steepest slope tan(theta) its slope-scaled bias
 // follows (shaders/shadow/backprojection.glsl says why; the settings'
 // max_slope still caps its receiver's depth gradient). The help of
