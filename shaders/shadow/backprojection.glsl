@@ -470,13 +470,19 @@ bool backprojection_joined(GpuShadowView view, BackprojectionReceiver r, int lay
          BACKPROJECTION_STEP * across;
 }
 
-// The reach (backprojection_hide_patch()'s `right` or `up`) of a texel's
-// patch at z-bar `occluder` towards its neighbour at z-bar `neighbour`,
-// whose extent is `extent`: that extent where a surface may join them
-// (backprojection_joined()), else 0.
-float backprojection_texel_reach(GpuShadowView view, BackprojectionReceiver r, int layer,
-                                 float occluder, float neighbour, float extent) {
-  return backprojection_joined(view, r, layer, 0, occluder, neighbour) ? extent : 0.0;
+// Hides the source points behind the patch of the texel [a0, a0 + 1]
+// (texels from the lookup) at z-bar `depth` of extent `extent`
+// (backprojection_extent(); 0: none), if it lies above the receiver's
+// plane, reaching to its right and upper neighbours (their z-bars and
+// extents: `right`, `up`) where a surface may join them
+// (backprojection_joined()).
+void backprojection_texel_patch(GpuShadowView view, BackprojectionReceiver r, int layer, vec2 a0,
+                                float depth, float extent, vec2 right, vec2 up, inout uvec4 low,
+                                inout uvec4 high) {
+  if (extent <= 0.0 || !backprojection_above_plane(view, r, a0 + 0.5, depth)) return;
+  float reach_right = backprojection_joined(view, r, layer, 0, depth, right.x) ? right.y : 0.0;
+  float reach_up = backprojection_joined(view, r, layer, 0, depth, up.x) ? up.y : 0.0;
+  backprojection_hide_patch(r, a0, a0 + 1.0, extent, reach_right, reach_up, low, high);
 }
 
 // The extents (backprojection_extent()) of texels t and t + step at
@@ -492,7 +498,7 @@ vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, i
 
 // Hides the source points behind the patches of texels [t0, t1] (inside
 // the map; each reaching to its blocking right and upper neighbours where
-// a surface may join them: backprojection_texel_reach()), two by two:
+// a surface may join them: backprojection_texel_patch()), two by two:
 // GATHER reads a texel (w), its right (z), upper (x) and upper right (y)
 // neighbours (textureGather at its upper right corner;
 // depth_map_hooks.glsl). A 2 x 2 whose texels all lie behind the
@@ -535,29 +541,15 @@ vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, i
           above_depth = h.wz;                                                                      \
         }                                                                                          \
         vec2 a = vec2(t) - r.center;                                                               \
-        if (own.x > 0.0 && backprojection_above_plane(view, r, a + 0.5, g.w)) {                    \
-          backprojection_hide_patch(                                                               \
-              r, a, a + 1.0, own.x, backprojection_texel_reach(view, r, layer, g.w, g.z, lower.y), \
-              backprojection_texel_reach(view, r, layer, g.w, g.x, upper.x), low, high);           \
-        }                                                                                          \
-        if (own.y > 0.0 && backprojection_above_plane(view, r, a + vec2(1.5, 0.5), g.z)) {         \
-          backprojection_hide_patch(                                                               \
-              r, a + vec2(1.0, 0.0), a + vec2(2.0, 1.0), own.y,                                    \
-              backprojection_texel_reach(view, r, layer, g.z, right_depth.x, right.x),             \
-              backprojection_texel_reach(view, r, layer, g.z, g.y, upper.y), low, high);           \
-        }                                                                                          \
-        if (own.z > 0.0 && backprojection_above_plane(view, r, a + vec2(0.5, 1.5), g.x)) {         \
-          backprojection_hide_patch(                                                               \
-              r, a + vec2(0.0, 1.0), a + vec2(1.0, 2.0), own.z,                                    \
-              backprojection_texel_reach(view, r, layer, g.x, g.y, upper.y),                       \
-              backprojection_texel_reach(view, r, layer, g.x, above_depth.x, above.x), low, high); \
-        }                                                                                          \
-        if (own.w > 0.0 && backprojection_above_plane(view, r, a + 1.5, g.y)) {                    \
-          backprojection_hide_patch(                                                               \
-              r, a + 1.0, a + 2.0, own.w,                                                          \
-              backprojection_texel_reach(view, r, layer, g.y, right_depth.y, right.y),             \
-              backprojection_texel_reach(view, r, layer, g.y, above_depth.y, above.y), low, high); \
-        }                                                                                          \
+        backprojection_texel_patch(view, r, layer, a, g.w, own.x, vec2(g.z, lower.y),              \
+                                   vec2(g.x, upper.x), low, high);                                 \
+        backprojection_texel_patch(view, r, layer, a + vec2(1.0, 0.0), g.z, own.y,                 \
+                                   vec2(right_depth.x, right.x), vec2(g.y, upper.y), low, high);   \
+        backprojection_texel_patch(view, r, layer, a + vec2(0.0, 1.0), g.x, own.z,                 \
+                                   vec2(g.y, upper.y), vec2(above_depth.x, above.x), low, high);   \
+        backprojection_texel_patch(view, r, layer, a + 1.0, g.y, own.w,                            \
+                                   vec2(right_depth.y, right.y), vec2(above_depth.y, above.y),     \
+                                   low, high);                                                     \
       }                                                                                            \
     }                                                                                              \
   }

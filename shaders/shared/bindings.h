@@ -119,7 +119,7 @@
 // 0.0149; creases.json (480x270, source 1.0) 0.0203 -> 0.0128; no cell
 // of the study worse by over 0.0001. The lighting pass (bench, spot 1.5,
 // llvmpipe) 682 -> 886 ms, PCSS's 125 ms. At 48 and 64 before the texels'
-// patches judged steps (backprojection_texel_reach()), their walls
+// patches judged steps (backprojection_texel_patch()), their walls
 // darkened the default scene's torus: sun 8.45 degrees 0.0040, 0.0051.
 #define BACKPROJECTION_MAX_CELLS 64
 // Backprojection: the steepest slope tan(theta) its slope-scaled bias
