@@ -370,33 +370,36 @@ vec2 backprojection_tan(GpuShadowView view, vec2 texels) {
 }
 
 // How far on the source, in source widths per texel of map offset, a
-// patch at z-bar `occluder` whose centre lies `mid` texels from the
-// receiver's lookup projects: scale / k (backprojection_k()), so that its
-// edge at offset a hides the source up to a times this. 0 where it hides
-// nothing: at or behind the receiver's plane, or k <= 0. With k = 1/d -
-// 1/d_r, scale / k = scale d / (1 - d / d_r): one division a patch.
-float backprojection_extent(GpuShadowView view, BackprojectionReceiver r, vec2 mid,
-                            float occluder) {
-  if (occluder >= r.z + dot(r.gradient, mid)) return 0.0;
-  float d = backprojection_depth(view, occluder, backprojection_tan(view, r.center + mid));
+// patch at axial depth d projects: scale / k (backprojection_k()), so that
+// its edge at offset a hides the source up to a times this; 0 where k <=
+// 0. With k = 1/d - 1/d_r, scale / k = scale d / (1 - d / d_r): one
+// division a patch. It grows with d (or scale / (d_r - d)).
+float backprojection_depth_extent(GpuShadowView view, BackprojectionReceiver r, float d) {
   float k_times_d = view.perspective != 0 ? 1.0 - d * r.receiver : r.receiver - d;
   return k_times_d > 0.0 ? r.scale * (view.perspective != 0 ? d : 1.0) / k_times_d : 0.0;
 }
 
+// The extent (backprojection_depth_extent()) of a patch at z-bar
+// `occluder` whose centre lies `mid` texels from the receiver's lookup; 0
+// where it hides nothing: at or behind the receiver's plane, or k <= 0.
+float backprojection_extent(GpuShadowView view, BackprojectionReceiver r, vec2 mid,
+                            float occluder) {
+  if (occluder >= r.z + dot(r.gradient, mid)) return 0.0;
+  return backprojection_depth_extent(
+      view, r, backprojection_depth(view, occluder, backprojection_tan(view, r.center + mid)));
+}
+
 // The least extent (backprojection_extent(), without its plane test) of a
 // patch at z-bar `occluder` or behind it anywhere over map offsets [a0,
-// a1] (texels from the lookup): the extent grows with the depth (scale d
-// / (1 - d / d_r), or scale / (d_r - d)), so it is the one at `occluder`'s
-// depth, made axial on a cube face at the offsets' farthest corner. 0
-// where that depth lies behind the receiver (k <= 0).
+// a1] (texels from the lookup): the extent grows with the depth, so it is
+// the one at `occluder`'s depth, made axial on a cube face at the
+// offsets' farthest corner. 0 where that depth lies behind the receiver
+// (k <= 0).
 float backprojection_least_extent(GpuShadowView view, BackprojectionReceiver r, vec2 a0, vec2 a1,
                                   float occluder) {
   vec2 corner = max(abs(backprojection_tan(view, r.center + a0)),
                     abs(backprojection_tan(view, r.center + a1)));
-  float d = linear_depth_of(view, occluder);
-  if (view.radial_depth != 0) d *= inversesqrt(1.0 + dot(corner, corner));
-  float k_times_d = view.perspective != 0 ? 1.0 - d * r.receiver : r.receiver - d;
-  return k_times_d > 0.0 ? r.scale * (view.perspective != 0 ? d : 1.0) / k_times_d : 0.0;
+  return backprojection_depth_extent(view, r, backprojection_depth(view, occluder, corner));
 }
 
 // Whether no patch over map offsets [a0, a1] can hide any of the source:

@@ -409,9 +409,10 @@ BetweenCasters between_two_casters(float light_size) {
     if (images.shadow.rgba[i] < images.reference.rgba[i] - 0.1f) ++b.too_dark;
   }
   b.rmse = compare_shadow(images.shadow, images.reference).rmse;
-  std::printf("box's foot under the slab, source %.1f: %ld of %ld pixels over 0.1 too dark, "
-              "RMSE %.4f\n",
-              light_size, b.too_dark, b.judged, b.rmse);
+  std::printf(
+      "box's foot under the slab, source %.1f: %ld of %ld pixels over 0.1 too dark, "
+      "RMSE %.4f\n",
+      light_size, b.too_dark, b.judged, b.rmse);
   return b;
 }
 
