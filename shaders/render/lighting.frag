@@ -330,7 +330,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
   float lit = shadow_backprojection(shadow_depth, shadow_filtered, v, view, s, z, gradient, normal,
                                     shading_normal, int(light.position_type.w) == LIGHT_POINT,
-                                    ivec2(gl_FragCoord.xy));
+                                    ivec2(gl_FragCoord.xy), shadow_params.backprojection_cells);
 #if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
   imageAtomicAdd(backprojection_fetch_counts, ivec2(gl_FragCoord.xy), backprojection_fetches);
   backprojection_fetches = 0u;

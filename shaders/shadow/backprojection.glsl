@@ -25,8 +25,8 @@
 // source, cut at the nearest depth the hierarchy finds in it, holds every
 // texel that can hide part of the source. All of it behind the receiver
 // is light, all of it in front is umbra; otherwise its texels (or, for a
-// region over BACKPROJECTION_MAX_CELLS texels wide, the hierarchy's cells)
-// are the patches, so the work per pixel is bounded.
+// region over the settings' backprojection_cells texels wide, the
+// hierarchy's cells) are the patches, so the work per pixel is bounded.
 //
 // The source is 16 x 16 points, one in each cell of a 16 x 16 grid and
 // multi-jittered (Chiu, Shirley and Wang, "Multi-Jittered Sampling",
@@ -58,10 +58,10 @@
 #include "penumbra.glsl"
 
 #define BACKPROJECTION_SIDE 16  // source points per side (a uint holds two rows)
-// BACKPROJECTION_MAX_CELLS (shared/bindings.h, with what it costs and
-// buys): patches per side of the blockers' region at most; a wider region
-// is read from the hierarchy's level whose cells it spans in at most this
-// many.
+// The settings' backprojection_cells (include/penumbra/settings.hpp, with
+// what it costs and buys): patches per side of the blockers' region at
+// most; a wider region is read from the hierarchy's level whose cells it
+// spans in at most this many.
 // The coarsest cells (2^level texels wide) whose 2 x 2 around the receiver
 // are read as texels: up to 16 x 16 gathers. Default scene, source 1.5,
 // 4096^2 maps (cells of 8 texels), 640x360: RMSE 0.0148 at 2, 0.0117 at 3.
@@ -77,7 +77,7 @@ const float BACKPROJECTION_FLAT = 1.0 / 64.0;
 const float BACKPROJECTION_STEP = 16.0;
 // The narrowest cell, in texels, that a step is measured in: between
 // texels, or cells 2 texels wide, a step is one of over 4 x 16 texel
-// widths of depth. Between texels, at BACKPROJECTION_MAX_CELLS 64 (640x360,
+// widths of depth. Between texels, at backprojection_cells 64 (640x360,
 // RMSE), 1 -> this: the default scene's sun at 8.45 degrees 0.0037 ->
 // 0.0035, the foliage's sun at 8.90 degrees 0.0199 -> 0.0193 (its
 // leaves' walls stand for the layers the map lost; with every texel's
@@ -815,10 +815,12 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
 // hierarchy), whose source is view.source_width wide: a square in the
 // view's x-y plane at its eye (spot), a disc there (`disc`: a point
 // light's sphere), or a disc of directions (orthographic: the sun).
-// `pixel` seeds the shift of the source's grid of points.
+// `pixel` seeds the shift of the source's grid of points. `max_cells`:
+// the settings' backprojection_cells, patches per side of the region at
+// most.
 float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
                             GpuShadowView view, ShadowLookup s, float z, vec2 gradient, vec3 normal,
-                            vec3 shading_normal, bool disc, ivec2 pixel) {
+                            vec3 shading_normal, bool disc, ivec2 pixel, int max_cells) {
   ivec2 size = textureSize(depth_maps, 0).xy;
   float texel = view.depth_range.z;
   disc = disc || view.perspective == 0;
@@ -887,7 +889,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
       view.second_layer > 0 &&
       texelFetch(depth_maps, ivec3(ivec2(floor(r.center)), view.second_layer), 0).r >= z;
   BACKPROJECTION_FETCHED(int(view.second_layer > 0));
-  if (span <= BACKPROJECTION_MAX_CELLS) {
+  if (span <= max_cells) {
     // The texels themselves, and the row and column below the region,
     // whose patches may reach into it.
     for (int surface = 0; surface < surfaces; ++surface) {
@@ -904,7 +906,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     // whose depths all lie in front is a patch at its nearest depth; a cell
     // the receiver's plane cuts is read as its quarters
     // (backprojection_cell_patch()).
-    int level = min(findMSB((span - 1) / BACKPROJECTION_MAX_CELLS) + 1,
+    int level = min(findMSB((span - 1) / max_cells) + 1,
                     backprojection_levels(hierarchy));
     ivec2 cells = backprojection_cells(hierarchy, level - 1);
     // The 2 x 2 cells around the receiver are its texels: there a blocker

@@ -96,7 +96,7 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
     if (technique == TECHNIQUE_BACKPROJECTION) {
       return shadow_backprojection(penumbra_depth, penumbra_filtered, v, view, s, z, gradient,
                                    normal, normal, int(light.position_type.w) == LIGHT_POINT,
-                                   ivec2(floor(pixel)));
+                                   ivec2(floor(pixel)), params.backprojection_cells);
     }
     // PCSS: the cone the light's source really subtends (its width is the
     // settings' light_size, or sun_angle for the sun).

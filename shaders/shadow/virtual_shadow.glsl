@@ -229,7 +229,7 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
 // disc, a spot's square), cut at the receiver's level's
 // nearest caster and then twice at the nearest depth the pages' cells find
 // in it (virtual_depth_bounds()), is read at the level where it spans at
-// most BACKPROJECTION_MAX_CELLS texels, texel by texel: the coarser
+// most VIRTUAL_BACKPROJECTION_WINDOW texels, texel by texel: the coarser
 // levels stand for the hierarchy's coarser cells (a level's texel
 // holds the depth at its centre where a cell holds its nearest). If the
 // cut region fits a finer level (at least the receiver's), it is read
@@ -238,7 +238,7 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
 float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLight light,
                              vec3 world, vec3 normal, ivec2 pixel) {
   if (r0.view.source_width <= 0.0) return virtual_hard(r0);  // a point source
-  const float window = float(BACKPROJECTION_MAX_CELLS);
+  const float window = float(VIRTUAL_BACKPROJECTION_WINDOW);
   int level = virtual_search_level(i, r0.level, world, window);
   // The first level's cut region's half-width, in units of the view's
   // depth_range.z (world units, or tangent units of a spot's map).

@@ -107,21 +107,10 @@
 
 // Widest PCF / PCSS window, in texels.
 #define MAX_PCF_WIDTH 128
-// Backprojection (shaders/shadow/backprojection.glsl): patches per side
-// of the blockers' region at most: a wider region is read from the
-// hierarchy's level whose cells it spans in at most this many, a
-// narrower one texel by texel. Default scene, source 1.5, 320x180,
-// 1024^2 maps (pcss_noise_test.cpp): RMSE 0.0246 at 16, 0.0167 at 32,
-// 0.0150 at 36, 0.0115 at 40 (a silhouette moves by up to half a cell).
-// 40 -> 64 (640x360, 2048^2 maps, 256 rays): default scene, spot 1.5
-// 0.0041 -> 0.0039, point 1.5 0.0053 -> 0.0044, sun 8.45 degrees 0.0037
-// -> 0.0035; foliage, point 1.5 0.0213 -> 0.0185, spot 1.5 0.0157 ->
-// 0.0149; creases.json (480x270, source 1.0) 0.0203 -> 0.0128; no cell
-// of the study worse by over 0.0001. The lighting pass (bench, spot 1.5,
-// llvmpipe) 682 -> 886 ms, PCSS's 125 ms. At 48 and 64 before the texels'
-// patches judged steps (backprojection_texel_patch()), their walls
-// darkened the default scene's torus: sun 8.45 degrees 0.0040, 0.0051.
-#define BACKPROJECTION_MAX_CELLS 64
+// Virtual shadow maps: backprojection reads its region at the level where
+// it spans at most this many texels, texel by texel (half a page, so the
+// region reads at most 2 x 2 pages; shaders/shadow/virtual_shadow.glsl).
+#define VIRTUAL_BACKPROJECTION_WINDOW 64
 // Backprojection: the steepest slope tan(theta) its slope-scaled bias
 // follows (shaders/shadow/backprojection.glsl says why; the settings'
 // max_slope still caps its receiver's depth gradient). The help of
@@ -130,8 +119,7 @@
 // Virtual shadow maps: PCSS reads its blocker search and its filter from
 // a level where each is at most this many texels wide (half a page, so a
 // window reads at most 2 x 2 pages; a wider penumbra is read from a
-// coarser level), and backprojection its region where it spans at most
-// BACKPROJECTION_MAX_CELLS texels (shaders/shadow/virtual_shadow.glsl).
+// coarser level).
 #define VIRTUAL_PCSS_WINDOW 64
 // Largest box radius read from a summed-area table (its fixed-point scale
 // is chosen so that a box this size cannot overflow 32 bits).

@@ -100,7 +100,7 @@ struct GpuShadow {
   // dither.
   float accumulate_u;
   float accumulate_v;
-  int unused0;
+  int backprojection_cells;  // the settings' backprojection_cells (shadow_backprojection())
   int accumulate_frame;
   float evsm_positive;  // EVSM exponents c+ and c- (shaders/shadow/evsm.glsl)
   float evsm_negative;
@@ -170,7 +170,7 @@ struct GpuVirtualShadow {
   // allocation writes the one it chose, 0 .. VIRTUAL_LEVEL_BIASES - 1,
   // before the pages are drawn); w: the window, in texels, of the source's
   // search region the lookup also reads (pcss: VIRTUAL_PCSS_WINDOW,
-  // backprojection: BACKPROJECTION_MAX_CELLS; 0: none)
+  // backprojection: VIRTUAL_BACKPROJECTION_WINDOW; 0: none)
   vec4 params;
   // x: unused; y: level count (all lights); z: pool pages; w: caster
   // draw commands (one per batch)

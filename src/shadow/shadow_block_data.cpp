@@ -76,6 +76,7 @@ gpu::GpuShadow gpu_shadow_params(const ShadowMapSettings& shadow) {
   block.pcss_blocker_samples = shadow.pcss_blocker_samples;
   block.pcss_filter_samples = shadow.pcss_filter_samples;
   block.two_moment_blockers = shadow.soft_two_moment_blockers ? 1 : 0;
+  block.backprojection_cells = shadow.backprojection_cells;
   block.evsm_positive = shadow.evsm_positive;
   block.evsm_negative = shadow.evsm_negative;
   return block;

@@ -260,7 +260,7 @@ void VirtualShadowPass::update(std::span<const VirtualLightMaps> lights,
   // coarser levels where it is wider than their window (virtual_mark.comp).
   block_.params.w = settings.technique == Technique::Pcss ? float(VIRTUAL_PCSS_WINDOW)
                     : settings.technique == Technique::Backprojection
-                        ? float(BACKPROJECTION_MAX_CELLS)
+                        ? float(VIRTUAL_BACKPROJECTION_WINDOW)
                         : 0.0f;
   block_.params.y = settings.normal_offset + filter + 2.0f;
   block_.counts = glm::ivec4(0, levels, pool_pages_, draws_);

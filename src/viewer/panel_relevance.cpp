@@ -33,6 +33,7 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
   if (name == "pcf-width" || name == "pcf-samples") return t == Technique::Pcf;
   if (name == "pcss-blocker-samples" || name == "pcss-filter-samples")
     return t == Technique::Pcss || t == Technique::Backprojection;
+  if (name == "backprojection-cells") return t == Technique::Backprojection;
   if (name == "esm-c") return t == Technique::Esm;
   const bool evsm = t == Technique::Evsm2 || t == Technique::Evsm4;
   if (name == "evsm-positive") return evsm;

@@ -47,6 +47,7 @@ struct EdgeSetup {
   float camera_back = 0.25f;
   float cone_degrees = 25.0f;
   float normal_offset = 0.0f;
+  int backprojection_cells = ShadowSettings{}.backprojection_cells;
 };
 
 Scene edge_scene(const EdgeSetup& setup) {
@@ -117,6 +118,7 @@ EdgeError edge_error(Technique technique, int map_size, const EdgeSetup& setup =
   s.map_size = map_size;
   s.light_size = float(setup.source);
   s.normal_offset = setup.normal_offset;
+  s.backprojection_cells = setup.backprojection_cells;
   renderer.render(rs, s);
   const Image image = renderer.read_view();
   const SurfacePoints surfaces = renderer.read_surfaces();
@@ -199,28 +201,44 @@ TEST_F(GpuTest, BackprojectionKeepsAPenumbraInPlaceWhateverTheNormalOffset) {
 }
 
 // A source 8 wide: a penumbra of about 220 texels, read from the depth
-// hierarchy's cells 4 texels wide (BACKPROJECTION_MAX_CELLS 64). A cell
+// hierarchy's cells 4 texels wide (backprojection_cells 64). A cell
 // that the slab's edge cuts stood for the slab wholly or not at all, as
 // its centre texel did, moving the silhouette by up to half a cell with
 // the edge's place among the cells: over four places a texel apart,
 // binned RMS 0.0046, 0.0092, 0.0046 and 0.0005. Read as its quarters
 // (each as its centre texel does), by up to a quarter: 0.0046, 0.0005,
 // 0.0046, 0.0005.
-TEST_F(GpuTest, BackprojectionReadsACellCutByAnEdgeAsItsQuarters) {
+// The straight edge's binned RMS at its worst over four places a texel
+// apart (every `stride`-th of them), its penumbra read with
+// backprojection_cells `cells`.
+double wide_edge_worst(int cells, int stride = 1) {
   const double cone = glm::radians(double(EdgeSetup{}.cone_degrees));
   const double slab_texel = 2.0 * std::tan(cone) * (kLightHeight - kSlabTop) / 1024;
   double worst = 0.0;
-  for (int shift = 0; shift < 4; ++shift) {
+  for (int shift = 0; shift < 4; shift += stride) {
     EdgeSetup setup;
     setup.edge = 0.5 + shift * slab_texel;
     setup.source = 8.0;
     setup.camera_height = 1.2f;
     setup.camera_back = 0.6f;
+    setup.backprojection_cells = cells;
     const EdgeError e = edge_error(Technique::Backprojection, 1024, setup);
-    ASSERT_GT(e.bins, 60) << "too few receivers across the penumbra";
+    EXPECT_GT(e.bins, 60) << "too few receivers across the penumbra";
+    std::printf("cells %d, edge %d texels on: binned RMS %.4f\n", cells, shift, e.rms);
     worst = std::max(worst, e.rms);
   }
-  EXPECT_LE(worst, 0.007);
+  return worst;
+}
+
+TEST_F(GpuTest, BackprojectionReadsACellCutByAnEdgeAsItsQuarters) {
+  EXPECT_LE(wide_edge_worst(ShadowSettings{}.backprojection_cells), 0.007);
+}
+
+// The same penumbra with backprojection_cells 128: cells 2 texels wide,
+// whose quarters are the texels, where the edge's places that read 0.0046
+// from cells 4 wide read 0.0005 (32: cells 8 wide, up to 0.0091).
+TEST_F(GpuTest, BackprojectionCellsSetHowFineAWideRegionIsRead) {
+  EXPECT_LE(wide_edge_worst(128, 2), 0.002);
 }
 
 // A box floating over the ground, lit by a sun or a point light with a

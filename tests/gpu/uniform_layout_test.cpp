@@ -45,6 +45,7 @@ TEST_F(GpuTest, UniformBlocksMatchTheirCppMirrors) {
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, filter_slope_bias);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, pcf_width);
   EXPECT_OFFSET(p, "shadow_params", GpuShadow, pcss_filter_samples);
+  EXPECT_OFFSET(p, "shadow_params", GpuShadow, backprojection_cells);
   EXPECT_OFFSET(p, "frame", GpuFrame, inverse_view_projection);
   EXPECT_OFFSET(p, "frame", GpuFrame, camera_position);
   EXPECT_OFFSET(p, "frame", GpuFrame, viewport);
