@@ -177,10 +177,10 @@ struct ShadowMapSettings {
   // towards the source's centre and widens a penumbra (docs/rendering.md).
   // Default scene, source 1.5, 320x180, 1024^2 maps: RMSE 0.0246 at 16,
   // 0.0167 at 32, 0.0115 at 40. 640x360, 2048^2 maps, 256 rays, default
-  // scene's spot at 1.5: 0.0039 at 64, 0.0037 at 72, 0.0030 at 80 and 96;
-  // the lighting pass (bench, llvmpipe) 886, 1148, 1664 and 1844 ms,
-  // PCSS's 125 ms. Virtual shadow maps read their region texel by texel at
-  // a level where it spans at most VIRTUAL_BACKPROJECTION_WINDOW texels.
+  // scene's spot at 1.5: 0.0039 at 64, 0.0030 at 96 and 128; the lighting
+  // pass (bench, llvmpipe) 927, 1929 and 2327 ms, PCSS's 125 ms. Virtual
+  // shadow maps read their region texel by texel at a level where it spans
+  // at most VIRTUAL_BACKPROJECTION_WINDOW texels.
   int backprojection_cells = 64;
   // Moment soft shadows (vsm, msm, msm16 with --filter sat): the filter
   // width follows the estimated penumbra, at least the fixed --blur.
@@ -490,9 +490,12 @@ inline constexpr int kMaxBlur = MAX_SOFT_RADIUS;
 inline constexpr int kMaxFusedBlur = 16;
 inline constexpr int kMaxShadowSamples = 64;  // the size of the Poisson set
 inline constexpr int kMaxContactShadowSteps = 64;
-// Backprojection's region read texel by texel up to this many texels
-// wide: (256 / 2)^2 gathers a pixel at most.
-inline constexpr int kMaxBackprojectionCells = 256;
+// Backprojection's patches per side of its region at most. llvmpipe ends
+// every loop of a shader invocation once they have run 65535 iterations
+// in all (for the eight pixels it shades together), and a lookup cut
+// short reads lit: at 256 the default scene's point light 3 wide lost
+// 1732 of 230 400 pixels (640x360), at 128 none, nor the foliage's lights.
+inline constexpr int kMaxBackprojectionCells = 128;
 // --shadow-msaa takes the sample counts every GL 4.5 device can offer for a
 // depth texture, powers of two (GL_MAX_DEPTH_TEXTURE_SAMPLES is at least 1;
 // each device's own limit is checked where the maps are made).

@@ -738,6 +738,21 @@ void backprojection_cell_box(sampler2DArray hierarchy, int layer, GpuShadowView 
   backprojection_hide_patch(r, b0, b1, extent, right, up, low, high);
 }
 
+// Hides the source points behind a row of a cut cell's quarters
+// (backprojection_cell_patch()): those of the lower row (`lower`), the
+// upper one (`upper`) or both, the blocking ones among them (`blocks`:
+// left, right) at the nearest of their depths `depths`.
+void backprojection_cell_row(sampler2DArray hierarchy, int layer, GpuShadowView view,
+                             BackprojectionReceiver r, int level, ivec2 cells, ivec2 c, vec2 a0,
+                             vec2 a1, float h, bvec2 blocks, vec2 depths, bool lower, bool upper,
+                             inout uvec4 low, inout uvec4 high) {
+  if (!any(blocks)) return;
+  vec2 b0 = vec2(blocks.x ? a0.x : a0.x + h, lower ? a0.y : a0.y + h);
+  vec2 b1 = vec2(blocks.y ? a1.x : a0.x + h, upper ? a1.y : a0.y + h);
+  backprojection_cell_box(hierarchy, layer, view, r, level, cells, c, a0, a1, b0, b1,
+                          min(depths.x, depths.y), bvec2(blocks.y, upper), low, high);
+}
+
 // Hides the source points behind cell c of the hierarchy's level level - 1
 // (2^level texels wide, `cells` of them): a cell whose depths all lie in
 // front is a patch at its nearest depth. A cell the receiver's plane cuts
@@ -793,16 +808,16 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
     blocks = lessThan(d, planes);
   }
   d = mix(vec4(m.y), d, blocks);  // the nearest of the blocking ones below
+  // The lower row (or both, alike), then the upper one: written out, not
+  // looped, as llvmpipe ends every loop of a shader invocation after 65535
+  // iterations of them all (include/penumbra/settings.hpp,
+  // kMaxBackprojectionCells).
   bool alike = all(equal(blocks.xy, blocks.zw));
-  for (int row = 0; row < (alike ? 1 : 2); ++row) {
-    bvec2 row_blocks = row == 0 ? blocks.xy : blocks.zw;
-    if (!any(row_blocks)) continue;
-    vec2 depths = alike ? min(d.xy, d.zw) : (row == 0 ? d.xy : d.zw);
-    bool lower = alike || row == 0, upper = alike || row == 1;
-    vec2 b0 = vec2(row_blocks.x ? a0.x : a0.x + h, lower ? a0.y : a0.y + h);
-    vec2 b1 = vec2(row_blocks.y ? a1.x : a0.x + h, upper ? a1.y : a0.y + h);
-    backprojection_cell_box(hierarchy, layer, view, r, level, cells, c, a0, a1, b0, b1,
-                            min(depths.x, depths.y), bvec2(row_blocks.y, upper), low, high);
+  backprojection_cell_row(hierarchy, layer, view, r, level, cells, c, a0, a1, h,
+                          blocks.xy, alike ? min(d.xy, d.zw) : d.xy, true, alike, low, high);
+  if (!alike) {
+    backprojection_cell_row(hierarchy, layer, view, r, level, cells, c, a0, a1, h, blocks.zw,
+                            d.zw, false, true, low, high);
   }
 }
 
@@ -999,16 +1014,19 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
               continue;
             }
           }
-          for (int cy = c0.y; cy <= c1.y; ++cy) {
-            for (int cx = c0.x; cx <= c1.x; ++cx) {
-              ivec2 c = ivec2(cx, cy);
-              if (refine && all(greaterThanEqual(c, near_cells)) &&
-                  all(lessThanEqual(c, near_cells + 1))) {
-                continue;  // read as texels above
-              }
-              backprojection_cell_patch(depth_maps, hierarchy, surface_layer, view, r, level,
-                                        cells, c, nearest_extent, low, high);
+          // One loop over the cells, not one per row and column: llvmpipe
+          // ends every loop of a shader invocation after 65535 iterations
+          // of them all, counted for the eight pixels it shades together.
+          ivec2 n = c1 - c0 + 1;
+          ivec2 c = ivec2(c0.x - 1, c0.y);
+          for (int k = 0; k < n.x * n.y; ++k) {
+            c = c.x < c1.x ? ivec2(c.x + 1, c.y) : ivec2(c0.x, c.y + 1);
+            if (refine && all(greaterThanEqual(c, near_cells)) &&
+                all(lessThanEqual(c, near_cells + 1))) {
+              continue;  // read as texels above
             }
+            backprojection_cell_patch(depth_maps, hierarchy, surface_layer, view, r, level, cells,
+                                      c, nearest_extent, low, high);
           }
         }
       }
