@@ -101,6 +101,13 @@ const int BACKPROJECTION_STEP_CELL = 4;
 // foliage's spot at 1.5 0.0170 -> 0.0173.
 const float BACKPROJECTION_PLANE_SLACK = 0.1;
 
+// How sharply the points nearest below the horizon stand for a sliver of
+// the source above it that no point reaches (backprojection_lit_fraction()):
+// a point 1/256 further below weighs 1/e as much. At 64 and 256 the
+// default scene's sun at 8.45 degrees read 0.00285 (1280x720), every other
+// cell of the study within 0.0001 or better.
+const float BACKPROJECTION_SLIVER_SHARPNESS = 256.0;
+
 #if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
 // Texel reads per lookup (bench's debug variant: LightingPass's fetch count).
 uint backprojection_fetches = 0u;
@@ -676,9 +683,15 @@ float backprojection_lit_fraction(GpuShadowView view, BackprojectionReceiver r, 
   }
   if (total > 0.0) return lit / total;
   // Where the horizon leaves a sliver of the source that no point
-  // reaches, the point nearest above it stands for the sliver (the
-  // reference judges such a pixel by its own points in the sliver).
-  float nearest_cos = -2.0, nearest_lit = 1.0;
+  // reaches, the points nearest below it stand for the sliver, each
+  // weighed by exp(BACKPROJECTION_SLIVER_SHARPNESS cos theta_receiver)
+  // (the reference judges such a pixel by its own points in the sliver).
+  // The one nearest point alone, as before, read lit a pixel on the
+  // default scene's torus that the reference and the converged frame read
+  // dark (the 8.45 degree sun, 1280x720: a sixth of the image's squared
+  // error, RMSE 0.00307 -> 0.00285); the image's three other slivers stay
+  // lit, as the reference reads them.
+  float top = -2.0, weights = 0.0, lit_weights = 0.0;
   for (int j = 0; j < BACKPROJECTION_SIDE; ++j) {
     uint word = j < 8 ? low[j >> 1] : high[(j - 8) >> 1];
     uint row = word >> uint(16 * (j & 1));
@@ -687,14 +700,21 @@ float backprojection_lit_fraction(GpuShadowView view, BackprojectionReceiver r, 
       float x = x0 + float(i) * step, y = float(j) * step + column_y[i];
       vec3 t = vec3(x, y, 0.0) - p;
       if (!backprojection_on_source(r, p, radius2, x, y, dot(t, t))) continue;
+      // Weighed relative to the nearest point so far (`top`), so that no
+      // weight overflows or all vanish.
       float cos_receiver = dot(n, t) * inversesqrt(dot(t, t));
-      if (cos_receiver > nearest_cos) {
-        nearest_cos = cos_receiver;
-        nearest_lit = float(((row >> uint(i)) & 1u) == 0u);
+      if (cos_receiver > top) {
+        float rescale = exp(BACKPROJECTION_SLIVER_SHARPNESS * (top - cos_receiver));
+        weights *= rescale;
+        lit_weights *= rescale;
+        top = cos_receiver;
       }
+      float w = exp(BACKPROJECTION_SLIVER_SHARPNESS * (cos_receiver - top));
+      weights += w;
+      lit_weights += ((row >> uint(i)) & 1u) == 0u ? w : 0.0;
     }
   }
-  return nearest_lit;
+  return weights > 0.0 ? lit_weights / weights : 1.0;
 }
 
 // The reach (backprojection_hide_patch()'s `right` or `up`) of a patch at
