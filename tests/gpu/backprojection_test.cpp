@@ -200,17 +200,9 @@ TEST_F(GpuTest, BackprojectionKeepsAPenumbraInPlaceWhateverTheNormalOffset) {
   EXPECT_LE(e.rms, 0.002);
 }
 
-// A source 8 wide: a penumbra of about 220 texels, read from the depth
-// hierarchy's cells 4 texels wide (backprojection_cells 64). A cell
-// that the slab's edge cuts stood for the slab wholly or not at all, as
-// its centre texel did, moving the silhouette by up to half a cell with
-// the edge's place among the cells: over four places a texel apart,
-// binned RMS 0.0046, 0.0092, 0.0046 and 0.0005. Read as its quarters
-// (each as its centre texel does), by up to a quarter: 0.0046, 0.0005,
-// 0.0046, 0.0005.
 // The straight edge's binned RMS at its worst over four places a texel
-// apart (every `stride`-th of them), its penumbra read with
-// backprojection_cells `cells`.
+// apart (every `stride`-th of them) under a source 8 wide, a penumbra of
+// about 220 texels, read with backprojection_cells `cells`.
 double wide_edge_worst(int cells, int stride = 1) {
   const double cone = glm::radians(double(EdgeSetup{}.cone_degrees));
   const double slab_texel = 2.0 * std::tan(cone) * (kLightHeight - kSlabTop) / 1024;
@@ -230,6 +222,13 @@ double wide_edge_worst(int cells, int stride = 1) {
   return worst;
 }
 
+// The wide edge's penumbra read from the depth hierarchy's cells 4
+// texels wide (backprojection_cells 64). A cell that the slab's edge cuts
+// stood for the slab wholly or not at all, as its centre texel did,
+// moving the silhouette by up to half a cell with the edge's place among
+// the cells: over four places a texel apart, binned RMS 0.0046, 0.0092,
+// 0.0046 and 0.0005. Read as its quarters (each as its centre texel
+// does), by up to a quarter: 0.0046, 0.0005, 0.0046, 0.0005.
 TEST_F(GpuTest, BackprojectionReadsACellCutByAnEdgeAsItsQuarters) {
   EXPECT_LE(wide_edge_worst(ShadowSettings{}.backprojection_cells), 0.007);
 }
