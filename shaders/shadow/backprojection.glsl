@@ -728,15 +728,20 @@ float backprojection_reach(GpuShadowView view, BackprojectionReceiver r, int lay
              : 0.0;
 }
 
-// Hides the source points behind the patch [b0, b1] (texels from the
-// lookup) at z-bar `occluder` inside cell c of the hierarchy's level
-// level - 1 (its corners a0, a1; `cells` of them), reaching to the right
-// and upper neighbour cells' projections of their shared sides where the
-// patch touches them (`touches`).
+// Hides the source points behind the box over the sub-cells `cols` x
+// `rows` (bits 0-3: the columns, the rows, from the lower left) of cell c
+// of the hierarchy's level level - 1 (its corners a0, a1 texels from the
+// lookup, `cells` of them; 4 x 4 sub-cells `sub` texels wide) at z-bar
+// `occluder`, reaching to the right and upper neighbour cells'
+// projections of their shared sides where the box touches them.
 void backprojection_cell_box(sampler2DArray hierarchy, int layer, GpuShadowView view,
                              BackprojectionReceiver r, int level, ivec2 cells, ivec2 c, vec2 a0,
-                             vec2 a1, vec2 b0, vec2 b1, float occluder, bvec2 touches,
+                             vec2 a1, float sub, uint cols, uint rows, float occluder,
                              inout uvec4 low, inout uvec4 high) {
+  ivec2 first = ivec2(findLSB(cols), findLSB(rows)), last = ivec2(findMSB(cols), findMSB(rows));
+  bvec2 touches = equal(last, ivec2(3));
+  vec2 b0 = a0 + sub * vec2(first);
+  vec2 b1 = mix(a0 + sub * vec2(last + 1), a1, touches);
   vec2 centre = 0.5 * (b0 + b1);
   float extent = backprojection_extent(view, r, centre, occluder);
   if (extent <= 0.0 || !backprojection_above_plane(view, r, centre, occluder)) return;
@@ -758,40 +763,103 @@ void backprojection_cell_box(sampler2DArray hierarchy, int layer, GpuShadowView 
   backprojection_hide_patch(r, b0, b1, extent, right, up, low, high);
 }
 
-// Hides the source points behind a row of a cut cell's quarters
-// (backprojection_cell_patch()): those of the lower row (`lower`), the
-// upper one (`upper`) or both, the blocking ones among them (`blocks`:
-// left, right) at the nearest of their depths `depths`.
-void backprojection_cell_row(sampler2DArray hierarchy, int layer, GpuShadowView view,
-                             BackprojectionReceiver r, int level, ivec2 cells, ivec2 c, vec2 a0,
-                             vec2 a1, float h, bvec2 blocks, vec2 depths, bool lower, bool upper,
-                             inout uvec4 low, inout uvec4 high) {
-  if (!any(blocks)) return;
-  vec2 b0 = vec2(blocks.x ? a0.x : a0.x + h, lower ? a0.y : a0.y + h);
-  vec2 b1 = vec2(blocks.y ? a1.x : a0.x + h, upper ? a1.y : a0.y + h);
-  backprojection_cell_box(hierarchy, layer, view, r, level, cells, c, a0, a1, b0, b1,
-                          min(depths.x, depths.y), bvec2(blocks.y, upper), low, high);
+// A cell of the hierarchy as 4 x 4 sub-cells: those in front of the
+// receiver's plane (a row of 4 bits each; rows.x: the lowest), and the
+// depths of the patches over them: over the lower two rows, the upper
+// two, and all four.
+struct BackprojectionCellFront {
+  uvec4 rows;
+  vec2 halves;
+  float whole;
+};
+
+// Which of the 2 x 2 texels from `lower_left` lie in front of the
+// receiver's plane (x: the lower row, y: the upper, 2 bits each), their
+// z-bars and their count added to `sum`.
+uvec2 backprojection_front_texels(sampler2DArray depth_maps, int layer, BackprojectionReceiver r,
+                                  ivec2 lower_left, ivec2 size, inout vec2 sum) {
+  ivec2 t = min(lower_left, size - 2);
+  vec4 g = textureGather(depth_maps, vec3(vec2(t + 1) / vec2(size), float(layer)));
+  BACKPROJECTION_FETCHED(1);
+  vec2 q = vec2(t) + 0.5 - r.center;  // (0, 0)'s centre; gathered: (0, 1), (1, 1), (1, 0), (0, 0)
+  vec4 planes = r.z + vec4(dot(r.gradient, q + vec2(0.0, 1.0)), dot(r.gradient, q + vec2(1.0)),
+                           dot(r.gradient, q + vec2(1.0, 0.0)), dot(r.gradient, q));
+  bvec4 front = lessThan(g, planes);
+  sum += vec2(dot(g, vec4(front)), dot(vec4(front), vec4(1.0)));
+  return uvec2(uint(front.w) | uint(front.z) << 1u, uint(front.x) | uint(front.y) << 1u);
+}
+
+// A cut cell 4 texels wide (level 2), texel by texel: its 16 texels in
+// four gathers, each patch at the mean depth of the texels in front under
+// it.
+BackprojectionCellFront backprojection_cut_texels(sampler2DArray depth_maps, int layer,
+                                                  BackprojectionReceiver r, ivec2 t0,
+                                                  ivec2 size) {
+  vec2 lower = vec2(0.0), upper = vec2(0.0);
+  uvec2 ll = backprojection_front_texels(depth_maps, layer, r, t0, size, lower);
+  uvec2 lr = backprojection_front_texels(depth_maps, layer, r, t0 + ivec2(2, 0), size, lower);
+  uvec2 ul = backprojection_front_texels(depth_maps, layer, r, t0 + ivec2(0, 2), size, upper);
+  uvec2 ur = backprojection_front_texels(depth_maps, layer, r, t0 + 2, size, upper);
+  return BackprojectionCellFront(uvec4(ll | lr << 2u, ul | ur << 2u),
+                                 vec2(lower.x / max(lower.y, 1.0), upper.x / max(upper.y, 1.0)),
+                                 (lower.x + upper.x) / max(lower.y + upper.y, 1.0));
+}
+
+// A cut cell of any other level as its quarters, each in front where its
+// centre texel is (the one up and right of its centre where the quarter
+// is an even number of texels wide), the patches at the nearest of their
+// depths.
+BackprojectionCellFront backprojection_cut_quarters(sampler2DArray depth_maps, int layer,
+                                                    BackprojectionReceiver r, ivec2 t0,
+                                                    int level, ivec2 size) {
+  int half_cell = 1 << (level - 1);
+  ivec2 t = t0 + (half_cell >> 1);
+  ivec2 across = ivec2(half_cell, 0), above = ivec2(0, half_cell);
+  // x: lower left, y: lower right, z: upper left, w: upper right
+  vec4 d = vec4(texelFetch(depth_maps, ivec3(min(t, size - 1), layer), 0).r,
+                texelFetch(depth_maps, ivec3(min(t + across, size - 1), layer), 0).r,
+                texelFetch(depth_maps, ivec3(min(t + above, size - 1), layer), 0).r,
+                texelFetch(depth_maps, ivec3(min(t + half_cell, size - 1), layer), 0).r);
+  BACKPROJECTION_FETCHED(4);
+  vec2 q = vec2(t) + 0.5 - r.center;
+  vec4 planes = r.z + vec4(dot(r.gradient, q), dot(r.gradient, q + vec2(across)),
+                           dot(r.gradient, q + vec2(above)), dot(r.gradient, q + float(half_cell)));
+  bvec4 front = lessThan(d, planes);
+  d = mix(vec4(1.0e30), d, front);
+  uvec4 quarter_rows = uvec4(front) * uvec4(3u, 12u, 3u, 12u);
+  uint lower = quarter_rows.x | quarter_rows.y, upper = quarter_rows.z | quarter_rows.w;
+  vec2 halves = min(d.xz, d.yw);
+  return BackprojectionCellFront(uvec4(lower, lower, upper, upper), halves,
+                                 min(halves.x, halves.y));
 }
 
 // Hides the source points behind cell c of the hierarchy's level level - 1
-// (2^level texels wide, `cells` of them): a cell whose depths all lie in
-// front is a patch at its nearest depth. A cell the receiver's plane cuts
-// (a silhouette with what lies behind the receiver) is read as its four
-// quarters, each blocking where its centre texel lies in front: a patch
-// over each row of quarters where some block, at the nearest of their
-// depths (one over both rows where the two rows block alike), reaching to
-// a neighbour only across a side it touches. Taking the whole cell where
-// its centre texel blocked moved a silhouette by up to half a cell, this
-// by up to a quarter: a straight edge's penumbra read from cells 4 texels
-// wide, binned RMS at worst 0.0146 -> 0.0073. RMSE at 640x360, default
-// scene: spot 0.5 0.0036 -> 0.0030, 1.5 0.0047 -> 0.0040, point 1.5
-// 0.0094 -> 0.0067, sun 8.45 degrees 0.0054 -> 0.0042; foliage, spot 1.5:
-// 0.0202 -> 0.0181. One patch over the box of the blocking quarters,
-// which an L or a diagonal of them fills wholly, gave 0.0045, 0.0079 and
-// 0.0201 there. On llvmpipe, which runs a branch for every cell when one
-// pixel of the eight it shades together takes it, the lighting pass takes
-// 1.37x the time (1.19x with the one box); a GPU reads the quarters and
-// hides the second row's patch only in the cells that need them.
+// (2^level texels wide, `cells` of them). A cell whose depths all lie in
+// front is a patch at the mean depth of its texels (the hierarchy's). A
+// cell the receiver's plane cuts (a silhouette with what lies behind the
+// receiver) is read finer: 4 texels wide, texel by texel, each patch at
+// the mean depth of its texels in front; otherwise as its quarters, each
+// as its centre texel. Over those in front: one patch where the lower
+// and the upper half of the cell hold the same columns (or one holds
+// none), else one over each half, reaching to a neighbour only across a
+// side it touches.
+//
+// The cells' patches at the nearest depth of their texels drew each
+// cell's projection towards the source's centre (docs/rendering.md, "Why
+// cells at their nearest depth widen a penumbra"), and quarters, judged by
+// a texel up and right of their centre, moved a silhouette by up to a
+// quarter of a cell: a straight edge's penumbra read from cells 4 texels
+// wide, binned RMS at worst 0.0046, now 0.0005. RMSE at 640x360, the
+// quarters at the nearest depth -> texel by texel -> at the mean depths:
+// default scene, spot 1.5 0.00394 -> 0.00334 -> 0.00305, point 1.5 0.00432
+// -> 0.00409 -> 0.00384; foliage, spot 1.5 0.0149 -> 0.0153 -> 0.0152,
+// point 1.5 0.0185 -> 0.0186 -> 0.0180; the other cells of the study
+// within 0.0001. The lighting pass took 1.19 and 1.21 times as long
+// (llvmpipe, which runs a branch for all eight pixels it shades together
+// when one takes it). The mean depth where it did not help: a cell 2
+// texels wide, its quarters being its texels (spot 1.5 0.00313), a merged
+// 2 x 2 of cells (0.00335), a neighbour's depth in the reach to it
+// (0.00330); two patches over every cut cell 4 texels wide, 0.00307.
 void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
                                GpuShadowView view, BackprojectionReceiver r, int level,
                                ivec2 cells, ivec2 c, float nearest_extent, inout uvec4 low,
@@ -799,7 +867,7 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
   ivec2 size = textureSize(depth_maps, 0).xy;
   vec2 a0 = vec2(c << level) - r.center;
   vec2 a1 = vec2(mix(ivec2(c + 1) << level, size, equal(c, cells - 1))) - r.center;
-  vec2 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rg;
+  vec3 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rgb;  // nearest, farthest, mean
   BACKPROJECTION_FETCHED(1);
   float plane = r.z + dot(r.gradient, 0.5 * (a0 + a1));
   if (m.x >= plane ||
@@ -807,37 +875,26 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
                                 nearest_extent)) {
     return;
   }
-  // The quarters (x: lower left, y: lower right, z: upper left, w: upper
-  // right): their depths, and which of them block.
-  vec4 d = vec4(m.x);
-  bvec4 blocks = bvec4(true);
-  int half_cell = 1 << (level - 1);
-  float h = float(half_cell);
+  BackprojectionCellFront f = BackprojectionCellFront(uvec4(15u), vec2(m.z), m.z);
   if (m.y >= plane) {
-    // Their centre texels against the plane at each.
-    ivec2 t = (c << level) + (half_cell >> 1);
-    ivec2 across = ivec2(half_cell, 0), above = ivec2(0, half_cell);
-    d = vec4(texelFetch(depth_maps, ivec3(min(t, size - 1), layer), 0).r,
-             texelFetch(depth_maps, ivec3(min(t + across, size - 1), layer), 0).r,
-             texelFetch(depth_maps, ivec3(min(t + above, size - 1), layer), 0).r,
-             texelFetch(depth_maps, ivec3(min(t + half_cell, size - 1), layer), 0).r);
-    BACKPROJECTION_FETCHED(4);
-    vec2 q = vec2(t) + 0.5 - r.center;
-    vec4 planes = r.z + vec4(dot(r.gradient, q), dot(r.gradient, q + vec2(across)),
-                             dot(r.gradient, q + vec2(above)), dot(r.gradient, q + h));
-    blocks = lessThan(d, planes);
+    f = level == 2 ? backprojection_cut_texels(depth_maps, layer, r, c << level, size)
+                   : backprojection_cut_quarters(depth_maps, layer, r, c << level, level, size);
   }
-  d = mix(vec4(m.y), d, blocks);  // the nearest of the blocking ones below
-  // The lower row (or both, alike), then the upper one: written out, not
-  // looped, as llvmpipe ends every loop of a shader invocation after 65535
-  // iterations of them all (include/penumbra/settings.hpp,
-  // kMaxBackprojectionCells).
-  bool alike = all(equal(blocks.xy, blocks.zw));
-  backprojection_cell_row(hierarchy, layer, view, r, level, cells, c, a0, a1, h,
-                          blocks.xy, alike ? min(d.xy, d.zw) : d.xy, true, alike, low, high);
-  if (!alike) {
-    backprojection_cell_row(hierarchy, layer, view, r, level, cells, c, a0, a1, h, blocks.zw,
-                            d.zw, false, true, low, high);
+  // The patches, written out, not looped: llvmpipe ends every loop of a
+  // shader invocation after 65535 iterations of them all
+  // (include/penumbra/settings.hpp, kMaxBackprojectionCells).
+  uint lower = f.rows.x | f.rows.y, upper = f.rows.z | f.rows.w;
+  if ((lower | upper) == 0u) return;
+  bool split = lower != upper && lower != 0u && upper != 0u;
+  uint rows = uint(f.rows.x != 0u) | uint(f.rows.y != 0u) << 1u | uint(f.rows.z != 0u) << 2u |
+              uint(f.rows.w != 0u) << 3u;
+  float sub = 0.25 * float(1 << level);
+  backprojection_cell_box(hierarchy, layer, view, r, level, cells, c, a0, a1, sub,
+                          split ? lower : lower | upper, split ? rows & 3u : rows,
+                          split ? f.halves.x : f.whole, low, high);
+  if (split) {
+    backprojection_cell_box(hierarchy, layer, view, r, level, cells, c, a0, a1, sub, upper,
+                            rows & 12u, f.halves.y, low, high);
   }
 }
 

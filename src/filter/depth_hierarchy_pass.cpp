@@ -9,8 +9,8 @@
 namespace penumbra {
 
 namespace {
-constexpr int kHierarchyGroup = 8;  // local_size_x and _y of depth_hierarchy.comp
-constexpr double kBoundsBytes = 8;  // GL_RG32F
+constexpr int kHierarchyGroup = 8;   // local_size_x and _y of depth_hierarchy.comp
+constexpr double kBoundsBytes = 16;  // GL_RGBA32F
 
 int level_count(int width, int height) {
   return std::bit_width(static_cast<unsigned>(std::max(width, height)));
@@ -35,7 +35,7 @@ TexelTraffic DepthHierarchyPass::texel_traffic(GLenum depth_format, int width, i
 void DepthHierarchyPass::execute(const gl::Texture& depth_maps) {
   int w = std::max(depth_maps.width() / 2, 1), h = std::max(depth_maps.height() / 2, 1);
   const int levels = level_count(w, h);
-  if (gl::ensure_texture_array(hierarchy_, GL_RG32F, w, h, depth_maps.layers(),
+  if (gl::ensure_texture_array(hierarchy_, GL_RGBA32F, w, h, depth_maps.layers(),
                                "depth min/max hierarchy", levels)) {
     // Read with texelFetch at every level, bound without a sampler.
     glTextureParameteri(hierarchy_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
@@ -50,9 +50,10 @@ void DepthHierarchyPass::execute(const gl::Texture& depth_maps) {
     } else {
       from_level_.use();
       glBindImageTexture(IMAGE_OUTPUT, hierarchy_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY,
-                         GL_RG32F);
+                         GL_RGBA32F);
     }
-    glBindImageTexture(IMAGE_OUTPUT_2, hierarchy_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(IMAGE_OUTPUT_2, hierarchy_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_RGBA32F);
     glDispatchCompute(gl::work_groups(w, kHierarchyGroup), gl::work_groups(h, kHierarchyGroup),
                       static_cast<GLuint>(depth_maps.layers()));
     // The next level reads what this one wrote.

@@ -3,8 +3,8 @@
 // and Paulin, "High-Quality Adaptive Soft Shadow Mapping", Eurographics
 // 2007; Schwarz and Stamminger, "Bitmask Soft Shadows", Eurographics
 // 2007): level l holds, per cell of 2^(l + 1) x 2^(l + 1) texels, the
-// nearest and farthest z-bar under it (GL_RG32F; shaders/filter/
-// depth_hierarchy.comp). Built once per map after the depth pass; the
+// nearest and farthest z-bar under it and the mean z-bar (GL_RGBA32F;
+// shaders/filter/depth_hierarchy.comp). Built once per map after the depth pass; the
 // backprojection lookup reads it for the region that can hold a
 // receiver's blockers and for its coarse micro-patches.
 #include <epoxy/gl.h>
@@ -25,7 +25,7 @@ class DepthHierarchyPass {
 
   // Bytes per texel of a width x height depth map (depth_format) moved
   // by execute(): level 0 reads the map once, each level reads the one
-  // below, and every level is written once (8 bytes a texel).
+  // below, and every level is written once (16 bytes a texel).
   static TexelTraffic texel_traffic(GLenum depth_format, int width, int height);
 
   // Frees the hierarchy (execute() makes it again), keeping the program.
