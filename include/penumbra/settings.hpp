@@ -173,12 +173,14 @@ struct ShadowMapSettings {
   // of the blockers' region at most. A region up to this many texels wide
   // is read texel by texel, a wider one from the depth hierarchy's level
   // whose cells it spans in at most this many, so the work per pixel is
-  // bounded. A cell stands at its nearest depth, which pulls its patch
-  // towards the source's centre and widens a penumbra (docs/rendering.md).
-  // Default scene, source 1.5, 320x180, 1024^2 maps: RMSE 0.0246 at 16,
-  // 0.0167 at 32, 0.0115 at 40. 640x360, 2048^2 maps, 256 rays, default
-  // scene's spot at 1.5: 0.0039 at 64, 0.0030 at 96 and 128; the lighting
-  // pass (bench, llvmpipe) 927, 1929 and 2327 ms, PCSS's 125 ms. Virtual
+  // bounded. A cell stands at the mean depth of its texels, and one that a
+  // silhouette cuts is read texel by texel where the cells are 4 texels
+  // wide (docs/rendering.md). Default scene, source 1.5, 320x180, 1024^2
+  // maps: RMSE 0.0246 at 16, 0.0167 at 32, 0.0115 at 40 (cells at their
+  // nearest depth, cut ones as quarters). 640x360, 2048^2 maps, 256 rays,
+  // default scene's spot at 1.5: 0.00305 at 64, 0.00296 at 96, 0.00298 at
+  // 128; the lighting pass (bench, llvmpipe) 1127, 2357 and 2685 ms,
+  // PCSS's 124 ms. Virtual
   // shadow maps read their region texel by texel at a level where it spans
   // at most VIRTUAL_BACKPROJECTION_WINDOW texels.
   int backprojection_cells = 64;
