@@ -180,9 +180,8 @@ struct ShadowMapSettings {
   // nearest depth, cut ones as quarters). 640x360, 2048^2 maps, 256 rays,
   // default scene's spot at 1.5: 0.00305 at 64, 0.00296 at 96, 0.00298 at
   // 128; the lighting pass (bench, llvmpipe) 1127, 2357 and 2685 ms,
-  // PCSS's 124 ms. Virtual
-  // shadow maps read their region texel by texel at a level where it spans
-  // at most VIRTUAL_BACKPROJECTION_WINDOW texels.
+  // PCSS's 124 ms. Virtual shadow maps read their region texel by texel
+  // at a level where it spans at most VIRTUAL_BACKPROJECTION_WINDOW texels.
   int backprojection_cells = 64;
   // Moment soft shadows (vsm, msm, msm16 with --filter sat): the filter
   // width follows the estimated penumbra, at least the fixed --blur.

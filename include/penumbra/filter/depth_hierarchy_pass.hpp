@@ -4,9 +4,9 @@
 // 2007; Schwarz and Stamminger, "Bitmask Soft Shadows", Eurographics
 // 2007): level l holds, per cell of 2^(l + 1) x 2^(l + 1) texels, the
 // nearest and farthest z-bar under it and the mean z-bar (GL_RGBA32F;
-// shaders/filter/depth_hierarchy.comp). Built once per map after the depth pass; the
-// backprojection lookup reads it for the region that can hold a
-// receiver's blockers and for its coarse micro-patches.
+// shaders/filter/depth_hierarchy.comp). Built once per map after the
+// depth pass; the backprojection lookup reads it for the region that can
+// hold a receiver's blockers and for its coarse micro-patches.
 #include <epoxy/gl.h>
 
 #include "penumbra/gl/program.hpp"
