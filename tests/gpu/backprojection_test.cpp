@@ -515,8 +515,11 @@ TEST_F(GpuTest, BackprojectionWeighsTheSourceAboveTheShadingNormalsHorizon) {
 // the part of the source above its horizon run behind its plane as the
 // map sees it: cutting the blockers at that plane dropped the slab, and
 // those pixels read lit where the traced reference reads 0 (before: 0.52 %
-// of 20 785 pixels leaking, largest error 1.0, RMSE 0.0755; now none,
-// 0.391, 0.0181).
+// of 20 785 pixels leaking, largest error 1.0, RMSE 0.0755; then none,
+// 0.391, 0.0181). Along the terminator only a sliver of the source lies
+// above the horizon, and the points spread over the whole square read it
+// from the few of them in it; spread over the sliver's bounding rectangle
+// (backprojection_horizon_window()), RMSE 0.0096, largest error 0.252.
 TEST_F(GpuTest, BackprojectionKeepsTheBlockersOfTheSourceAboveATerminatorsHorizon) {
   const ShadowMetrics m =
       default_scene_close_up({-1.2f, 2.4f, 4.6f}, {-0.2f, 1.6f, 1.3f}, 25.0f, 1.5f);
@@ -526,7 +529,8 @@ TEST_F(GpuTest, BackprojectionKeepsTheBlockersOfTheSourceAboveATerminatorsHorizo
       m.rmse, m.max_error, 100.0 * m.leak_fraction, m.pixels);
   ASSERT_GT(m.pixels, 10000) << "too little of the scene compared";
   EXPECT_EQ(m.leak_fraction, 0.0);
-  EXPECT_LT(m.max_error, 0.5);
+  EXPECT_LT(m.max_error, 0.35);
+  EXPECT_LT(m.rmse, 0.012);
 }
 
 // The default scene's sphere's shadow on the ground, seen from above,
