@@ -1104,7 +1104,13 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
         c1 = min(c1, hi);
         vec2 a0 = vec2(c0 << level) - r.center;
         vec2 a1 = vec2(mix(ivec2(c1 + 1) << level, size, equal(c1, cells - 1))) - r.center;
-        // The receiver's plane at the nearest of the cells' centres.
+        // The receiver's plane at the nearest of the cells' centres: a 2 x 2
+        // whose nearest depth lies past it is left, though a cell of it may
+        // lie before the plane at its own centre (backprojection_cell_patch()
+        // would keep it). Taken at the farthest of the centres, no such cell
+        // is lost, but the receiver's own surface is read cell by cell: the
+        // default scene's spot at 1.5 (1280x720) 0.00320 -> 0.00318, the
+        // lighting pass (640x360) 1145 -> 1756 ms.
         vec2 m0 = a0 + 0.5 * float(1 << level);
         vec2 m1 = max(a1 - 0.5 * float(1 << level), m0);
         float plane = z + dot(gradient, 0.5 * (m0 + m1)) - dot(abs(gradient), 0.5 * (m1 - m0));
