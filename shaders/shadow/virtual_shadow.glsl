@@ -233,10 +233,12 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
 // levels stand for the hierarchy's coarser cells (a level's texel
 // holds the depth at its centre where a cell holds its nearest). If the
 // cut region fits a finer level (at least the receiver's), it is read
-// there, cut again from where the first level's cuts left it. `pixel`
-// seeds the shift of the source's grid.
+// there, cut again from where the first level's cuts left it. `normal`
+// is the triangle's, `shading_normal` the horizon the source is weighed
+// against (docs/comparing.md, "The terminator model"). `pixel` seeds the
+// shift of the source's grid.
 float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLight light,
-                             vec3 world, vec3 normal, ivec2 pixel) {
+                             vec3 world, vec3 normal, vec3 shading_normal, ivec2 pixel) {
   if (r0.view.source_width <= 0.0) return virtual_hard(r0);  // a point source
   const float window = float(VIRTUAL_BACKPROJECTION_WINDOW);
   int level = virtual_search_level(i, r0.level, world, window);
@@ -251,7 +253,7 @@ float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLig
     vec2 gradient = receiver_depth_gradient(view, v.s, normal, params.max_slope);
     ivec2 size = ivec2(virtual_level_texels(level));
     BackprojectionReceiver r =
-        backprojection_receiver(view, v.s, v.z, gradient, normal, normal, size, pixel);
+        backprojection_receiver(view, v.s, v.z, gradient, normal, shading_normal, size, pixel);
     // The cuts (shadow_backprojection()'s).
     float reach_per_k = 0.5 * view.source_width / view.depth_range.z;
     // At most the window (only the coarsest level can be asked for more:
@@ -310,10 +312,11 @@ float virtual_pcf_factor(int i, VirtualReceiver r, GpuShadow params, GpuLight li
 
 // Fraction of light i's light reaching the point through its virtual
 // maps, for SHADOW_TECHNIQUE hard, pcf, pcss or backprojection.
-// `rotation` is the angle 2 pi noise, `noise` the pixel's noise value in
-// [0, 1).
+// `normal` is the triangle's, `shading_normal` the horizon backprojection
+// weighs the source against; `rotation` is the angle 2 pi noise, `noise`
+// the pixel's noise value in [0, 1).
 float virtual_shadow_factor(int i, GpuShadow params, GpuLight light, vec3 world, vec3 normal,
-                            vec2 rotation, float noise) {
+                            vec3 shading_normal, vec2 rotation, float noise) {
   int level = virtual_resident_level(i, world, normal);
   if (level < 0) return 1.0;
   VirtualReceiver r = virtual_receiver(level, params, light, world, normal);
@@ -323,7 +326,7 @@ float virtual_shadow_factor(int i, GpuShadow params, GpuLight light, vec3 world,
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCSS
   return virtual_pcss(i, r, params, light, world, normal, rotation, noise);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
-  return virtual_backprojection(i, r, params, light, world, normal,
+  return virtual_backprojection(i, r, params, light, world, normal, shading_normal,
                                 ivec2(floor(gl_FragCoord.xy)));
 #else
   return virtual_hard(r);
