@@ -547,9 +547,10 @@ TEST_F(GpuTest, VirtualBackprojectionWeighsTheSourceAboveTheShadingNormalsHorizo
   const CloseUp images = default_scene_images({2.0f, 3.6f, 4.2f}, {2.6f, 1.1f, 0.2f}, 22.0f,
                                               s.light_size, "directional", s);
   const ShadowMetrics m = compare_shadow(images.shadow, images.reference);
-  std::printf("torus's terminator under the sun, virtual maps: RMSE %.4f, largest error %.3f of "
-              "%ld pixels\n",
-              m.rmse, m.max_error, m.pixels);
+  std::printf(
+      "torus's terminator under the sun, virtual maps: RMSE %.4f, largest error %.3f of "
+      "%ld pixels\n",
+      m.rmse, m.max_error, m.pixels);
   ASSERT_GT(m.pixels, 20000) << "too little of the scene compared";
   EXPECT_LT(m.rmse, 0.015);
 }
