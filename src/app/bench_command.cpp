@@ -333,12 +333,9 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
              "filter of the vsm, esm, msm, msm16, evsm2 and evsm4 maps: a separable Gaussian, or a "
              "summed-area table",
              filter_names(), OptionGroup::Filter);
-  args.named.shadow_maps =
-      std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, args.shadow.shadow_maps));
-  add_choice(command, "shadow-maps", args.named.shadow_maps,
-             "directional and spot lights: cascades and spot maps, or virtual shadow maps (pages "
-             "allocated and rendered per frame, pool occupancy)",
-             shadow_map_kind_names(), OptionGroup::Lights);
+  add_shadow_maps_option(command, args.shadow, args.named.shadow_maps,
+                         "; the pages allocated and rendered per frame and the pool's "
+                         "occupancy are reported");
   add_shadow_parameters(command, args.shadow);
   add_accumulate_option(command, args.shadow);
   command.footer(examples_footer({

@@ -225,12 +225,8 @@ void add_compare_command_options(CLI::App& command, CompareArgs& args) {
              "reuse a traced reference cached by an earlier run (--no-cache: trace it again)",
              args.cache, OptionGroup::Reference);
   add_render_parameters(command, args.render);
-  args.shadow_maps =
-      std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, args.shadow.shadow_maps));
-  add_choice(command, "shadow-maps", args.shadow_maps,
-             "directional lights: cascades, or virtual shadow maps (hard and pcf; the other "
-             "techniques in the list are skipped)",
-             shadow_map_kind_names(), OptionGroup::Lights);
+  add_shadow_maps_option(command, args.shadow, args.shadow_maps,
+                         "; the other techniques in the list are skipped");
   add_shadow_parameters(command, args.shadow);
   add_accumulate_option(command, args.shadow);
   add_reference_options(command, args.reference);

@@ -117,15 +117,24 @@ void add_shadow_options(CLI::App& app, ShadowSettings& settings, NamedOptions& n
              "filter of the vsm, esm, msm, msm16, evsm2 and evsm4 maps: a separable Gaussian, or a "
              "summed-area table",
              filter_names(), OptionGroup::Filter);
-  named.shadow_maps =
-      std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, settings.shadow_maps));
-  add_choice(app, "shadow-maps", named.shadow_maps,
+  add_shadow_maps_option(app, settings, named.shadow_maps);
+  add_shadow_parameters(app, settings);
+}
+
+void add_shadow_maps_option(CLI::App& app, const ShadowSettings& settings, std::string& name,
+                            const std::string& note) {
+  name = std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, settings.shadow_maps));
+  std::string techniques;
+  for (const auto& [t, technique] : kTechniqueNames) {
+    if (t == Technique::None || !supports_virtual_maps(t)) continue;
+    techniques += (techniques.empty() ? "" : ", ") + std::string(technique);
+  }
+  add_choice(app, "shadow-maps", name,
              "directional and spot lights: cascades and spot maps, or virtual shadow maps (a "
              "clipmap of 16384^2-texel levels, a spot's 16384^2 map with mip levels, in 128^2 "
-             "pages, the pages the image needs rendered into --page-pool-mib; hard, pcf, pcss "
-             "and backprojection)",
+             "pages, the pages the image needs rendered into --page-pool-mib; " +
+                 techniques + note + ")",
              shadow_map_kind_names(), OptionGroup::Lights);
-  add_shadow_parameters(app, settings);
 }
 
 void add_shadow_parameters(CLI::App& app, ShadowSettings& settings) {

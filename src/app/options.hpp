@@ -28,6 +28,10 @@ void add_ssao_options(CLI::App& app, SsaoSettings& settings);
 void add_shadow_parameters(CLI::App& app, ShadowSettings& settings);
 // --accumulate (render and compare only).
 void add_accumulate_option(CLI::App& app, ShadowSettings& settings);
+// --shadow-maps into `name` (its default: settings.shadow_maps); `note` adds
+// what the command does with virtual maps.
+void add_shadow_maps_option(CLI::App& app, const ShadowSettings& settings, std::string& name,
+                            const std::string& note = "");
 void add_render_parameters(CLI::App& app, RenderSettings& settings);
 void add_reference_options(CLI::App& app, ReferenceSettings& settings);
 
