@@ -357,7 +357,7 @@ struct BackprojectionReceiver {
   // The side of the square on the view's x-y plane that the source's grid
   // of points spans: source_width, or for a point light's sphere the
   // wider square around its image seen from the receiver
-  // (backprojection_sphere_source()).
+  // (backprojection_sphere_width()).
   float width;
   bool sphere;          // the source is that image of a sphere
   float scale;          // grid widths per texel and unit of k: depth_range.z / width
@@ -616,14 +616,38 @@ void backprojection_horizon_window(GpuShadowView view, inout BackprojectionRecei
                                    : vec4(0.0, 0.0, 1.0, 1.0);
 }
 
+// A point light's sphere (radius R = source_width / 2, its centre the
+// view's eye) as a receiver at p (view space) sees it: the rays from p
+// that meet it cross the view's plane z = 0 where |l x p| <= R |l - p|
+// (the ray passes within R of the centre), an ellipse stretched along the
+// direction to the receiver. A receiver theta off the view's axis sees it
+// reach R / cos(theta + beta) from the centre, sin beta = R / |p| (the
+// tangent rays in the plane of the axis and p), so the grid spans a square
+// that wide (returned). The disc of radius R on the plane, which stood for
+// it before, hid 23 % too little of a receiver 40 degrees off a face's
+// axis.
+float backprojection_sphere_width(GpuShadowView view, vec3 p) {
+  float distance = length(p);
+  float sin_beta = min(0.5 * view.source_width / distance, 1.0);
+  float cos_theta = -p.z / distance;
+  float sin_theta = length(p.xy) / distance;
+  float cos_sum = cos_theta * sqrt(1.0 - sin_beta * sin_beta) - sin_theta * sin_beta;
+  // A receiver nearly touching the sphere sees it past the plane's
+  // horizon: the grid stops at ten times the sphere's width.
+  return view.source_width / max(cos_sum, 0.1);
+}
+
 // The receiver of lookup s (biased z-bar z, receiver-plane gradient
 // `gradient` per texel, the triangle's world normal `normal`, the shading
 // normal `shading_normal` whose horizon weighs the source, as the traced
-// reference does) in view `view`, whose map is
-// `size` texels wide; `pixel` seeds the shift of the source's grid.
+// reference does) in view `view`, whose map is `size` texels wide, under
+// its source: a sphere (`sphere`: a point light's,
+// backprojection_sphere_width()) or the view's square or disc; `pixel`
+// seeds the shift of the source's grid.
 BackprojectionReceiver backprojection_receiver(GpuShadowView view, ShadowLookup s, float z,
                                                vec2 gradient, vec3 normal,
-                                               vec3 shading_normal, ivec2 size, ivec2 pixel) {
+                                               vec3 shading_normal, bool sphere, ivec2 size,
+                                               ivec2 pixel) {
   BackprojectionReceiver r;
   r.center = s.uv * vec2(size);
   r.z = z;
@@ -644,8 +668,8 @@ BackprojectionReceiver backprojection_receiver(GpuShadowView view, ShadowLookup 
   if (dot(r.n, to_source) <= 0.0) r.gradient = vec2(0.0);
   float d_r = -r.p.z;
   r.receiver = view.perspective != 0 ? 1.0 / d_r : d_r;
-  r.width = view.source_width;
-  r.sphere = false;
+  r.sphere = sphere;
+  r.width = sphere ? backprojection_sphere_width(view, r.p) : view.source_width;
   r.scale = view.depth_range.z / r.width;
   backprojection_horizon_window(view, r);
   r.shift = accumulate_hash(pixel, 977).xy;
@@ -653,31 +677,8 @@ BackprojectionReceiver backprojection_receiver(GpuShadowView view, ShadowLookup 
   return r;
 }
 
-// A point light's sphere (radius R = source_width / 2, its centre the
-// view's eye) as receiver r sees it: the rays from the receiver p that
-// meet it cross the view's plane z = 0 where |l x p| <= R |l - p| (the
-// ray passes within R of the centre), an ellipse stretched along the
-// direction to the receiver. A receiver theta off the view's axis sees it
-// reach R / cos(theta + beta) from the centre, sin beta = R / |p| (the
-// tangent rays in the plane of the axis and p), so the grid spans that
-// square. The disc of radius R on the plane, which stood for it before,
-// hid 23 % too little of a receiver 40 degrees off a face's axis.
-void backprojection_sphere_source(GpuShadowView view, inout BackprojectionReceiver r) {
-  float distance = length(r.p);
-  float sin_beta = min(0.5 * view.source_width / distance, 1.0);
-  float cos_theta = -r.p.z / distance;
-  float sin_theta = length(r.p.xy) / distance;
-  float cos_sum = cos_theta * sqrt(1.0 - sin_beta * sin_beta) - sin_theta * sin_beta;
-  // A receiver nearly touching the sphere sees it past the plane's
-  // horizon: the grid stops at ten times the sphere's width.
-  r.width = view.source_width / max(cos_sum, 0.1);
-  r.sphere = true;
-  r.scale = view.depth_range.z / r.width;
-  backprojection_horizon_window(view, r);
-}
-
 // Whether the grid's point (x, y) on the view's plane lies on the source:
-// for a sphere, |l x p|^2 <= R^2 |l - p|^2 (backprojection_sphere_source();
+// for a sphere, |l x p|^2 <= R^2 |l - p|^2 (backprojection_sphere_width();
 // `d2` = |l - p|^2, `radius2` = R^2); otherwise inside the circle of
 // radius^2 `radius2` (the sun's disc of directions; a square's is
 // infinite).
@@ -974,12 +975,10 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
                             vec3 shading_normal, bool disc, ivec2 pixel, int max_cells) {
   ivec2 size = textureSize(depth_maps, 0).xy;
   float texel = view.depth_range.z;
+  bool sphere = disc && view.perspective != 0 && view.source_width > 0.0;
   disc = disc || view.perspective == 0;
-  BackprojectionReceiver r =
-      backprojection_receiver(view, s, z, gradient, normal, shading_normal, size, pixel);
-  if (disc && view.perspective != 0 && view.source_width > 0.0) {
-    backprojection_sphere_source(view, r);
-  }
+  BackprojectionReceiver r = backprojection_receiver(view, s, z, gradient, normal,
+                                                     shading_normal, sphere, size, pixel);
   float width = r.width;
   gradient = r.gradient;
   if (width <= 0.0) {  // a point source: the hard test

@@ -253,7 +253,8 @@ float virtual_backprojection(int i, VirtualReceiver r0, GpuShadow params, GpuLig
     vec2 gradient = receiver_depth_gradient(view, v.s, normal, params.max_slope);
     ivec2 size = ivec2(virtual_level_texels(level));
     BackprojectionReceiver r =
-        backprojection_receiver(view, v.s, v.z, gradient, normal, shading_normal, size, pixel);
+        backprojection_receiver(view, v.s, v.z, gradient, normal, shading_normal, false, size,
+                                pixel);
     // The cuts (shadow_backprojection()'s).
     float reach_per_k = 0.5 * view.source_width / view.depth_range.z;
     // At most the window (only the coarsest level can be asked for more:

@@ -310,7 +310,7 @@ CloseUp small_scene_images(const Scene& scene, float light_size) {
 }
 
 // A slab 39 degrees off the point light's downward axis, its shadow seen
-// from above (backprojection_sphere_source() and the near cut of
+// from above (backprojection_sphere_width() and the near cut of
 // shadow_backprojection()):
 // - a cube face's corners lie 1.5 times farther from the light than their
 //   axial depth, so the nearest distance the face stores is not its
