@@ -260,6 +260,12 @@ struct ShadowMapSettings {
   // Fraction of each cascade, at its far end, over which it blends into the
   // next one.
   float cascade_blend = 0.1f;
+  // Directional lights: fit each cascade to the geometry its camera slice
+  // sees, plus its blockers' reach through the sun's disc (texels 1.4 to 2
+  // times finer, a size that steps as the camera turns), instead of its
+  // slice's bounding sphere, which does not turn with the camera.
+  // cascades.hpp.
+  bool tight_cascades = false;
   // Point lights: widen each cube face's frustum beyond 90 degrees by the
   // filter's reach plus a margin, in texels, so a filter near a face's edge
   // reads the scene from its own face (no seams between faces).
@@ -708,7 +714,13 @@ struct SwitchParam {
   OptionGroup group = OptionGroup::Unset;
 };
 
-inline constexpr std::array<SwitchParam<ShadowMapSettings>, 3> kShadowSwitchParams{{
+inline constexpr std::array<SwitchParam<ShadowMapSettings>, 4> kShadowSwitchParams{{
+    {"tight-cascades",
+     "directional lights: fit each cascade to the geometry its slice of the view sees, plus "
+     "its blockers' reach through the sun's disc (texels 1.4 to 2 times finer; its size steps "
+     "as the camera turns), instead of its slice's bounding sphere (which does not turn with "
+     "the camera)",
+     &ShadowMapSettings::tight_cascades, OptionGroup::Lights},
     {"guard-band",
      "point lights: widen each cube face's frustum by the filter's reach plus a margin, so "
      "filters near a face's edge read their own face (no seams)",

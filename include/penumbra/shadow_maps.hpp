@@ -3,7 +3,8 @@
 //   - fits each light's shadow views to the engine's camera and casters
 //     (update): a spot light's perspective view, a point light's six cube
 //     faces (widened by a guard band), a directional light's cascades
-//     (stable: snapped to texels, sized by their slice's bounding sphere),
+//     (stable: snapped to texels, sized by their slice's bounding sphere,
+//     or with tight_cascades fitted to what their slice sees),
 //     each view's depth range bounded by what it must shadow;
 //   - owns the maps: a depth-texture array, one layer per view, into which
 //     the engine draws its casters through a callback (render), and the

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <optional>
 
 #include "penumbra/shadow/caster_bounds.hpp"
 #include "shadow/polygon_clip.hpp"
@@ -79,6 +80,110 @@ std::array<HalfSpace, 6> camera_slice(const CameraFrustum& camera, float d0, flo
           sides[3]};
 }
 
+// Texels kept beyond the receivers (and their blockers' reach) when a
+// cascade is fitted to them: filters read up to this far around a lookup
+// (PCF's kernel, a blur's window, the normal offset), and the map reads
+// "lit" past its edge.
+constexpr float kReceiverMarginTexels = 16.0f;
+
+// The square column of light space a cascade covers: centre +- half on
+// the light's x and y (rows 0 and 1 of `light_frame`).
+std::array<HalfSpace, 4> cascade_column(const glm::mat4& light_frame, const glm::vec2& center,
+                                        float half) {
+  const glm::vec4 light_x = matrix_row(light_frame, 0), light_y = matrix_row(light_frame, 1);
+  return {
+      coordinate_at_least(light_x, center.x - half), coordinate_at_most(light_x, center.x + half),
+      coordinate_at_least(light_y, center.y - half), coordinate_at_most(light_y, center.y + half)};
+}
+
+// The column and the camera's slice: where a cascade's receivers are.
+std::array<HalfSpace, 10> column_and_slice(const std::array<HalfSpace, 4>& column,
+                                           const std::array<HalfSpace, 6>& slice) {
+  std::array<HalfSpace, 10> both;
+  std::copy(column.begin(), column.end(), both.begin());
+  std::copy(slice.begin(), slice.end(), both.begin() + 4);
+  return both;
+}
+
+// A cascade's light depths: the nearest geometry in its column (every
+// caster that can shadow its receivers: along a directional light, a
+// shadow's caster lies in the receiver's column) and the farthest of its
+// receivers (the geometry in both the column and the camera's slice).
+struct CascadeDepths {
+  float caster_near = 0.0f;
+  float receiver_far = 0.0f;
+};
+
+CascadeDepths cascade_depths(const CasterHierarchy& bounds, PositionSpan vertices,
+                             std::span<const std::uint32_t> indices, const glm::mat4& light_frame,
+                             const std::array<HalfSpace, 4>& column,
+                             const std::array<HalfSpace, 6>& slice, float half,
+                             const Sphere& slice_sphere) {
+  const glm::vec4 light_depth = -matrix_row(light_frame, 2);
+  // Light depth is minus the frame's z, so boxes inside the column give
+  // exact extremes; boxes across its edges are opened only where they
+  // could widen the range by more than kCascadeDepthTolerance of the
+  // cascade's width.
+  CasterBoundsQuery query{.half_spaces = column,
+                          .world_depth = light_depth,
+                          .frame_depth = glm::vec4(0.0f, 0.0f, -1.0f, 0.0f),
+                          .tolerance = glm::vec2(kCascadeDepthTolerance * 2.0f * half)};
+  // (The receivers' near end is not needed: starting it at -infinity
+  // lets the search skip every box that cannot raise their far end.)
+  float caster_near = 1e30f, column_far = -1e30f, receiver_far = -1e30f, unused = -1e30f;
+  bounds.depth_range(vertices, indices, query, caster_near, column_far);
+  const std::array<HalfSpace, 10> receivers = column_and_slice(column, slice);
+  query.half_spaces = receivers;
+  bounds.depth_range(vertices, indices, query, unused, receiver_far);
+  if (caster_near > column_far) {  // an empty column: the slice's sphere
+    const float c = glm::dot(glm::vec3(light_depth), slice_sphere.center);
+    caster_near = c - slice_sphere.radius;
+    column_far = c + slice_sphere.radius;
+  }
+  return {.caster_near = caster_near,
+          .receiver_far = receiver_far >= caster_near ? receiver_far : column_far};
+}
+
+// The square fitted to a cascade's receivers: the light-space rectangle of
+// the geometry in its slice of the camera's frustum (after Lauritzen et
+// al., "Sample Distribution Shadow Maps", I3D 2011, section 4, from the
+// scene's triangles rather than the depth buffer), widened by the reach of
+// their blockers through the sun's disc and a margin of texels, its
+// half-width rounded up to quantize_cascade_radius()'s grid. Empty where
+// the slice holds no geometry.
+struct ReceiverSquare {
+  glm::vec2 center{0.0f};
+  float half = 0.0f;
+};
+
+std::optional<ReceiverSquare> fit_receivers(const CasterHierarchy& bounds, PositionSpan vertices,
+                                            std::span<const std::uint32_t> indices,
+                                            const glm::mat4& light_frame,
+                                            const std::array<HalfSpace, 4>& column,
+                                            const std::array<HalfSpace, 6>& slice,
+                                            const CascadeDepths& depths, float reach_slope,
+                                            float size) {
+  const std::array<HalfSpace, 10> receivers = column_and_slice(column, slice);
+  // The light's x and y are the frame's: the extremes are exact.
+  CasterBoundsQuery query{.half_spaces = receivers};
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (int axis = 0; axis < 2; ++axis) {
+    query.world_depth = matrix_row(light_frame, axis);
+    query.frame_depth = glm::vec4(0.0f);
+    query.frame_depth[axis] = 1.0f;
+    if (!bounds.depth_range(vertices, indices, query, lo[axis], hi[axis])) return std::nullopt;
+  }
+  // A receiver's blockers lie nearer the light, within the sun's angular
+  // radius of its direction: at most reach_slope times the receivers'
+  // depth span (from the nearest caster) off its column.
+  const float reach = reach_slope * std::max(depths.receiver_far - depths.caster_near, 0.0f);
+  const float extent = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) + reach;
+  // One more texel of margin for the snap, as for the sphere.
+  const float half =
+      quantize_cascade_radius(extent) / (1.0f - 2.0f * (kReceiverMarginTexels + 1.0f) / size);
+  return ReceiverSquare{.center = 0.5f * (lo + hi), .half = half};
+}
+
 }  // namespace
 
 glm::mat4 cascade_light_frame(const Light& light) {
@@ -91,20 +196,23 @@ glm::mat4 cascade_light_frame(const Light& light) {
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
                                          std::span<const float> splits, float blend,
                                          PositionSpan vertices,
-                                         std::span<const std::uint32_t> indices, int map_size) {
+                                         std::span<const std::uint32_t> indices, int map_size,
+                                         bool tight) {
   const CasterHierarchy bounds(vertices, indices, cascade_light_frame(light));
-  return fit_cascade_views(light, camera, splits, blend, vertices, indices, bounds, map_size);
+  return fit_cascade_views(light, camera, splits, blend, vertices, indices, bounds, map_size,
+                           tight);
 }
 
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
                                          std::span<const float> splits, float blend,
                                          PositionSpan vertices,
                                          std::span<const std::uint32_t> indices,
-                                         const CasterHierarchy& bounds, int map_size) {
+                                         const CasterHierarchy& bounds, int map_size, bool tight) {
   const glm::mat4 view = cascade_light_frame(light);
-  const glm::vec4 light_x = matrix_row(view, 0), light_y = matrix_row(view, 1);
-  const glm::vec4 light_depth = -matrix_row(view, 2);
   const float size = static_cast<float>(map_size);
+  // tan of the sun's angular radius: a receiver's blockers lie within this
+  // times their height above it of its column.
+  const float reach_slope = std::tan(0.5f * glm::radians(light.sun_angle));
 
   std::vector<LightView> views;
   for (std::size_t i = 0; i + 1 < splits.size(); ++i) {
@@ -112,40 +220,25 @@ std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum
     const Sphere sphere = frustum_slice_sphere(camera, d0, d1);
     // Half-width h = r + one texel of margin for the snap, 2 h / size a
     // texel: h = r / (1 - 2 / size).
-    const float half = quantize_cascade_radius(sphere.radius) / (1.0f - 2.0f / size);
-    const float texel = 2.0f * half / size;
-    const glm::vec2 center = snap_to_texel(glm::vec2(view * glm::vec4(sphere.center, 1.0f)), texel);
-
-    // Casters: the geometry in the column; receivers: the part of it in
-    // the camera's slice as well.
-    const std::array<HalfSpace, 4> column = {coordinate_at_least(light_x, center.x - half),
-                                             coordinate_at_most(light_x, center.x + half),
-                                             coordinate_at_least(light_y, center.y - half),
-                                             coordinate_at_most(light_y, center.y + half)};
+    float half = quantize_cascade_radius(sphere.radius) / (1.0f - 2.0f / size);
+    float texel = 2.0f * half / size;
+    glm::vec2 center = snap_to_texel(glm::vec2(view * glm::vec4(sphere.center, 1.0f)), texel);
     const std::array<HalfSpace, 6> slice = camera_slice(camera, d0, d1);
-    std::array<HalfSpace, 10> column_slice;
-    std::copy(column.begin(), column.end(), column_slice.begin());
-    std::copy(slice.begin(), slice.end(), column_slice.begin() + 4);
-    // Light depth is minus the frame's z, so boxes inside the column give
-    // exact extremes; boxes across its edges are opened only where they
-    // could widen the range by more than kCascadeDepthTolerance of the
-    // cascade's width.
-    CasterBoundsQuery query{.half_spaces = column,
-                            .world_depth = light_depth,
-                            .frame_depth = glm::vec4(0.0f, 0.0f, -1.0f, 0.0f),
-                            .tolerance = glm::vec2(kCascadeDepthTolerance * 2.0f * half)};
-    // (The receivers' near end is not needed: starting it at -infinity
-    // lets the search skip every box that cannot raise their far end.)
-    float caster_near = 1e30f, column_far = -1e30f, receiver_far = -1e30f, unused = -1e30f;
-    bounds.depth_range(vertices, indices, query, caster_near, column_far);
-    query.half_spaces = column_slice;
-    bounds.depth_range(vertices, indices, query, unused, receiver_far);
-    if (caster_near > column_far) {  // an empty column: the slice's sphere
-      const float c = glm::dot(glm::vec3(light_depth), sphere.center);
-      caster_near = c - sphere.radius;
-      column_far = c + sphere.radius;
+    CascadeDepths depths = cascade_depths(bounds, vertices, indices, view,
+                                          cascade_column(view, center, half), slice, half, sphere);
+    if (tight) {
+      if (const std::optional<ReceiverSquare> fit =
+              fit_receivers(bounds, vertices, indices, view, cascade_column(view, center, half),
+                            slice, depths, reach_slope, size)) {
+        half = fit->half;
+        texel = 2.0f * half / size;
+        center = snap_to_texel(fit->center, texel);
+        depths = cascade_depths(bounds, vertices, indices, view, cascade_column(view, center, half),
+                                slice, half, sphere);
+      }
     }
-    const float far_end = receiver_far >= caster_near ? receiver_far : column_far;
+    const float far_end = depths.receiver_far;
+    const float caster_near = depths.caster_near;
     // Pad so that no surface touches a clip plane, and the lookups of the
     // receivers at the far end (moved by the normal offset, read over a
     // filter's window) stay inside.

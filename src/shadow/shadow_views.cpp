@@ -8,9 +8,13 @@ ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& cam
                                     const ShadowMapSettings& settings) {
   ShadowViewInputs inputs;
   inputs.light = light;
-  // The source's size widens penumbrae, not views: a new size refits nothing.
+  // The source's size widens penumbrae, not views: a new size refits
+  // nothing, but for cascades fitted to their receivers, which keep the
+  // reach of the sun's disc around them.
   inputs.light.light_size = Light{}.light_size;
-  inputs.light.sun_angle = Light{}.sun_angle;
+  if (light.type != LightType::Directional || !settings.tight_cascades) {
+    inputs.light.sun_angle = Light{}.sun_angle;
+  }
   inputs.map_size = settings.map_size;
   switch (light.type) {
     case LightType::Spot:
@@ -23,6 +27,7 @@ ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& cam
       inputs.cascades = settings.cascades;
       inputs.cascade_lambda = settings.cascade_lambda;
       inputs.cascade_blend = settings.cascade_blend;
+      inputs.tight_cascades = settings.tight_cascades;
       break;
   }
   return inputs;
@@ -53,7 +58,7 @@ LightShadowViews fit_shadow_views(const ShadowViewInputs& inputs, PositionSpan v
                                                        inputs.cascades, inputs.cascade_lambda);
       const CasterHierarchy& bounds = cache.bounds(vertices, indices, cascade_light_frame(light));
       result.views = fit_cascade_views(light, camera, splits, inputs.cascade_blend, vertices,
-                                       indices, bounds, inputs.map_size);
+                                       indices, bounds, inputs.map_size, inputs.tight_cascades);
       result.cascade_end.assign(splits.begin() + 1, splits.end());
       result.cascade_start = splits.front();
       break;

@@ -55,7 +55,8 @@ bool parameter_applies(std::string_view name, const ShadowSettings& shadow,
   if (name == "soft-two-moment-blockers") return moments && shadow.soft;
   if (name == "light-size") return sized_source && positional;
   if (name == "sun-angle") return sized_source && directional;
-  if (name == "cascades" || name == "cascade-lambda" || name == "cascade-blend") {
+  if (name == "cascades" || name == "cascade-lambda" || name == "cascade-blend" ||
+      name == "tight-cascades") {
     return shadowed && directional;
   }
   if (name == "guard-band") return shadowed && has_light(lights, LightType::Point);

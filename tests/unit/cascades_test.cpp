@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "penumbra/shadow/cascades.hpp"
@@ -119,8 +120,8 @@ TEST(Cascades, EveryCascadeHoldsItsSlice) {
     }
     for (const glm::vec3& corner : slice_corners(camera, start, splits[i + 1])) {
       const glm::vec4 clip = views[i].view_projection * glm::vec4(corner, 1.0f);
-      EXPECT_LE(std::abs(clip.x), 1.0f) << "cascade " << i;
-      EXPECT_LE(std::abs(clip.y), 1.0f) << "cascade " << i;
+      ASSERT_LE(std::abs(clip.x), 1.0f) << "cascade " << i;
+      ASSERT_LE(std::abs(clip.y), 1.0f) << "cascade " << i;
     }
   }
 }
@@ -129,28 +130,95 @@ TEST(Cascades, SubTexelCameraMovesShiftTheMapsByWholeTexels) {
   const int size = 512;
   const CameraFrustum before = test_camera({0, 6, 10}, {0, -0.5f, -1});
   const std::vector<float> splits = cascade_splits(0.3f, 40.0f, 3, 0.75f);
-  const std::vector<LightView> a =
-      fit_cascade_views(sun(), before, splits, 0.1f, ground_vertices(), kQuad, size);
-  for (const glm::vec3& move :
-       {glm::vec3(0.003f, 0, 0), glm::vec3(0, 0.002f, -0.004f), glm::vec3(0.05f, 0.01f, 0.02f)}) {
-    CameraFrustum after = before;
-    after.position += move;
-    // A turn of the camera too: the sphere does not follow orientation.
-    after.forward = glm::normalize(before.forward + glm::vec3(0.01f, 0.0f, 0.0f));
-    const std::vector<LightView> b =
-        fit_cascade_views(sun(), after, splits, 0.1f, ground_vertices(), kQuad, size);
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      ASSERT_FLOAT_EQ(a[i].texel_world, b[i].texel_world);
-      // The depth bounds are snapped too: the stored depths do not change.
-      EXPECT_EQ(a[i].z0, b[i].z0) << "cascade " << i;
-      EXPECT_EQ(a[i].z1, b[i].z1) << "cascade " << i;
-      // The map's origin, in texels of light space: whole-texel shifts only.
-      const glm::vec4 origin_a = glm::inverse(a[i].view_projection) * glm::vec4(-1, -1, 0, 1);
-      const glm::vec4 origin_b = glm::inverse(b[i].view_projection) * glm::vec4(-1, -1, 0, 1);
-      const glm::vec2 la = glm::vec2(a[i].view * origin_a), lb = glm::vec2(b[i].view * origin_b);
-      const glm::vec2 shift = (lb - la) / a[i].texel_world;
-      EXPECT_NEAR(shift.x, std::round(shift.x), 1e-2f) << "cascade " << i;
-      EXPECT_NEAR(shift.y, std::round(shift.y), 1e-2f) << "cascade " << i;
+  for (const bool tight : {false, true}) {
+    const std::vector<LightView> a =
+        fit_cascade_views(sun(), before, splits, 0.1f, ground_vertices(), kQuad, size, tight);
+    for (const glm::vec3& move :
+         {glm::vec3(0.003f, 0, 0), glm::vec3(0, 0.002f, -0.004f), glm::vec3(0.05f, 0.01f, 0.02f)}) {
+      CameraFrustum after = before;
+      after.position += move;
+      // A turn of the camera too, but for the tight fit: the sphere does
+      // not follow orientation.
+      if (!tight) after.forward = glm::normalize(before.forward + glm::vec3(0.01f, 0.0f, 0.0f));
+      const std::vector<LightView> b =
+          fit_cascade_views(sun(), after, splits, 0.1f, ground_vertices(), kQuad, size, tight);
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        ASSERT_FLOAT_EQ(a[i].texel_world, b[i].texel_world);
+        // The depth bounds are snapped too: the stored depths do not change.
+        EXPECT_EQ(a[i].z0, b[i].z0) << "cascade " << i;
+        EXPECT_EQ(a[i].z1, b[i].z1) << "cascade " << i;
+        // The map's origin, in texels of light space: whole-texel shifts only.
+        const glm::vec4 origin_a = glm::inverse(a[i].view_projection) * glm::vec4(-1, -1, 0, 1);
+        const glm::vec4 origin_b = glm::inverse(b[i].view_projection) * glm::vec4(-1, -1, 0, 1);
+        const glm::vec2 la = glm::vec2(a[i].view * origin_a), lb = glm::vec2(b[i].view * origin_b);
+        const glm::vec2 shift = (lb - la) / a[i].texel_world;
+        EXPECT_NEAR(shift.x, std::round(shift.x), 1e-2f) << "cascade " << i;
+        EXPECT_NEAR(shift.y, std::round(shift.y), 1e-2f) << "cascade " << i;
+      }
+    }
+  }
+}
+
+// Tight, fitted to their receivers, the cascades' texels are finer than the
+// slices' spheres give, and each map holds every receiver with the reach
+// of its blockers through the sun's disc around it: a ground seen from
+// under a roof 8 units above it, whose every point the roof can shadow
+// from up to tan(angle / 2) times its height off the point's column.
+TEST(Cascades, TightCascadesHoldTheirReceiversAndTheirBlockersReach) {
+  const int size = 512;
+  const CameraFrustum camera = test_camera({0, 3, 10}, {0, -0.5f, -1});
+  const std::vector<float> splits = cascade_splits(camera.near_plane, camera.far_plane, 3, 0.75f);
+  const float blend = 0.1f, roof = 8.0f;
+  std::vector<Vertex> vertices = ground_vertices(20.0f, 0.0f);
+  for (const Vertex& v : ground_vertices(60.0f, 0.0f)) {
+    vertices.push_back(v);
+    vertices.back().position.y = roof;
+  }
+  std::vector<std::uint32_t> indices = kQuad;
+  for (std::uint32_t k : kQuad) indices.push_back(k + 4);
+  const glm::mat4 camera_view =
+      glm::lookAt(camera.position, camera.position + camera.forward, glm::vec3(0, 1, 0));
+  const float ky = std::tan(0.5f * camera.fov_y), kx = ky * camera.aspect;
+  for (const float angle : {0.5f, 10.0f}) {
+    Light light = sun();
+    light.sun_angle = angle;
+    const std::vector<LightView> fitted =
+        fit_cascade_views(light, camera, splits, blend, vertices, indices, size, true);
+    const std::vector<LightView> stable =
+        fit_cascade_views(light, camera, splits, blend, vertices, indices, size);
+    ASSERT_EQ(fitted.size(), 3u);
+    // The roof's height above the ground in light depth, and the reach.
+    const float height = roof / -glm::normalize(light.direction).y;
+    const float reach = std::tan(0.5f * glm::radians(angle)) * height;
+    const glm::mat4 light_frame = cascade_light_frame(light);
+    const glm::vec3 light_x = glm::vec3(glm::row(light_frame, 0));
+    const glm::vec3 light_y = glm::vec3(glm::row(light_frame, 1));
+    for (std::size_t i = 0; i < fitted.size(); ++i) {
+      // (A wide sun's reach may make a small slice's square the larger.)
+      if (angle < 1.0f) {
+        EXPECT_LT(fitted[i].texel_world, 0.8f * stable[i].texel_world) << "cascade " << i;
+      }
+      const float d0 = cascade_slice_start(splits, blend, i), d1 = splits[i + 1];
+      int receivers = 0;
+      for (float x = -20.0f; x <= 20.0f; x += 0.125f) {
+        for (float z = -20.0f; z <= 20.0f; z += 0.125f) {
+          const glm::vec3 p(x, 0.0f, z);
+          const glm::vec3 e = glm::vec3(camera_view * glm::vec4(p, 1.0f));
+          const float depth = -e.z;
+          if (depth < d0 || depth > d1 || std::abs(e.x) > kx * depth ||
+              std::abs(e.y) > ky * depth) {
+            continue;
+          }
+          ++receivers;
+          for (const glm::vec3& off :
+               {reach * light_x, -reach * light_x, reach * light_y, -reach * light_y}) {
+            const glm::vec4 clip = fitted[i].view_projection * glm::vec4(p + off, 1.0f);
+            ASSERT_LE(std::abs(clip.x), 1.0f) << "cascade " << i << ", angle " << angle;
+            ASSERT_LE(std::abs(clip.y), 1.0f) << "cascade " << i << ", angle " << angle;
+          }
+        }
+      }
+      EXPECT_GT(receivers, 100) << "cascade " << i;
     }
   }
 }

@@ -11,6 +11,11 @@
 // camera's near and far planes; and its origin is snapped to whole texels
 // in light space, so a camera move slides the map by whole texels and
 // every texel keeps sampling the same scene points.
+//
+// Tight cascades (--tight-cascades) cover only the geometry their slice
+// sees (the receivers), widened by the reach of its blockers through the
+// sun's disc: texels typically 1.4 to 2 times finer, with the same
+// rounding and snapping, but a size that steps as the camera turns.
 #include <glm/glm.hpp>
 #include <span>
 #include <vector>
@@ -57,10 +62,14 @@ glm::vec2 snap_to_texel(const glm::vec2& p, float texel);
 float cascade_slice_start(std::span<const float> splits, float blend, std::size_t i);
 
 // The orthographic views of the cascades between the splits (splits.size()
-// - 1 of them). Each is square, its half-width the quantized radius of the
-// sphere of its slice (from cascade_slice_start() to its split) widened by
-// one texel for the snapping, and looks down the light's direction with a
-// fixed orientation.
+// - 1 of them). Each is square and looks down the light's direction with a
+// fixed orientation. Its half-width: the quantized radius of the sphere of
+// its slice (from cascade_slice_start() to its split) widened by one texel
+// for the snapping; or, if `tight` and the slice sees any geometry: half
+// the wider side of that geometry's light-space rectangle plus its
+// blockers' reach (the tangent of the light's sun_angle / 2 times the
+// cascade's depth span), rounded up to the radius grid and widened by 16
+// texels for the filters and one for the snapping.
 //
 // Depth bounds per cascade, so precision does not depend on the scene's
 // size (after Lauritzen et al., "Sample Distribution Shadow Maps", I3D
@@ -79,12 +88,14 @@ std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum
                                          std::span<const float> splits, float blend,
                                          PositionSpan vertices,
                                          std::span<const std::uint32_t> indices,
-                                         const CasterHierarchy& bounds, int map_size);
+                                         const CasterHierarchy& bounds, int map_size,
+                                         bool tight = false);
 // The same, building the bounds for this one fit.
 std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum& camera,
                                          std::span<const float> splits, float blend,
                                          PositionSpan vertices,
-                                         std::span<const std::uint32_t> indices, int map_size);
+                                         std::span<const std::uint32_t> indices, int map_size,
+                                         bool tight = false);
 
 // The frame the cascades of a directional light are fitted in: the light's
 // rotation, looking down its direction (origin at the world's).

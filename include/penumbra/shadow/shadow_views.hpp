@@ -37,6 +37,7 @@ struct ShadowViewInputs {
   int cascades = 0;
   float cascade_lambda = 0.0f;
   float cascade_blend = 0.0f;
+  bool tight_cascades = false;
   bool operator==(const ShadowViewInputs&) const = default;
 };
 ShadowViewInputs shadow_view_inputs(const Light& light, const CameraFrustum& camera,
