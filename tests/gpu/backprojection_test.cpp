@@ -364,6 +364,18 @@ TEST_F(GpuTest, VirtualMapsSoftenTheSunsShadowByTheSettingsSunAngle) {
   EXPECT_LT(e.backprojection, 0.01);
 }
 
+// Backprojection's shadow factor of `scene` (the first light's) with the
+// settings `s`, and the traced reference of `rays` a pixel.
+CloseUp backprojection_images(const Scene& scene, int width, int height, ShadowSettings s,
+                              int rays) {
+  Renderer renderer(scene);
+  RenderSettings rs = testing::small_frame(width, height);
+  s.technique = Technique::Backprojection;
+  TracedReference reference = traced_reference(renderer, rs, s, rays, "");
+  renderer.render(rs, s);
+  return {renderer.read_view(), std::move(reference.image)};
+}
+
 // Backprojection and the traced reference (256 rays) on a close-up of the
 // default scene, 200 x 150, under its spot light, or under `light`
 // (--light's choice: a point light where the spot is), with a source
@@ -376,13 +388,15 @@ CloseUp default_scene_images(glm::vec3 camera, glm::vec3 target, float fov_y_deg
   scene.camera.position = camera;
   scene.camera.target = target;
   scene.camera.fov_y_degrees = fov_y_degrees;
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(200, 150);
-  s.technique = Technique::Backprojection;
   s.light_size = light_size;
-  TracedReference reference = traced_reference(renderer, rs, s, 256, "");
-  renderer.render(rs, s);
-  return {renderer.read_view(), std::move(reference.image)};
+  return backprojection_images(scene, 200, 150, s, 256);
+}
+
+// The same from the default scene's own camera, 320 x 180, 64 rays.
+CloseUp default_view_images(const std::string& light, const ShadowSettings& s) {
+  Scene scene = *builtin_scene("default");
+  apply_light_choice(light, scene);
+  return backprojection_images(scene, 320, 180, s, 64);
 }
 
 // llvmpipe ends every loop of a shader invocation once they have run
@@ -393,23 +407,16 @@ CloseUp default_scene_images(glm::vec3 camera, glm::vec3 target, float fov_y_deg
 // merged cell's cells and for each row of a cut cell's quarters, 5 of the
 // umbra's 760 pixels read lit (at 640x360 RMSE 0.0202 against 0.0068).
 TEST_F(GpuTest, BackprojectionReadsEveryCellOfAWideRegion) {
-  Scene scene = *builtin_scene("default");
-  apply_light_choice("point", scene);
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(320, 180);
   ShadowSettings s;
-  s.technique = Technique::Backprojection;
   s.light_size = 3.0f;
   s.backprojection_cells = 128;
-  const TracedReference reference = traced_reference(renderer, rs, s, 64, "");
-  renderer.render(rs, s);
-  const Image image = renderer.read_view();
+  const CloseUp images = default_view_images("point", s);
   int umbra = 0, lit_in_umbra = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-    const float* ref = &reference.image.rgba[i];
+  for (std::size_t i = 0; i < images.shadow.rgba.size(); i += 4) {
+    const float* ref = &images.reference.rgba[i];
     if (ref[3] <= 0.0f || ref[0] > 0.05f) continue;  // judged and in the umbra
     ++umbra;
-    if (image.rgba[i] > 0.5f) ++lit_in_umbra;
+    if (images.shadow.rgba[i] > 0.5f) ++lit_in_umbra;
   }
   std::printf("umbra pixels %d, read lit %d\n", umbra, lit_in_umbra);
   ASSERT_GT(umbra, 100);
@@ -584,25 +591,18 @@ TEST_F(GpuTest, BackprojectionReadsTheCellsOfAWideRegionAtTheirMeanDepth) {
 // 15 (at 1280 x 720, 298 of 10 970 over 0.02, now 94; read texel by
 // texel, at backprojection_cells 128, 43).
 TEST_F(GpuTest, BackprojectionLeavesNoCrackBetweenCellsInAnUmbra) {
-  Scene scene = *builtin_scene("default");
-  apply_light_choice("directional", scene);
-  Renderer renderer(scene);
-  RenderSettings rs = testing::small_frame(320, 180);
   ShadowSettings s;
-  s.technique = Technique::Backprojection;
   s.sun_angle = 8.452f;
   s.tight_cascades = true;
-  const TracedReference reference = traced_reference(renderer, rs, s, 64, "");
-  renderer.render(rs, s);
-  const Image image = renderer.read_view();
+  const CloseUp images = default_view_images("directional", s);
   int umbra = 0, cracked = 0;
   double light = 0.0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-    const float* ref = &reference.image.rgba[i];
+  for (std::size_t i = 0; i < images.shadow.rgba.size(); i += 4) {
+    const float* ref = &images.reference.rgba[i];
     if (ref[3] <= 0.0f || ref[0] > 0.0f) continue;  // judged and every ray blocked
     ++umbra;
-    light += image.rgba[i];
-    if (image.rgba[i] > 0.02f) ++cracked;
+    light += images.shadow.rgba[i];
+    if (images.shadow.rgba[i] > 0.02f) ++cracked;
   }
   std::printf("umbra pixels %d: %.4f lit on average, %d over 0.02\n", umbra, light / umbra,
               cracked);
