@@ -8,7 +8,15 @@
 //
 // in a fragment shader: the fraction of light `light`'s light (1 = lit)
 // that reaches the point, for the technique the maps were rendered for
-// (chosen at run time from the block: no recompile when it changes). The
+// (chosen at run time from the block: no recompile when it changes). On a
+// smooth-shaded surface, pass the triangle's normal and the interpolated
+// one it is shaded with:
+//
+//   float penumbra_shadow(int light, vec3 world_position, vec3 world_normal,
+//                         vec3 shading_normal)
+//
+// (backprojection weighs its source above the shading normal's horizon,
+// as penumbra's renderer and traced reference do). The
 // entry points penumbra_shadow_<technique>() do the same for one
 // technique (they must match the maps' technique); the *_at() forms take
 // the pixel for the per-pixel sample rotation instead of gl_FragCoord, for
@@ -63,10 +71,13 @@ layout(binding = PENUMBRA_SHADOW_FILTERED_UNIT) uniform sampler2DArray penumbra_
 layout(binding = PENUMBRA_SHADOW_SAT_UNIT) uniform usampler2DArray penumbra_sat;
 
 // Fraction of the light that reaches the point according to shadow view v.
-// `pixel` seeds backprojection's jitter; `noise` in [0, 1) is the
-// pixel's noise value, `rotation` the angle 2 pi noise.
+// `normal`: the surface's own (its triangle's), for the biases and the
+// receiver's plane; `shading_normal`: the one it is shaded with, whose
+// horizon weighs backprojection's source. `pixel` seeds backprojection's
+// jitter; `noise` in [0, 1) is the pixel's noise value, `rotation` the
+// angle 2 pi noise.
 float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec3 normal,
-                           vec2 pixel, float noise, vec2 rotation) {
+                           vec3 shading_normal, vec2 pixel, float noise, vec2 rotation) {
   GpuShadowView view = penumbra_block.views[v];
   GpuShadow params = penumbra_block.params;
   vec3 to_light = direction_to_light(light, world);
@@ -95,7 +106,8 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
     vec2 gradient = receiver_depth_gradient(view, s, normal, params.max_slope);
     if (technique == TECHNIQUE_BACKPROJECTION) {
       return shadow_backprojection(penumbra_depth, penumbra_filtered, v, view, s, z, gradient,
-                                   normal, normal, int(light.position_type.w) == LIGHT_POINT,
+                                   normal, shading_normal,
+                                   int(light.position_type.w) == LIGHT_POINT,
                                    ivec2(floor(pixel)), params.backprojection_cells);
     }
     // PCSS: the cone the light's source really subtends (its width is the
@@ -125,7 +137,7 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
 // Fraction of light `light_index`'s light that reaches the point, for
 // `technique` (TECHNIQUE_*); `pixel` seeds the per-pixel sample rotation.
 float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, vec3 normal,
-                                   vec2 pixel) {
+                                   vec3 shading_normal, vec2 pixel) {
   if (technique == TECHNIQUE_NONE || light_index < 0 || light_index >= penumbra_block.counts.x) {
     return 1.0;
   }
@@ -147,58 +159,76 @@ float penumbra_shadow_technique_at(int technique, int light_index, vec3 world, v
   int count = selected.blend > 0.0 ? 2 : 1;
   for (int k = 0; k < count; ++k) {
     lit[k] = penumbra_view_shadow(technique, k == 0 ? selected.view : selected.next, light, world,
-                                  normal, pixel, noise, rotation);
+                                  normal, shading_normal, pixel, noise, rotation);
   }
   return count == 2 ? mix(lit[0], lit[1], selected.blend) : lit[0];
 }
 
 float penumbra_shadow_at(int light, vec3 world_position, vec3 world_normal, vec2 pixel) {
   return penumbra_shadow_technique_at(penumbra_block.counts.z, light, world_position, world_normal,
-                                      pixel);
+                                      world_normal, pixel);
+}
+// A smooth-shaded surface: its triangle's normal `world_normal` and the
+// interpolated normal it is shaded with, `shading_normal`, whose horizon
+// weighs backprojection's source as the traced reference does
+// (docs/comparing.md, "The terminator model"); the other techniques read
+// world_normal alone.
+float penumbra_shadow_at(int light, vec3 world_position, vec3 world_normal, vec3 shading_normal,
+                         vec2 pixel) {
+  return penumbra_shadow_technique_at(penumbra_block.counts.z, light, world_position, world_normal,
+                                      shading_normal, pixel);
 }
 
 #ifndef PENUMBRA_NO_FRAGMENT_ENTRY_POINTS
 float penumbra_shadow(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_at(light, world_position, world_normal, gl_FragCoord.xy);
 }
+float penumbra_shadow(int light, vec3 world_position, vec3 world_normal, vec3 shading_normal) {
+  return penumbra_shadow_at(light, world_position, world_normal, shading_normal, gl_FragCoord.xy);
+}
 float penumbra_shadow_hard(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_HARD, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_pcf(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_PCF, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_pcss(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_PCSS, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_backprojection(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_BACKPROJECTION, light, world_position,
-                                      world_normal, gl_FragCoord.xy);
+                                      world_normal, world_normal, gl_FragCoord.xy);
+}
+float penumbra_shadow_backprojection(int light, vec3 world_position, vec3 world_normal,
+                                     vec3 shading_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_BACKPROJECTION, light, world_position,
+                                      world_normal, shading_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_vsm(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_VSM, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_esm(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_ESM, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_evsm2(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_EVSM2, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_evsm4(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_EVSM4, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_msm(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_MSM, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 float penumbra_shadow_msm16(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_MSM16, light, world_position, world_normal,
-                                      gl_FragCoord.xy);
+                                      world_normal, gl_FragCoord.xy);
 }
 #endif

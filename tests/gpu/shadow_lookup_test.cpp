@@ -149,7 +149,8 @@ constexpr int kSize = 96;
 // above with its own shader, which writes the lookup's shadow factor.
 class EngineFrame {
  public:
-  explicit EngineFrame(const ShadowBindings& bindings) : bindings_(bindings), maps_(bindings) {
+  explicit EngineFrame(const ShadowBindings& bindings, const std::string& fragment = kSceneFragment)
+      : bindings_(bindings), maps_(bindings) {
     glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, 6 * sizeof(float));
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
     for (GLuint attribute : {0u, 1u}) {
@@ -161,7 +162,7 @@ class EngineFrame {
     std::string log;
     program_ = testing::link_program(
         testing::kEngineSceneVertex,
-        insert_shadow_lookup("#version 450 core\n" + kSceneFragment, bindings), log);
+        insert_shadow_lookup("#version 450 core\n" + fragment, bindings), log);
     EXPECT_NE(program_, 0u) << log;
     framebuffer_.attach_color(0, color_);
     framebuffer_.attach_depth(depth_);
@@ -318,6 +319,60 @@ TEST_F(GpuTest, ShadowMapsDrawTheSameShadowsAtBindingsTheEngineChose) {
     }
     EXPECT_LT(worst, 1e-4f);
   }
+}
+
+// The entry point with a shading normal: backprojection weighs its source
+// above that normal's horizon, as penumbra's renderer does on smooth-shaded
+// meshes. Given the surface's own normal twice it draws what the
+// three-argument form draws; given a normal tilted so that its horizon
+// crosses the light's source, the penumbrae change (their lit part is the
+// part of the source above the horizon that the casters leave) and the
+// fully lit and fully shadowed pixels do not.
+TEST_F(GpuTest, ShadowLookupWeighsBackprojectionsSourceAboveTheShadingNormalsHorizon) {
+  auto fragment = [](const std::string& shading) {
+    return "in vec3 v_world;\n"
+           "in vec3 v_normal;\n"
+           "layout(location = 0) out vec4 out_lit;\n"
+           "void main() {\n"
+           "  vec3 n = normalize(v_normal);\n"
+           "  out_lit = vec4(penumbra_shadow(0, v_world, n, " +
+           shading +
+           "));\n"
+           "}\n";
+  };
+  ShadowSettings settings;
+  settings.technique = Technique::Backprojection;
+  settings.map_size = 256;
+  settings.light_size = 1.5f;
+  const std::vector<float> own = EngineFrame({}).draw(settings);
+  const std::vector<float> twice = EngineFrame({}, fragment("n")).draw(settings);
+  // Square to the direction towards the spot light (from the ground's
+  // middle towards (3, 7, 2)), and up.
+  const std::vector<float> tilted =
+      EngineFrame({}, fragment("normalize(vec3(-0.88, 0.38, 0.0))")).draw(settings);
+  save(own, "backprojection-own-normal");
+  save(tilted, "backprojection-tilted-shading-normal");
+  int penumbra = 0, settled = 0;
+  double moved = 0.0;
+  float settled_worst = 0.0f, twice_worst = 0.0f;
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    twice_worst = std::max(twice_worst, std::abs(twice[i] - own[i]));
+    if (own[i] < 0.0f) continue;  // no surface
+    if (own[i] > 0.05f && own[i] < 0.95f) {
+      ++penumbra;
+      moved += std::abs(tilted[i] - own[i]);
+    } else if (own[i] == 0.0f || own[i] == 1.0f) {
+      ++settled;
+      settled_worst = std::max(settled_worst, std::abs(tilted[i] - own[i]));
+    }
+  }
+  std::printf("penumbra pixels %d: mean change %.3f; lit and umbra pixels %d: largest %.4f\n",
+              penumbra, penumbra ? moved / penumbra : 0.0, settled, settled_worst);
+  EXPECT_EQ(twice_worst, 0.0f);
+  ASSERT_GT(penumbra, 50);
+  EXPECT_GT(moved / penumbra, 0.05);
+  EXPECT_GT(settled, kSize * kSize / 2);
+  EXPECT_EQ(settled_worst, 0.0f);
 }
 
 TEST_F(GpuTest, ShadowMapsRefuseBindingsThatCoincideOrPassTheLimits) {
