@@ -178,9 +178,10 @@ std::optional<ReceiverSquare> fit_receivers(const CasterHierarchy& bounds, Posit
   // depth span (from the nearest caster) off its column.
   const float reach = reach_slope * std::max(depths.receiver_far - depths.caster_near, 0.0f);
   const float extent = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) + reach;
-  // One more texel of margin for the snap, as for the sphere.
-  const float half =
-      quantize_cascade_radius(extent) / (1.0f - 2.0f * (kReceiverMarginTexels + 1.0f) / size);
+  // One more texel of margin for the snap, as for the sphere (and an
+  // eighth of the map at most for the filters, on the smallest maps).
+  const float margin = std::min(kReceiverMarginTexels, size / 8.0f) + 1.0f;
+  const float half = quantize_cascade_radius(extent) / (1.0f - 2.0f * margin / size);
   return ReceiverSquare{.center = 0.5f * (lo + hi), .half = half};
 }
 

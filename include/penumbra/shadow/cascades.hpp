@@ -69,7 +69,8 @@ float cascade_slice_start(std::span<const float> splits, float blend, std::size_
 // the wider side of that geometry's light-space rectangle plus its
 // blockers' reach (the tangent of the light's sun_angle / 2 times the
 // cascade's depth span), rounded up to the radius grid and widened by 16
-// texels for the filters and one for the snapping.
+// texels (an eighth of the map at most) for the filters and one for the
+// snapping.
 //
 // Depth bounds per cascade, so precision does not depend on the scene's
 // size (after Lauritzen et al., "Sample Distribution Shadow Maps", I3D
