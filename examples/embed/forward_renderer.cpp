@@ -38,8 +38,14 @@ layout(location = 7) uniform vec3 u_light_color[2];
 
 void main() {
   vec3 n = normalize(v_normal);
+  // The triangle's own normal, which the shadow map's flat triangles agree
+  // with, from the world position's screen derivatives (on the side of
+  // the interpolated one): penumbra's lookup biases and clips by it and
+  // weighs the light's source above the interpolated normal's horizon.
+  vec3 face = normalize(cross(dFdx(v_world), dFdy(v_world)));
+  if (dot(face, n) < 0.0) face = -face;
   if (u_shadow_of >= 0) {
-    out_color = vec4(vec3(penumbra_shadow(u_shadow_of, v_world, n)), 1.0);
+    out_color = vec4(vec3(penumbra_shadow(u_shadow_of, v_world, face, n)), 1.0);
     return;
   }
   vec3 albedo = vec3(0.75);
@@ -57,7 +63,7 @@ void main() {
     }
     float n_dot_l = dot(n, to_light);
     if (n_dot_l <= 0.0) continue;
-    color += penumbra_shadow(i, v_world, n) * n_dot_l * irradiance * albedo;
+    color += penumbra_shadow(i, v_world, face, n) * n_dot_l * irradiance * albedo;
   }
   color = color / (1.0 + color);  // Reinhard
   out_color = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
