@@ -161,6 +161,7 @@ nlohmann::json run_json(const PassTimes& run, int frames, bool timer, const Band
   j["shadow_map_size"] = s.map_size;
   j["shadow_maps"] = std::string(enum_name<ShadowMapKind>(kShadowMapKindNames, s.shadow_maps));
   j["page_pool_mib"] = s.page_pool_mib;
+  j["tight_cascades"] = s.tight_cascades;
   j["shadow_msaa"] = depth_samples(s);  // the samples drawn per texel
   j["fused"] = is_filterable(s.technique) && uses_fused_filter(s);
   j["shadow_mips"] = uses_shadow_mips(s);

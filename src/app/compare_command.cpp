@@ -498,6 +498,7 @@ json json_report(const CompareArgs& args, const Scene& scene, const TracedRefere
       {"shadow_msaa", args.shadow.shadow_msaa},
       {"shadow_maps", args.shadow_maps},
       {"page_pool_mib", args.shadow.page_pool_mib},
+      {"tight_cascades", args.shadow.tight_cascades},
       // The judged light's own source size, under --light-size/--sun-angle.
       {"light_size",
        with_source_size(scene.lights[static_cast<std::size_t>(light_index)], args.shadow)

@@ -29,6 +29,8 @@ nlohmann::json compare_sun(const std::string& name, const std::string& options) 
 TEST(TightCascades, MoreTexelsOnEveryPixelAndLessErrorUnderTheSun) {
   const nlohmann::json stable = compare_sun("stable", "");
   const nlohmann::json tight = compare_sun("tight", " --tight-cascades");
+  EXPECT_FALSE(stable["tight_cascades"].get<bool>());
+  EXPECT_TRUE(tight["tight_cascades"].get<bool>());
   const double stable_density = stable["texel_density"]["judged"]["median"].get<double>();
   const double tight_density = tight["texel_density"]["judged"]["median"].get<double>();
   // An area ratio: squares 1.4 times narrower give about 2 times the texels.
