@@ -17,10 +17,10 @@ using penumbra::testing::run;
 
 nlohmann::json compare_sun(const std::string& name, const std::string& options) {
   const std::string json_path = out_path("tight-cascades-" + name + ".json");
-  const Result r = run(
-      "compare --scene default --light directional --technique hard,pcss --width 320 "
-      "--height 180 --shadow-map-size 512 --reference-samples 64 --cache-dir " +
-      out_path("tight-cascades-cache") + " --json " + json_path + options);
+  const Result r =
+      run("compare --scene default --light directional --technique hard,pcss --width 320 "
+          "--height 180 --shadow-map-size 512 --reference-samples 64 --cache-dir " +
+          out_path("tight-cascades-cache") + " --json " + json_path + options);
   EXPECT_EQ(r.status, 0) << r.err;
   std::ifstream in(json_path);
   return nlohmann::json::parse(in);
