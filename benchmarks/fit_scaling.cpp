@@ -5,15 +5,17 @@
 // (caster_bounds.hpp), on a height field of about 4 thousand and of about
 // 4 million triangles. Prints each median and their ratio; the claim is a
 // ratio within 2. The clipping of every triangle that the bounds replace
-// is timed too, for a few moves.
+// is timed too, for a few moves. With "tight", the cascades are fitted to
+// the geometry their slices see (--tight-cascades).
 //
-// Usage: fit_scaling [MOVES]   (default 64 camera positions)
+// Usage: fit_scaling [MOVES] [tight]   (default 64 camera positions)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
+#include <string_view>
 #include <vector>
 
 #include "penumbra/shadow/caster_bounds.hpp"
@@ -92,7 +94,7 @@ struct Fit {
   float zmin = 1e30f, zmax = 0.0f;  // the camera's nearest and farthest depth
 };
 
-Timing measure(int n, int moves, int clip_moves) {
+Timing measure(int n, int moves, int clip_moves, bool tight) {
   const HeightField field = height_field(n);
   Timing t;
   t.triangles = field.indices.size() / 3;
@@ -102,6 +104,7 @@ Timing measure(int n, int moves, int clip_moves) {
   ShadowSettings settings;
   settings.cascades = 4;
   settings.map_size = 2048;
+  settings.tight_cascades = tight;
   const PositionSpan positions(field.vertices);
 
   CasterBoundsCache cache;
@@ -162,13 +165,14 @@ Timing measure(int n, int moves, int clip_moves) {
 
 int main(int argc, char** argv) {
   const int moves = argc > 1 ? std::max(1, std::atoi(argv[1])) : 64;
+  const bool tight = argc > 2 && std::string_view(argv[2]) == "tight";
   std::printf(
-      "fit_scaling: 4 cascades (map 2048) and the camera's planes, refitted at %d camera "
+      "fit_scaling: 4 %scascades (map 2048) and the camera's planes, refitted at %d camera "
       "positions\n",
-      moves);
+      tight ? "tight " : "", moves);
   // 2 n^2 triangles: 45 -> 4,050; 1415 -> 4,004,450.
-  const Timing small = measure(45, moves, 16);
-  const Timing large = measure(1415, moves, 3);
+  const Timing small = measure(45, moves, 16, tight);
+  const Timing large = measure(1415, moves, 3, tight);
   for (const Timing& t : {small, large}) {
     std::printf(
         "%9zu triangles: bounds built once %8.1f ms; per move %7.3f ms (clipping every triangle: "

@@ -225,12 +225,12 @@ std::vector<LightView> fit_cascade_views(const Light& light, const CameraFrustum
     float texel = 2.0f * half / size;
     glm::vec2 center = snap_to_texel(glm::vec2(view * glm::vec4(sphere.center, 1.0f)), texel);
     const std::array<HalfSpace, 6> slice = camera_slice(camera, d0, d1);
-    CascadeDepths depths = cascade_depths(bounds, vertices, indices, view,
-                                          cascade_column(view, center, half), slice, half, sphere);
+    const std::array<HalfSpace, 4> sphere_column = cascade_column(view, center, half);
+    CascadeDepths depths =
+        cascade_depths(bounds, vertices, indices, view, sphere_column, slice, half, sphere);
     if (tight) {
-      if (const std::optional<ReceiverSquare> fit =
-              fit_receivers(bounds, vertices, indices, view, cascade_column(view, center, half),
-                            slice, depths, reach_slope, size)) {
+      if (const std::optional<ReceiverSquare> fit = fit_receivers(
+              bounds, vertices, indices, view, sphere_column, slice, depths, reach_slope, size)) {
         half = fit->half;
         texel = 2.0f * half / size;
         center = snap_to_texel(fit->center, texel);
