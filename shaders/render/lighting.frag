@@ -161,10 +161,11 @@ float filtered_mean_depth(vec4 m) {
 
 #if SHADOW_TECHNIQUE >= TECHNIQUE_VSM && SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
 // Moment soft shadows (shaders/shadow/soft_moments.glsl) of view v.
-float soft_moment_shadow(int v, ShadowLookup s, float z, GpuLight light, vec3 normal,
-                         vec2 rotation) {
+float soft_moment_shadow(int v, ShadowLookup s, float z, GpuLight light, vec3 world, vec3 normal,
+                         vec3 shading_normal, vec2 rotation) {
   return shadow_soft_moments(shadow_sat, shadow_depth, SHADOW_TECHNIQUE, MSM_QUANTIZED != 0,
-                             shadow_params, v, shadow_views[v], s, z, light, normal, rotation);
+                             shadow_params, v, shadow_views[v], s, z, light, world, normal,
+                             shading_normal, rotation);
 }
 #endif
 
@@ -324,7 +325,8 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
 #else
   // PCSS models the light's source itself: the cone it really subtends.
   OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
-  return pcss_lit_fraction(v, s, z, gradient, cone, rotation);
+  return pcss_lit_fraction(v, s, z, blocker_plane_gradient(gradient, normal, to_light),
+                           occluder_cone_above(cone, view, world, shading_normal), rotation);
 #endif
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
@@ -338,7 +340,7 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
   return lit;
 #elif SHADOW_TECHNIQUE >= TECHNIQUE_VSM
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
-  float lit = soft_moment_shadow(v, s, z, light, normal, rotation);
+  float lit = soft_moment_shadow(v, s, z, light, world, normal, shading_normal, rotation);
 #else
   float lit = filtered_lit_fraction(filtered_map(v, s.uv, duv_dx, duv_dy), z, s.texel_depth);
 #endif

@@ -18,15 +18,19 @@ float penumbra_world_width(GpuShadowView view, float d_receiver, float d_blocker
                                : gap * view.source_width;
 }
 
+// Width, in texels, of the cone from a receiver at depth d_receiver to the
+// light's source where it crosses depth d: the map region where blockers
+// at depth d can appear.
+float cone_width_at(GpuShadowView view, float d_receiver, float d) {
+  float world = view.source_width * max(d_receiver - d, 0.0);
+  if (view.perspective != 0) return world / max(d_receiver, 1e-6) / (d * view.depth_range.z);
+  return world / view.depth_range.z;
+}
+
 // Width, in texels, of the map region where blockers of the receiver can
 // appear: the cone from the receiver to the light's source, widest at the
 // nearest geometry z0 (Fernando's search over the light's extent on the
 // near plane).
 float blocker_search_width(GpuShadowView view, float d_receiver) {
-  float z0 = view.depth_range.x;
-  if (view.perspective != 0) {
-    float world = view.source_width * max(d_receiver - z0, 0.0) / max(d_receiver, 1e-6);
-    return world / (z0 * view.depth_range.z);
-  }
-  return view.source_width * max(d_receiver - z0, 0.0) / view.depth_range.z;
+  return cone_width_at(view, d_receiver, view.depth_range.x);
 }

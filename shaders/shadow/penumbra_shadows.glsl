@@ -73,7 +73,8 @@ layout(binding = PENUMBRA_SHADOW_SAT_UNIT) uniform usampler2DArray penumbra_sat;
 // Fraction of the light that reaches the point according to shadow view v.
 // `normal`: the surface's own (its triangle's), for the biases and the
 // receiver's plane; `shading_normal`: the one it is shaded with, whose
-// horizon weighs backprojection's source. `pixel` seeds backprojection's
+// horizon weighs the source (backprojection) or bounds its blockers
+// (PCSS, occluder_cone_above()). `pixel` seeds backprojection's
 // jitter; `noise` in [0, 1) is the pixel's noise value, `rotation` the
 // angle 2 pi noise.
 float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec3 normal,
@@ -113,7 +114,9 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
     // PCSS: the cone the light's source really subtends (its width is the
     // settings' light_size, or sun_angle for the sun).
     OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
-    return shadow_pcss(penumbra_depth, penumbra_compare, v, view, s, z, gradient, cone, rotation,
+    return shadow_pcss(penumbra_depth, penumbra_compare, v, view, s, z,
+                       blocker_plane_gradient(gradient, normal, to_light),
+                       occluder_cone_above(cone, view, world, shading_normal), rotation,
                        noise, params.pcss_blocker_samples, params.pcss_filter_samples);
   }
   if (!filterable) return 1.0;
@@ -122,7 +125,7 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
   float lit;
   if (sat && params.soft_moments != 0) {
     lit = shadow_soft_moments(penumbra_sat, penumbra_depth, technique, quantized, params, v, view,
-                              s, z, light, normal, rotation);
+                              s, z, light, world, normal, shading_normal, rotation);
   } else {
     // The SAT's (2W + 1)^2 box centred on the lookup point, or the filtered map.
     vec4 m = sat ? sat_square_average(penumbra_sat, v,

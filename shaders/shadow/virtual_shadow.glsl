@@ -82,6 +82,8 @@ SHADOW_BLOCKER_SEARCH_DEFINE(virtual_blocker_search, sampler2DArray, virtual_map
                              virtual_map_gather)
 BACKPROJECTION_TEXEL_PATCHES_DEFINE(virtual_backprojection_patches, sampler2DArray,
                                     virtual_map_texels, virtual_map_gather)
+BLOCKERS_ABOVE_HORIZON_DEFINE(virtual_blockers_above_horizon, sampler2DArray,
+                              virtual_blocker_search)
 
 // The nearest and farthest z-bar over texels [first, last] of level
 // `level` (a superset: the cells of 16 x 16 texels covering them); a
@@ -197,19 +199,27 @@ float virtual_hard(VirtualReceiver r) {
 // that crosses a level border is filtered at the same level on both sides
 // wherever it is wider than the finer level's window.
 float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, vec3 world,
-                   vec3 normal, vec2 rotation, float noise) {
+                   vec3 normal, vec3 shading_normal, vec2 rotation, float noise) {
   const float window = float(VIRTUAL_PCSS_WINDOW);
   VirtualReceiver search = virtual_receiver(virtual_search_level(i, r.level, world, window), params,
                                             light, world, normal);
   float d_receiver = linear_depth_of(search.view, search.s.depth);
   float search_width =
       min(virtual_search_texels(r.level, search.level, world), float(MAX_PCF_WIDTH));
-  vec2 gradient = receiver_depth_gradient(search.view, search.s, normal, params.max_slope);
-  OccluderCone cone = occluder_cone(light, search.view, search.s.position, 0.0);
-  vec2 found = virtual_blocker_search(
-      virtual_pool, search.level, search.view, search.s.uv * float(virtual_level_texels(search.level)), search.z,
-      gradient, cone, rotation, search_width,
-      pcss_search_sample_count(search_width, params.pcss_blocker_samples));
+  vec2 gradient = blocker_plane_gradient(
+      receiver_depth_gradient(search.view, search.s, normal, params.max_slope), normal,
+      direction_to_light(light, world));
+  OccluderCone cone =
+      occluder_cone_above(occluder_cone(light, search.view, search.s.position, 0.0), search.view,
+                          world, shading_normal);
+  vec2 center = search.s.uv * float(virtual_level_texels(search.level));
+  vec2 found = virtual_blockers_above_horizon(
+      virtual_pool, search.level, search.view, center, d_receiver, search.z, gradient, cone,
+      rotation,
+      virtual_blocker_search(virtual_pool, search.level, search.view, center, search.z, gradient,
+                             cone, rotation, search_width, vec3(1.0, 0.0, -1.0),
+                             pcss_search_sample_count(search_width, params.pcss_blocker_samples)),
+      params.pcss_blocker_samples);
   if (found.x == 0.0) return 1.0;  // nothing between the receiver and the light
   float d_blocker = linear_depth_of(search.view, found.y / found.x);
   float world_width = penumbra_world_width(search.view, d_receiver, d_blocker);
@@ -325,7 +335,7 @@ float virtual_shadow_factor(int i, GpuShadow params, GpuLight light, vec3 world,
 #if SHADOW_TECHNIQUE == TECHNIQUE_PCF
   return virtual_pcf_factor(i, r, params, light, world, normal, rotation);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_PCSS
-  return virtual_pcss(i, r, params, light, world, normal, rotation, noise);
+  return virtual_pcss(i, r, params, light, world, normal, shading_normal, rotation, noise);
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   return virtual_backprojection(i, r, params, light, world, normal, shading_normal,
                                 ivec2(floor(gl_FragCoord.xy)));

@@ -49,9 +49,9 @@ struct GroundAndBoxes : testing::EngineMesh {
 // The engine: its scene, its depth and colour targets, its own shader with
 // the lookup inserted; a frame draws the depth, the shadow maps, then the
 // shadow factor per pixel (-1 where no surface is).
-class Engine {
+class VirtualMapsEngine {
  public:
-  Engine() {
+  VirtualMapsEngine() {
     glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, 6 * sizeof(float));
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
     for (GLuint attribute : {0u, 1u}) {
@@ -69,9 +69,9 @@ class Engine {
     framebuffer_.set_draw_buffers(1);
     framebuffer_.check_complete();
   }
-  ~Engine() { glDeleteProgram(program_); }
-  Engine(const Engine&) = delete;
-  Engine& operator=(const Engine&) = delete;
+  ~VirtualMapsEngine() { glDeleteProgram(program_); }
+  VirtualMapsEngine(const VirtualMapsEngine&) = delete;
+  VirtualMapsEngine& operator=(const VirtualMapsEngine&) = delete;
 
   std::vector<float> frame(ShadowMaps& maps, const ShadowMapSettings& settings) {
     const glm::vec3 eye(0.0f, 6.0f, 8.0f);
@@ -168,7 +168,7 @@ ShadowMapSettings hard_settings(ShadowMapKind kind) {
 }
 
 TEST_F(GpuTest, EngineVirtualShadowMapsAgreeWithCascades) {
-  Engine engine;
+  VirtualMapsEngine engine;
   ShadowMaps cascaded;
   const std::vector<float> cascades =
       engine.frame(cascaded, hard_settings(ShadowMapKind::Cascades));
