@@ -85,7 +85,7 @@ OccluderCone occluder_cone(GpuLight light, GpuShadowView view, vec3 receiver,
 // terminator model"): a surface below that plane hides none of the source
 // points that count. Past a terminator (the source's centre below the
 // horizon) the map shows the receiver's own body in front of it, below
-// that plane (blockers_above_horizon() in pcss.glsl). The direction
+// that plane (HORIZON_BLOCKER_SEARCH_DEFINE in pcss.glsl). The direction
 // axis + t (t across the axis, within tan_half_angle of it) lies above the
 // horizon where dot(n_across, t) > -n_axis: a segment of the cone's disc
 // (OccluderCone::segment).
@@ -155,20 +155,20 @@ vec3 texel_point(GpuShadowView view, ivec2 texel, ivec2 size, float d, OccluderC
 }
 
 // Whether the surface stored in texel `texel` of view v (at relative depth
-// `occluder_depth`) can block the cone's light (x), and whether it also
-// lies above the receiver's horizon (y; occluder_cone_above()).
-bvec2 texel_occludes_above(GpuShadowView view, ivec2 texel, ivec2 size, float occluder_depth,
-                           OccluderCone cone) {
-  float d = linear_depth_of(view, occluder_depth);
-  vec3 p = texel_point(view, texel, size, d, cone);
-  // Half a texel's diagonal at the occluder: the texel stands for all of it.
-  float slack = 0.75 * shadow_texel_world(view, d);
-  bool inside = inside_occluder_cone(cone, p, slack);
-  return bvec2(inside, inside && dot(cone.horizon.xyz, p) + cone.horizon.w > 0.0);
-}
-
-// Whether the surface stored in texel `texel` can block the cone's light.
+// `occluder_depth`) can block the cone's light.
 bool texel_occludes(GpuShadowView view, ivec2 texel, ivec2 size, float occluder_depth,
                     OccluderCone cone) {
-  return texel_occludes_above(view, texel, size, occluder_depth, cone).x;
+  float d = linear_depth_of(view, occluder_depth);
+  // Half a texel's diagonal at the occluder: the texel stands for all of it.
+  return inside_occluder_cone(cone, texel_point(view, texel, size, d, cone),
+                              0.75 * shadow_texel_world(view, d));
+}
+
+// The same, and lying above the receiver's horizon (occluder_cone_above()).
+bool texel_occludes_above(GpuShadowView view, ivec2 texel, ivec2 size, float occluder_depth,
+                          OccluderCone cone) {
+  float d = linear_depth_of(view, occluder_depth);
+  vec3 p = texel_point(view, texel, size, d, cone);
+  return inside_occluder_cone(cone, p, 0.75 * shadow_texel_world(view, d)) &&
+         dot(cone.horizon.xyz, p) + cone.horizon.w > 0.0;
 }

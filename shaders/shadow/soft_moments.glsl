@@ -86,7 +86,7 @@ float shadow_soft_moments(usampler2DArray sat, sampler2DArray depth_maps, int te
   // 1.5-wide source, RMSE 0.0362 -> 0.0366 (0.5 wide: 0.0186 -> 0.0191),
   // the cost of the early outs the sparse search gets wrong. Where the
   // receiver's horizon cuts the source, only the surfaces above it count
-  // (blockers_above_horizon()): the default scene's box face past grazing
+  // (HORIZON_BLOCKER_SEARCH_DEFINE in pcss.glsl): the default scene's box face past grazing
   // under the 8.45-degree sun read dark (msm's RMSE there 0.0740 -> 0.0259
   // at 1280x720).
   // Only where the penumbra widens the kernel past the fixed --blur: the
@@ -104,10 +104,8 @@ float shadow_soft_moments(usampler2DArray sat, sampler2DArray depth_maps, int te
                              direction_to_light(light, origin));
   const float square_corners = 1.41421356;
   // occluder_cone() covers a square source's corners already.
-  vec4 search = cone_blocker_search(depth_maps, v, view, s, z, gradient, cone, rotation,
-                                    params.pcss_blocker_samples, square_corners);
-  if (blockers_above_horizon(depth_maps, v, view, s, z, gradient, cone, rotation, search,
-                             params.pcss_blocker_samples)
+  if (cone_blocker_search(depth_maps, v, view, s, z, gradient, cone, rotation,
+                          params.pcss_blocker_samples, square_corners)
           .x == 0.0) {
     // Past a terminator only the texels above the horizon count.
     bool cut = cone.segment.z > -1.0;
@@ -120,10 +118,9 @@ float shadow_soft_moments(usampler2DArray sat, sampler2DArray depth_maps, int te
         ivec2 texel = clamp(middle + ivec2(x, y), ivec2(0), size - 1);
         float occluder = texelFetch(depth_maps, ivec3(texel, v), 0).r;
         vec2 offset = vec2(texel) + 0.5 - center;
-        bvec2 occludes = occluder < z + dot(gradient, offset)
-                             ? texel_occludes_above(view, texel, size, occluder, cone)
-                             : bvec2(false);
-        blocked = cut ? occludes.y : occludes.x;
+        blocked = occluder < z + dot(gradient, offset) &&
+                  (cut ? texel_occludes_above(view, texel, size, occluder, cone)
+                       : texel_occludes(view, texel, size, occluder, cone));
       }
     }
     if (!blocked) return 1.0;

@@ -82,7 +82,7 @@ SHADOW_BLOCKER_SEARCH_DEFINE(virtual_blocker_search, sampler2DArray, virtual_map
                              virtual_map_gather)
 BACKPROJECTION_TEXEL_PATCHES_DEFINE(virtual_backprojection_patches, sampler2DArray,
                                     virtual_map_texels, virtual_map_gather)
-BLOCKERS_ABOVE_HORIZON_DEFINE(virtual_blockers_above_horizon, sampler2DArray,
+HORIZON_BLOCKER_SEARCH_DEFINE(virtual_horizon_blocker_search, sampler2DArray,
                               virtual_blocker_search)
 
 // The nearest and farthest z-bar over texels [first, last] of level
@@ -213,13 +213,9 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
       occluder_cone_above(occluder_cone(light, search.view, search.s.position, 0.0), search.view,
                           world, shading_normal);
   vec2 center = search.s.uv * float(virtual_level_texels(search.level));
-  vec2 found = virtual_blockers_above_horizon(
-      virtual_pool, search.level, search.view, center, d_receiver, search.z, gradient, cone,
-      rotation,
-      virtual_blocker_search(virtual_pool, search.level, search.view, center, search.z, gradient,
-                             cone, rotation, search_width, vec3(1.0, 0.0, -1.0),
-                             pcss_search_sample_count(search_width, params.pcss_blocker_samples)),
-      params.pcss_blocker_samples);
+  vec2 found = virtual_horizon_blocker_search(virtual_pool, search.level, search.view, center,
+                                              d_receiver, search.z, gradient, cone, rotation,
+                                              search_width, params.pcss_blocker_samples);
   if (found.x == 0.0) return 1.0;  // nothing between the receiver and the light
   float d_blocker = linear_depth_of(search.view, found.y / found.x);
   float world_width = penumbra_world_width(search.view, d_receiver, d_blocker);
