@@ -201,6 +201,11 @@ float penumbra_shadow_pcss(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_PCSS, light, world_position, world_normal,
                                       world_normal, gl_FragCoord.xy);
 }
+float penumbra_shadow_pcss(int light, vec3 world_position, vec3 world_normal,
+                           vec3 shading_normal) {
+  return penumbra_shadow_technique_at(TECHNIQUE_PCSS, light, world_position, world_normal,
+                                      shading_normal, gl_FragCoord.xy);
+}
 float penumbra_shadow_backprojection(int light, vec3 world_position, vec3 world_normal) {
   return penumbra_shadow_technique_at(TECHNIQUE_BACKPROJECTION, light, world_position,
                                       world_normal, world_normal, gl_FragCoord.xy);
