@@ -96,7 +96,11 @@ OccluderCone occluder_cone_above(OccluderCone c, GpuShadowView view, vec3 origin
   float n_axis = dot(n, c.axis);
   vec3 across = n - n_axis * c.axis;
   float cut = -n_axis / max(c.tan_half_angle * length(across), 1e-6);
-  vec2 axis = length(across.xy) > 0.0 ? normalize(across.xy) : vec2(1.0, 0.0);
+  // The map's direction of `across` at the receiver: a perspective map
+  // divides x and y by -z.
+  vec2 along_map = view.perspective != 0 ? -c.apex.z * across.xy + c.apex.xy * across.z
+                                         : across.xy;
+  vec2 axis = length(along_map) > 0.0 ? normalize(along_map) : vec2(1.0, 0.0);
   c.segment = vec3(axis, clamp(cut, -1.0, 1.0));
   return c;
 }
