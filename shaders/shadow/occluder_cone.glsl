@@ -33,7 +33,8 @@ struct OccluderCone {
   vec4 horizon;
   // The part of the source above that horizon as the cone's cross-section
   // shows it at every depth: the side axis . m >= cut of the unit disc
-  // (axis in the view's x, y: the map's); cut -1: the whole disc.
+  // (axis: a direction in the map at the receiver); cut -1: the whole
+  // disc.
   vec3 segment;  // (axis, cut)
 };
 

@@ -86,9 +86,9 @@ float shadow_soft_moments(usampler2DArray sat, sampler2DArray depth_maps, int te
   // 1.5-wide source, RMSE 0.0362 -> 0.0366 (0.5 wide: 0.0186 -> 0.0191),
   // the cost of the early outs the sparse search gets wrong. Where the
   // receiver's horizon cuts the source, only the surfaces above it count
-  // (HORIZON_BLOCKER_SEARCH_DEFINE in pcss.glsl): the default scene's box face past grazing
-  // under the 8.45-degree sun read dark (msm's RMSE there 0.0740 -> 0.0259
-  // at 1280x720).
+  // (HORIZON_BLOCKER_SEARCH_DEFINE in pcss.glsl): the default scene's box
+  // face past grazing under the 8.45-degree sun read dark (msm's RMSE
+  // there 0.0740 -> 0.0259 at 1280x720).
   // Only where the penumbra widens the kernel past the fixed --blur: the
   // fixed filter is the anti-aliasing every receiver gets (with no source
   // size, --soft is exactly it).
