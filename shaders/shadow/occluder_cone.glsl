@@ -121,11 +121,9 @@ vec2 blocker_plane_gradient(vec2 gradient, vec3 normal, vec3 to_light) {
 // Point p of the square [-1, 1]^2 taken into the segment (axis, cut) of the
 // unit disc (OccluderCone::segment): along its axis [-1, 1] -> [cut, 1],
 // across scaled by the chord's half-length there over the unit circle's
-// at p, so a set spread over the disc stays spread over the segment. The
-// whole disc (cut -1) keeps p.
+// at p, so a set spread over the disc stays spread over the segment.
 vec2 disc_segment_point(vec3 segment, vec2 p) {
   float cut = segment.z;
-  if (cut <= -1.0) return p;
   vec2 axis = segment.xy, side = vec2(-axis.y, axis.x);
   float u = dot(p, axis);
   float along = cut + (1.0 - cut) * 0.5 * (clamp(u, -1.0, 1.0) + 1.0);

@@ -80,7 +80,8 @@ HORIZON_BLOCKER_SEARCH_DEFINE(shadow_horizon_blocker_search, sampler2DArray,
                               shadow_blocker_search)
 
 // The blocker search over the region the light's source covers at the
-// near plane (blocker_search_width()). `widen` scales the search region
+// near plane (blocker_search_width()), with the cone's horizon
+// (shadow_horizon_blocker_search()). `widen` scales the search region
 // (and the caller's cone should follow).
 vec2 cone_blocker_search(sampler2DArray depth_maps, int v, GpuShadowView view, ShadowLookup s,
                          float z, vec2 gradient, OccluderCone cone, vec2 rotation, int max_samples,

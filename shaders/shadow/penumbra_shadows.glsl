@@ -16,7 +16,8 @@
 //                         vec3 shading_normal)
 //
 // (backprojection weighs its source above the shading normal's horizon,
-// as penumbra's renderer and traced reference do). The
+// and pcss and the moments' --soft count only the blockers above it, as
+// penumbra's renderer and traced reference do). The
 // entry points penumbra_shadow_<technique>() do the same for one
 // technique (they must match the maps' technique); the *_at() forms take
 // the pixel for the per-pixel sample rotation instead of gl_FragCoord, for
@@ -174,8 +175,9 @@ float penumbra_shadow_at(int light, vec3 world_position, vec3 world_normal, vec2
 // A smooth-shaded surface: its triangle's normal `world_normal` and the
 // interpolated normal it is shaded with, `shading_normal`, whose horizon
 // weighs backprojection's source as the traced reference does
-// (docs/comparing.md, "The terminator model"); the other techniques read
-// world_normal alone.
+// (docs/comparing.md, "The terminator model") and bounds the blockers
+// pcss and the moments' --soft count (occluder_cone_above()); hard, pcf
+// and the moments' fixed filter read world_normal alone.
 float penumbra_shadow_at(int light, vec3 world_position, vec3 world_normal, vec3 shading_normal,
                          vec2 pixel) {
   return penumbra_shadow_technique_at(penumbra_block.counts.z, light, world_position, world_normal,
