@@ -197,7 +197,12 @@ float virtual_hard(VirtualReceiver r) {
 // window. A penumbra
 // wider than a page is read from a coarser level rather than cut, and one
 // that crosses a level border is filtered at the same level on both sides
-// wherever it is wider than the finer level's window.
+// wherever it is wider than the finer level's window. The search and the
+// filter take the receiver's plane as shadow_pcss() does, flat on a
+// receiver facing away from the source's centre (blocker_plane_gradient();
+// the filter took the triangle's plane there: RMSE at 1280x720, the bunny's
+// sun at 11.86 degrees 0.03592 -> 0.03576, its spot at 1.5 0.01808 ->
+// 0.01804, seven other cells within 0.00004).
 float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, vec3 world,
                    vec3 normal, vec3 shading_normal, vec2 rotation, float noise) {
   const float window = float(VIRTUAL_PCSS_WINDOW);
@@ -206,9 +211,9 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
   float d_receiver = linear_depth_of(search.view, search.s.depth);
   float search_width =
       min(virtual_search_texels(r.level, search.level, world), float(MAX_PCF_WIDTH));
+  vec3 to_light = direction_to_light(light, world);
   vec2 gradient = blocker_plane_gradient(
-      receiver_depth_gradient(search.view, search.s, normal, params.max_slope), normal,
-      direction_to_light(light, world));
+      receiver_depth_gradient(search.view, search.s, normal, params.max_slope), normal, to_light);
   OccluderCone cone =
       occluder_cone_above(occluder_cone(light, search.view, search.s.position, 0.0), search.view,
                           world, shading_normal);
@@ -225,7 +230,9 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
   float width = min(world_width / shadow_texel_world(f.view, d_receiver), float(MAX_PCF_WIDTH));
   float kernel = pcss_kernel_width(width);
   return virtual_pcf_bilinear(virtual_pool, f.level, f.s.uv, f.z,
-                              receiver_depth_gradient(f.view, f.s, normal, params.max_slope),
+                              blocker_plane_gradient(
+                                  receiver_depth_gradient(f.view, f.s, normal, params.max_slope),
+                                  normal, to_light),
                               kernel, pcss_filter_sample_count(kernel, params.pcss_filter_samples),
                               square_sample_shift(noise));
 }
