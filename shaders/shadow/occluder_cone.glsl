@@ -158,20 +158,13 @@ vec3 texel_point(GpuShadowView view, ivec2 texel, ivec2 size, float d, OccluderC
 }
 
 // Whether the surface stored in texel `texel` of view v (at relative depth
-// `occluder_depth`) can block the cone's light.
+// `occluder_depth`) can block the cone's light, and with `above`, lies above
+// the receiver's horizon as well (occluder_cone_above()).
 bool texel_occludes(GpuShadowView view, ivec2 texel, ivec2 size, float occluder_depth,
-                    OccluderCone cone) {
-  float d = linear_depth_of(view, occluder_depth);
-  // Half a texel's diagonal at the occluder: the texel stands for all of it.
-  return inside_occluder_cone(cone, texel_point(view, texel, size, d, cone),
-                              0.75 * shadow_texel_world(view, d));
-}
-
-// The same, and lying above the receiver's horizon (occluder_cone_above()).
-bool texel_occludes_above(GpuShadowView view, ivec2 texel, ivec2 size, float occluder_depth,
-                          OccluderCone cone) {
+                    OccluderCone cone, bool above) {
   float d = linear_depth_of(view, occluder_depth);
   vec3 p = texel_point(view, texel, size, d, cone);
+  // Half a texel's diagonal at the occluder: the texel stands for all of it.
   return inside_occluder_cone(cone, p, 0.75 * shadow_texel_world(view, d)) &&
-         dot(cone.horizon.xyz, p) + cone.horizon.w > 0.0;
+         (!above || dot(cone.horizon.xyz, p) + cone.horizon.w > 0.0);
 }

@@ -46,7 +46,7 @@ vec2 receiver_depth_gradient(GpuShadowView view, ShadowLookup s, vec3 normal, fl
       float receiver = depth + dot(gradient, offset);                                          \
       float occluder = FETCH(depth_maps, layer, texel);                                        \
       bool blocked =                                                                           \
-          receiver > occluder && texel_occludes(view, texel, size, occluder, cone);            \
+          receiver > occluder && texel_occludes(view, texel, size, occluder, cone, false);     \
       lit += blocked ? 0.0 : 1.0;                                                              \
     }                                                                                          \
     return lit / float(samples);                                                               \

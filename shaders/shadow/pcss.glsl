@@ -34,8 +34,7 @@
         vec2 offset = vec2(lower_left + gathered[c]) + 0.5 - center;                           \
         ivec2 texel = clamp(lower_left + gathered[c], ivec2(0), size - 1);                     \
         if (occluders[c] < z + dot(gradient, offset) &&                                        \
-            (above ? texel_occludes_above(view, texel, size, occluders[c], cone)               \
-                   : texel_occludes(view, texel, size, occluders[c], cone))) {                 \
+            texel_occludes(view, texel, size, occluders[c], cone, above)) {                    \
           blockers += 1.0;                                                                     \
           blocker_depth += occluders[c];                                                       \
         }                                                                                      \

@@ -119,8 +119,7 @@ float shadow_soft_moments(usampler2DArray sat, sampler2DArray depth_maps, int te
         float occluder = texelFetch(depth_maps, ivec3(texel, v), 0).r;
         vec2 offset = vec2(texel) + 0.5 - center;
         blocked = occluder < z + dot(gradient, offset) &&
-                  (cut ? texel_occludes_above(view, texel, size, occluder, cone)
-                       : texel_occludes(view, texel, size, occluder, cone));
+                  texel_occludes(view, texel, size, occluder, cone, cut);
       }
     }
     if (!blocked) return 1.0;
