@@ -74,8 +74,9 @@ float guard_band_texels(const ShadowMapSettings& settings, int map_size) {
       reach = 0.5f * settings.pcf_width;
       break;
     // PCSS's blocker search and penumbra are capped at this width;
-    // backprojection's blockers' region is not, and past the band it sees
-    // only what the face itself holds.
+    // backprojection's blockers' region is not, and past the band it reads
+    // the other faces (backprojection_cube_cell() in
+    // shaders/shadow/backprojection.glsl).
     case Technique::Pcss:
     case Technique::Backprojection:
       reach = 0.5f * MAX_PCF_WIDTH;

@@ -245,6 +245,25 @@ TEST_F(GpuTest, PointLightShadowIsContinuousAcrossCubeFaceEdges) {
   }
 }
 
+// Backprojection's blockers' region is not capped as the filters' are: under
+// a source 0.5 across, the bar's region reaches past the face's guard band
+// (67 texels on a 2048^2 face), where the face holds no texels. Reading
+// only the face, the bar's blockers beyond it were lost: a step of 0.26
+// across the edge against 0.08 between neighbouring columns inside a face.
+// The region past the band is read from the other faces
+// (backprojection_cube_cell()): 0.05 against 0.07.
+TEST_F(GpuTest, BackprojectionReadsBlockersPastACubeFacesGuardBand) {
+  ShadowSettings shadow;
+  shadow.technique = Technique::Backprojection;
+  shadow.map_size = 2048;
+  shadow.light_size = 0.5f;
+  const SeamJump jump = measure_seam(shadow);
+  std::printf("backprojection: largest step across the face edge %.3f, inside a face %.3f\n",
+              jump.seam, jump.control);
+  EXPECT_GT(jump.control, 0.02f);
+  EXPECT_LE(jump.seam, 1.5f * jump.control);
+}
+
 // The shadow-map view of a point light: its six faces tiled three to a
 // row, +x -x +y on top, -y +z -z below, each tile the face's map as it is.
 TEST_F(GpuTest, ShadowMapViewTilesTheCubeFaces) {
