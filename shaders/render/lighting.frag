@@ -324,9 +324,9 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
                           shadow_params.pcf_samples, rotation);
 #else
   // PCSS models the light's source itself: the cone it really subtends.
-  OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
   return pcss_lit_fraction(v, s, z, blocker_plane_gradient(gradient, normal, to_light),
-                           occluder_cone_above(cone, view, world, shading_normal), rotation);
+                           occluder_cone_above(light, view, s.position, world, shading_normal),
+                           rotation);
 #endif
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);

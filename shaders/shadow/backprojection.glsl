@@ -203,6 +203,15 @@ void backprojection_region(vec2 center, float reach, ivec2 size, out ivec2 first
   last = max(min(ivec2(ceil(center + reach)) - 1, size - 1), first);
 }
 
+// The texels [first, last] of a cube face's region of half-width `reach`
+// texels around `center`, past the face's map (`size` texels) into the
+// other faces up to a map's width (backprojection_cube_cell()).
+void backprojection_outer_region(vec2 center, float reach, ivec2 size, out ivec2 first,
+                                 out ivec2 last) {
+  first = max(ivec2(floor(center - reach)), -size);
+  last = min(ivec2(ceil(center + reach)) - 1, 2 * size - 1);
+}
+
 // The hierarchy's levels and the size of level l: OpenGL's chain, floor(
 // size / 2^l) (taken from level 0: textureSize() at a level chosen at run
 // time read level 2's size on llvmpipe).
@@ -1098,7 +1107,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   ivec2 first, last;
   vec2 bounds = vec2(0.0);
   // A cube face's region reaches past its map into the other faces
-  // (backprojection_cube_cell()), up to a map's width past each edge.
+  // (backprojection_outer_region()).
   bool cube = view.radial_depth != 0;
   int cube_first = cube ? backprojection_cube_first(view, layer) : 0;
   ivec2 outer_first = ivec2(0), outer_last = ivec2(-1);
@@ -1106,8 +1115,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     backprojection_region(r.center, reach, size, first, last);
     bounds = backprojection_depth_bounds(hierarchy, layer, first, last);
     if (cube) {
-      outer_first = max(ivec2(floor(r.center - reach)), -size);
-      outer_last = min(ivec2(ceil(r.center + reach)) - 1, 2 * size - 1);
+      backprojection_outer_region(r.center, reach, size, outer_first, outer_last);
       vec2 outer = backprojection_cube_bounds(hierarchy, view, cube_first, outer_first,
                                               outer_last, size);
       bounds = vec2(min(bounds.x, outer.x), max(bounds.y, outer.y));
@@ -1123,8 +1131,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   backprojection_region(r.center, reach, size, first, last);
   bool outside = false;
   if (cube) {
-    outer_first = max(ivec2(floor(r.center - reach)), -size);
-    outer_last = min(ivec2(ceil(r.center + reach)) - 1, 2 * size - 1);
+    backprojection_outer_region(r.center, reach, size, outer_first, outer_last);
     outside = any(lessThan(outer_first, ivec2(0))) || any(greaterThanEqual(outer_last, size));
   }
   // The receiver's plane over the region lies within z -+ slope.

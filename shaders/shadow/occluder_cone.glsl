@@ -81,17 +81,19 @@ OccluderCone occluder_cone(GpuLight light, GpuShadowView view, vec3 receiver,
   return c;
 }
 
-// Cone `c` for a receiver whose rays start at `origin` (world) and count
-// only above the horizon of `shading_normal` (docs/comparing.md, "The
-// terminator model"): a surface below that plane hides none of the source
-// points that count. Past a terminator (the source's centre below the
+// The cone the light's source really subtends (occluder_cone() with no
+// minimum) from `receiver` (world), for rays that start at `origin`
+// (world) and count only above the horizon of `shading_normal`
+// (docs/comparing.md, "The terminator model"): a surface below that plane
+// hides none of the source points that count. Past a terminator (the source's centre below the
 // horizon) the map shows the receiver's own body in front of it, below
 // that plane (HORIZON_BLOCKER_SEARCH_DEFINE in pcss.glsl). The direction
 // axis + t (t across the axis, within tan_half_angle of it) lies above the
 // horizon where dot(n_across, t) > -n_axis: a segment of the cone's disc
 // (OccluderCone::segment).
-OccluderCone occluder_cone_above(OccluderCone c, GpuShadowView view, vec3 origin,
+OccluderCone occluder_cone_above(GpuLight light, GpuShadowView view, vec3 receiver, vec3 origin,
                                  vec3 shading_normal) {
+  OccluderCone c = occluder_cone(light, view, receiver, 0.0);
   vec3 n = normalize(mat3(view.view) * shading_normal);
   c.horizon = vec4(n, -dot(n, (view.view * vec4(origin, 1.0)).xyz));
   float n_axis = dot(n, c.axis);

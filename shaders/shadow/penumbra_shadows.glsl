@@ -114,11 +114,10 @@ float penumbra_view_shadow(int technique, int v, GpuLight light, vec3 world, vec
     }
     // PCSS: the cone the light's source really subtends (its width is the
     // settings' light_size, or sun_angle for the sun).
-    OccluderCone cone = occluder_cone(light, view, s.position, 0.0);
     return shadow_pcss(penumbra_depth, penumbra_compare, v, view, s, z,
                        blocker_plane_gradient(gradient, normal, to_light),
-                       occluder_cone_above(cone, view, world, shading_normal), rotation,
-                       noise, params.pcss_blocker_samples, params.pcss_filter_samples);
+                       occluder_cone_above(light, view, s.position, world, shading_normal),
+                       rotation, noise, params.pcss_blocker_samples, params.pcss_filter_samples);
   }
   if (!filterable) return 1.0;
   bool quantized = penumbra_block.counts.w != 0;

@@ -97,8 +97,7 @@ float shadow_soft_moments(usampler2DArray sat, sampler2DArray depth_maps, int te
                                     sat_square_average(sat, v, center, radius, params.sat_scale),
                                     z, s.texel_depth);
   }
-  OccluderCone cone = occluder_cone_above(occluder_cone(light, view, s.position, 0.0), view,
-                                          origin, shading_normal);
+  OccluderCone cone = occluder_cone_above(light, view, s.position, origin, shading_normal);
   vec2 gradient =
       blocker_plane_gradient(receiver_depth_gradient(view, s, normal, params.max_slope), normal,
                              direction_to_light(light, origin));

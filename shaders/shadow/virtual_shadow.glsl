@@ -215,8 +215,7 @@ float virtual_pcss(int i, VirtualReceiver r, GpuShadow params, GpuLight light, v
   vec2 gradient = blocker_plane_gradient(
       receiver_depth_gradient(search.view, search.s, normal, params.max_slope), normal, to_light);
   OccluderCone cone =
-      occluder_cone_above(occluder_cone(light, search.view, search.s.position, 0.0), search.view,
-                          world, shading_normal);
+      occluder_cone_above(light, search.view, search.s.position, world, shading_normal);
   vec2 center = search.s.uv * float(virtual_level_texels(search.level));
   vec2 found = virtual_horizon_blocker_search(virtual_pool, search.level, search.view, center,
                                               d_receiver, search.z, gradient, cone, rotation,
