@@ -392,8 +392,9 @@ def main():
     aligned = [i for i in judged if same_surface(i)]
     lit = [i for i in aligned if unshadowed[4 * i] >= 0.1 * median]
 
-    def rmse(pixels):
-        return math.sqrt(sum((ref[4 * i] - factor[i]) ** 2 for i in pixels) / len(pixels))
+    def rmse(pixels, image=None):
+        image = ref if image is None else image
+        return math.sqrt(sum((image[4 * i] - factor[i]) ** 2 for i in pixels) / len(pixels))
 
     errors = [ref[4 * i] - factor[i] for i in lit]
     objects_lit = [i for i in lit if on_object(i)]
@@ -425,6 +426,16 @@ def main():
         "unjudged_but_lit_pixels": [(i % width, i // width, factor[i], unshadowed[4 * i] / median)
                                     for i in unjudged_lit[:50]],
     }
+    # The techniques' shadow factors over the same pixels.
+    result["techniques"] = []
+    for technique in job.get("techniques", []):
+        image = load(technique["image"])
+        result["techniques"].append({
+            "name": technique["name"],
+            "rmse": rmse(lit, image),
+            "rmse_objects": rmse(objects_lit, image) if objects_lit else 0.0,
+            "rmse_ground": rmse(ground_lit, image) if ground_lit else 0.0,
+        })
     print("PATHTRACE-CHECK " + json.dumps(result))
 
 
