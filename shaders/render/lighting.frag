@@ -74,11 +74,23 @@ layout(binding = UNIT_SHADOW_FILTERED) uniform sampler2DArray shadow_filtered;
 #endif
 
 in vec2 v_uv;
-#if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
-// Texel reads per pixel (LightingPass::count_fetches).
-layout(r32ui, binding = IMAGE_OUTPUT) uniform uimage2D backprojection_fetch_counts;
+#if defined(SHADOW_COUNT_FETCHES) && SHADOW_COUNT_FETCHES
+// Texel reads per pixel (LightingPass::count_fetches, fetch_count.glsl).
+layout(r32ui, binding = IMAGE_OUTPUT) uniform uimage2D shadow_fetch_counts;
 #endif
 layout(location = 0) out vec4 out_color;  // alpha: 1 where geometry was seen
+
+// A lookup's lit fraction `lit`, its texel reads added to the pixel's
+// count in the counting variant (fetch_count.glsl).
+#if defined(SHADOW_COUNT_FETCHES) && SHADOW_COUNT_FETCHES
+float counted_lookup(float lit) {
+  imageAtomicAdd(shadow_fetch_counts, ivec2(gl_FragCoord.xy), shadow_fetches);
+  shadow_fetches = 0u;
+  return lit;
+}
+#else
+#define counted_lookup(lit) (lit)
+#endif
 #if LIGHTING_VIEWS == LIGHTING_VIEWS_SHADED
 // The chosen light's shadow view (VIEW_SHADOW) in either view: the lit
 // image's pass leaves it too, so a study that reads both pays one pass.
@@ -324,20 +336,17 @@ float view_shadow_factor(int v, GpuLight light, vec3 world, vec3 normal, vec3 sh
                           shadow_params.pcf_samples, rotation);
 #else
   // PCSS models the light's source itself: the cone it really subtends.
-  return pcss_lit_fraction(v, s, z, blocker_plane_gradient(gradient, normal, to_light),
-                           occluder_cone_above(light, view, s.position, world, shading_normal),
-                           rotation);
+  return counted_lookup(
+      pcss_lit_fraction(v, s, z, blocker_plane_gradient(gradient, normal, to_light),
+                        occluder_cone_above(light, view, s.position, world, shading_normal),
+                        rotation));
 #endif
 #elif SHADOW_TECHNIQUE == TECHNIQUE_BACKPROJECTION
   vec2 gradient = receiver_depth_gradient(view, s, normal, shadow_params.max_slope);
-  float lit = shadow_backprojection(shadow_depth, shadow_filtered, v, view, s, z, gradient, normal,
-                                    shading_normal, int(light.position_type.w) == LIGHT_POINT,
-                                    ivec2(gl_FragCoord.xy), shadow_params.backprojection_cells);
-#if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
-  imageAtomicAdd(backprojection_fetch_counts, ivec2(gl_FragCoord.xy), backprojection_fetches);
-  backprojection_fetches = 0u;
-#endif
-  return lit;
+  return counted_lookup(shadow_backprojection(
+      shadow_depth, shadow_filtered, v, view, s, z, gradient, normal, shading_normal,
+      int(light.position_type.w) == LIGHT_POINT, ivec2(gl_FragCoord.xy),
+      shadow_params.backprojection_cells));
 #elif SHADOW_TECHNIQUE >= TECHNIQUE_VSM
 #if SHADOW_FILTER == FILTER_SAT && SOFT_SHADOWS
   float lit = soft_moment_shadow(v, s, z, light, world, normal, shading_normal, rotation);

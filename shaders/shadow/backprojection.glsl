@@ -55,6 +55,7 @@
 #pragma once
 #include "accumulate.glsl"
 #include "depth_map_hooks.glsl"
+#include "fetch_count.glsl"
 #include "penumbra.glsl"
 #include "view_select.glsl"
 
@@ -109,13 +110,6 @@ const float BACKPROJECTION_PLANE_SLACK = 0.1;
 // cell of the study within 0.0001 or better.
 const float BACKPROJECTION_SLIVER_SHARPNESS = 256.0;
 
-#if defined(BACKPROJECTION_COUNT_FETCHES) && BACKPROJECTION_COUNT_FETCHES
-// Texel reads per lookup (bench's debug variant: LightingPass's fetch count).
-uint backprojection_fetches = 0u;
-#define BACKPROJECTION_FETCHED(n) backprojection_fetches += uint(n)
-#else
-#define BACKPROJECTION_FETCHED(n)
-#endif
 
 // Backprojection's normal offset, in texels, for a receiver whose
 // triangle's normal makes the angle theta with the direction to the light
@@ -238,7 +232,7 @@ vec2 backprojection_depth_bounds(sampler2DArray hierarchy, int layer, ivec2 firs
       ivec2 c = lo + ivec2(x, y);
       if (any(greaterThan(c, hi))) continue;
       vec2 m = texelFetch(hierarchy, ivec3(c, layer), level).rg;
-      BACKPROJECTION_FETCHED(1);
+      SHADOW_FETCHED(1);
       bounds = vec2(min(bounds.x, m.x), max(bounds.y, m.y));
     }
   }
@@ -554,7 +548,7 @@ vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, i
       for (int tx = t0.x; tx <= t1.x; tx += 2) {                                                   \
         ivec2 t = ivec2(tx, ty);                                                                   \
         vec4 g = GATHER(depth_maps, layer, t);                                                     \
-        BACKPROJECTION_FETCHED(1);                                                                 \
+        SHADOW_FETCHED(1);                                                                 \
         /* Lower row (x: left, y: right) and upper row. */                                         \
         vec2 lower = backprojection_pair_extents(view, r, t, ivec2(1, 0), g.w, g.z, size);         \
         vec2 upper = backprojection_pair_extents(view, r, t + ivec2(0, 1), ivec2(1, 0), g.x,       \
@@ -569,14 +563,14 @@ vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, i
         vec2 right_depth = vec2(1.0), above_depth = vec2(1.0);                                     \
         if (own.y > 0.0 || own.w > 0.0) {                                                          \
           vec4 h = GATHER(depth_maps, layer, t + ivec2(2, 0));                                     \
-          BACKPROJECTION_FETCHED(1);                                                               \
+          SHADOW_FETCHED(1);                                                               \
           right = backprojection_pair_extents(view, r, t + ivec2(2, 0), ivec2(0, 1), h.w, h.x,     \
                                               size);                                               \
           right_depth = h.wx;                                                                      \
         }                                                                                          \
         if (own.z > 0.0 || own.w > 0.0) {                                                          \
           vec4 h = GATHER(depth_maps, layer, t + ivec2(0, 2));                                     \
-          BACKPROJECTION_FETCHED(1);                                                               \
+          SHADOW_FETCHED(1);                                                               \
           above = backprojection_pair_extents(view, r, t + ivec2(0, 2), ivec2(1, 0), h.w, h.z,     \
                                               size);                                               \
           above_depth = h.wz;                                                                      \
@@ -846,14 +840,14 @@ void backprojection_cell_box(sampler2DArray hierarchy, int layer, GpuShadowView 
   if (c.x + 1 < cells.x && touches.x) {
     vec2 centre = vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y);
     vec3 m = texelFetch(hierarchy, ivec3(c.x + 1, c.y, layer), level - 1).rgb;
-    BACKPROJECTION_FETCHED(1);
+    SHADOW_FETCHED(1);
     right = backprojection_reach(view, r, layer, level, occluder,
                                  backprojection_cell_depth(r, m, centre), centre);
   }
   if (c.y + 1 < cells.y && touches.y) {
     vec2 centre = vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y));
     vec3 m = texelFetch(hierarchy, ivec3(c.x, c.y + 1, layer), level - 1).rgb;
-    BACKPROJECTION_FETCHED(1);
+    SHADOW_FETCHED(1);
     up = backprojection_reach(view, r, layer, level, occluder,
                               backprojection_cell_depth(r, m, centre), centre);
   }
@@ -884,7 +878,7 @@ uvec2 backprojection_front_texels(sampler2DArray depth_maps, int layer, Backproj
                                   ivec2 lower_left, ivec2 size, inout vec2 sum) {
   ivec2 t = min(lower_left, size - 2);
   vec4 g = textureGather(depth_maps, vec3(vec2(t + 1) / vec2(size), float(layer)));
-  BACKPROJECTION_FETCHED(1);
+  SHADOW_FETCHED(1);
   // Gathered: (0, 1), (1, 1), (1, 0), (0, 0).
   vec4 planes = backprojection_planes(r, vec2(t) + 0.5 - r.center, 1.0).zwyx;
   bvec4 front = lessThan(g, planes);
@@ -923,7 +917,7 @@ BackprojectionCellFront backprojection_cut_quarters(sampler2DArray depth_maps, i
                 texelFetch(depth_maps, ivec3(min(t + across, size - 1), layer), 0).r,
                 texelFetch(depth_maps, ivec3(min(t + above, size - 1), layer), 0).r,
                 texelFetch(depth_maps, ivec3(min(t + half_cell, size - 1), layer), 0).r);
-  BACKPROJECTION_FETCHED(4);
+  SHADOW_FETCHED(4);
   vec4 planes = backprojection_planes(r, vec2(t) + 0.5 - r.center, float(half_cell));
   bvec4 front = lessThan(d, planes);
   d = mix(vec4(1.0e30), d, front);
@@ -971,7 +965,7 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
   vec2 a0 = vec2(c << level) - r.center;
   vec2 a1 = vec2(mix(ivec2(c + 1) << level, size, equal(c, cells - 1))) - r.center;
   vec3 m = texelFetch(hierarchy, ivec3(c, layer), level - 1).rgb;  // nearest, farthest, mean
-  BACKPROJECTION_FETCHED(1);
+  SHADOW_FETCHED(1);
   float plane = r.z + dot(r.gradient, 0.5 * (a0 + a1));
   if (m.x >= plane ||
       backprojection_off_source(r, a0, a1, backprojection_least_extent(view, r, a0, a1, m.x),
@@ -1035,7 +1029,7 @@ vec3 backprojection_cube_cell(sampler2DArray hierarchy, GpuShadowView view, int 
   vec2 q = tangent / view.depth_range.z + 0.5 * view.depth_range.w;
   ivec2 cells = backprojection_cells(hierarchy, level);
   ivec2 c = clamp(ivec2(floor(q)) >> (level + 1), ivec2(0), cells - 1);
-  BACKPROJECTION_FETCHED(1);
+  SHADOW_FETCHED(1);
   return texelFetch(hierarchy, ivec3(c, first + face), level).rgb;
 }
 
@@ -1155,7 +1149,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
   r.steps_open =
       view.second_layer > 0 &&
       texelFetch(depth_maps, ivec3(ivec2(floor(r.center)), view.second_layer), 0).r >= z;
-  BACKPROJECTION_FETCHED(int(view.second_layer > 0));
+  SHADOW_FETCHED(int(view.second_layer > 0));
   if (span <= max_cells) {
     // The texels themselves, and the row and column below the region,
     // whose patches may reach into it.
@@ -1238,7 +1232,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
           int surface_layer = surface == 0 ? layer : view.second_layer;
           vec2 b = vec2(-1.0, 2.0);  // no coarser level: neither behind nor in front
           if (merge_level == 1) b = texelFetch(hierarchy, ivec3(p, surface_layer), level).rg;
-          BACKPROJECTION_FETCHED(merge_level);
+          SHADOW_FETCHED(merge_level);
           // (The second surfaces lie behind the first.)
           if (b.x >= plane ||
               (merge_level == 1 &&
@@ -1263,13 +1257,13 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
               float right = 0.0, up = 0.0;
               if (px + 1 < parents.x) {
                 float depth = texelFetch(hierarchy, ivec3(px + 1, py, surface_layer), level).r;
-                BACKPROJECTION_FETCHED(1);
+                SHADOW_FETCHED(1);
                 right = backprojection_reach(view, r, surface_layer, level + 1, b.x, depth,
                                              vec2(a1.x + 0.5 * (a1.x - a0.x), mid.y));
               }
               if (py + 1 < parents.y) {
                 float depth = texelFetch(hierarchy, ivec3(px, py + 1, surface_layer), level).r;
-                BACKPROJECTION_FETCHED(1);
+                SHADOW_FETCHED(1);
                 up = backprojection_reach(view, r, surface_layer, level + 1, b.x, depth,
                                           vec2(mid.x, a1.y + 0.5 * (a1.y - a0.y)));
               }

@@ -4,6 +4,7 @@
 // engine includes (penumbra_shadows.glsl), so both shade alike.
 #pragma once
 
+#include "fetch_count.glsl"
 #include "hard.glsl"
 #include "pcf.glsl"
 
@@ -29,6 +30,7 @@
       vec2 sample_point = center + point * (0.5 * search);                                     \
       ivec2 lower_left = ivec2(floor(sample_point - 0.5));                                     \
       vec4 occluders = GATHER(depth_maps, v, lower_left);                                      \
+      SHADOW_FETCHED(1);                                                                       \
       for (int c = 0; c < 4; ++c) {                                                            \
         /* Each texel against the receiver's plane at that texel. */                           \
         vec2 offset = vec2(lower_left + gathered[c]) + 0.5 - center;                           \
@@ -123,9 +125,13 @@ float shadow_pcss(sampler2DArray depth_maps, sampler2DArrayShadow compare_maps, 
   float width = min(
       penumbra_world_width(view, d_receiver, d_blocker) / shadow_texel_world(view, d_receiver),
       float(MAX_PCF_WIDTH));
-  if (width <= 0.0) return shadow_hard(depth_maps, v, s.uv, z, 0.0);
+  if (width <= 0.0) {
+    SHADOW_FETCHED(1);
+    return shadow_hard(depth_maps, v, s.uv, z, 0.0);
+  }
   float kernel = pcss_kernel_width(width);
   vec2 shift = square_sample_shift(noise);
-  return shadow_pcf_bilinear(compare_maps, v, s.uv, z, gradient, kernel,
-                             pcss_filter_sample_count(kernel, filter_samples), shift);
+  int taps = pcss_filter_sample_count(kernel, filter_samples);
+  SHADOW_FETCHED(taps);
+  return shadow_pcf_bilinear(compare_maps, v, s.uv, z, gradient, kernel, taps, shift);
 }

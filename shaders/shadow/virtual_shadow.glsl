@@ -103,7 +103,7 @@ vec2 virtual_depth_bounds(int level, ivec2 first, ivec2 last) {
     for (int cx = lo.x; cx <= hi.x; ++cx) {
       ivec2 texel = ivec2(cx, cy) * cell;
       uint entry = virtual_page_entry(level, texel / VIRTUAL_PAGE_TEXELS);
-      BACKPROJECTION_FETCHED(1);
+      SHADOW_FETCHED(1);
       if ((entry & PAGE_RESIDENT) == 0u) {
         bounds.y = max(bounds.y, VIRTUAL_MISSING_DEPTH);
         continue;

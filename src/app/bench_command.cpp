@@ -400,8 +400,9 @@ int run_bench_command(BenchArgs& args) {
   std::vector<std::optional<std::vector<VirtualOrbitFrame>>> orbits;
   const std::optional<std::size_t> moving = movable_shape(scene);
   const int cached_frames = std::min(args.frames, kMaxCachedFrames);
-  // Backprojection's texel reads per pixel {min, mean, max}: its work is
-  // bounded per pixel, not fixed, so its time depends on the scene.
+  // PCSS's and backprojection's texel reads per pixel {min, mean, max}:
+  // their work is bounded per pixel, not fixed, so their time depends on
+  // the scene (LightingPass::counts_fetches()).
   std::vector<std::optional<std::array<double, 3>>> fetches(plan.size());
   for (std::size_t i = 0; i < plan.size(); ++i) {
     const ShadowSettings& settings = plan[i];
@@ -428,9 +429,10 @@ int run_bench_command(BenchArgs& args) {
       print_orbit(*orbit);
     }
     orbits.push_back(orbit);
-    if (settings.technique == Technique::Backprojection) {
-      fetches[i] = renderer.count_backprojection_fetches(args.render, settings);
-      std::printf("  backprojection fetches per pixel: min %.0f, mean %.1f, max %.0f\n",
+    if (LightingPass::counts_fetches(settings)) {
+      fetches[i] = renderer.count_lookup_fetches(args.render, settings);
+      std::printf("  %s fetches per pixel: min %.0f, mean %.1f, max %.0f\n",
+                  std::string(enum_name<Technique>(kTechniqueNames, settings.technique)).c_str(),
                   (*fetches[i])[0], (*fetches[i])[1], (*fetches[i])[2]);
     }
     // Each result as it is measured, also when stdout is a file (a full

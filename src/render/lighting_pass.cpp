@@ -35,24 +35,29 @@ const char* flag(bool on) {
 
 }  // namespace
 
+bool LightingPass::counts_fetches(const ShadowSettings& settings) {
+  return (settings.technique == Technique::Pcss ||
+          settings.technique == Technique::Backprojection) &&
+         settings.shadow_maps != ShadowMapKind::Virtual;
+}
+
 const gl::Program& LightingPass::program_for(const ShadowSettings& settings, int view) {
   // Only the shaded views march the contact shadows or cast a sub-frame's
   // rays (the reference returns before them, the inspecting views take no
   // lookup): the other views' programs do not differ by them.
   const int views = lighting_views(view);
   const bool shaded = views == LIGHTING_VIEWS_SHADED;
-  const ProgramKey key{
-      .technique = technique_define(settings.technique),
-      .filter = filter_define(settings),
-      .quantized_moments = uses_quantized_moments(settings),
-      .soft = settings.soft,
-      .shadow_mips = uses_shadow_mips(settings),
-      .count_fetches = fetch_counts_ != 0 && settings.technique == Technique::Backprojection,
-      .virtual_maps = settings.shadow_maps == ShadowMapKind::Virtual,
-      .views = views,
-      .contact_shadows = shaded && settings.contact_shadows,
-      .accumulate_subframes =
-          shaded && settings.accumulate > 1 && settings.technique == Technique::Hard};
+  const ProgramKey key{.technique = technique_define(settings.technique),
+                       .filter = filter_define(settings),
+                       .quantized_moments = uses_quantized_moments(settings),
+                       .soft = settings.soft,
+                       .shadow_mips = uses_shadow_mips(settings),
+                       .count_fetches = fetch_counts_ != 0 && counts_fetches(settings),
+                       .virtual_maps = settings.shadow_maps == ShadowMapKind::Virtual,
+                       .views = views,
+                       .contact_shadows = shaded && settings.contact_shadows,
+                       .accumulate_subframes = shaded && settings.accumulate > 1 &&
+                                               settings.technique == Technique::Hard};
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     const gl::Defines defines = {{"SHADOW_TECHNIQUE", std::to_string(key.technique)},
@@ -60,7 +65,7 @@ const gl::Program& LightingPass::program_for(const ShadowSettings& settings, int
                                  {"MSM_QUANTIZED", flag(key.quantized_moments)},
                                  {"SOFT_SHADOWS", flag(key.soft)},
                                  {"SHADOW_MIPS", flag(key.shadow_mips)},
-                                 {"BACKPROJECTION_COUNT_FETCHES", flag(key.count_fetches)},
+                                 {"SHADOW_COUNT_FETCHES", flag(key.count_fetches)},
                                  {"VIRTUAL_SHADOWS", flag(key.virtual_maps)},
                                  {"LIGHTING_VIEWS", std::to_string(key.views)},
                                  {"CONTACT_SHADOWS", flag(key.contact_shadows)},

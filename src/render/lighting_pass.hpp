@@ -28,10 +28,15 @@ class LightingPass {
                int height);
 
   // While `counts` (a GL_R32UI texture at the output's size) is not 0,
-  // backprojection runs in a variant that adds each pixel's texel reads
-  // to it (imageAtomicAdd): `penumbra bench`'s fetches per pixel. The
-  // normal frame writes nothing.
+  // the techniques that counts_fetches() names run in a variant that adds
+  // each pixel's texel reads to it (imageAtomicAdd,
+  // shaders/shadow/fetch_count.glsl): `penumbra bench`'s fetches per
+  // pixel. The normal frame writes nothing.
   void count_fetches(GLuint counts) { fetch_counts_ = counts; }
+  // Whether count_fetches() counts the lookups of these settings: the two
+  // soft shadows of the light's own source whose work varies per pixel,
+  // PCSS and backprojection, through the light's own maps (not virtual).
+  [[nodiscard]] static bool counts_fetches(const ShadowSettings& settings);
 
   // RGBA32F: rgb as the view defines, alpha 1 where geometry was seen.
   [[nodiscard]] const gl::Texture& output() const { return output_; }

@@ -695,12 +695,12 @@ Image Renderer::read_view() {
   return read_view_source(view_source());
 }
 
-std::array<double, 3> Renderer::count_backprojection_fetches(const RenderSettings& render,
-                                                             const ShadowSettings& shadow) {
+std::array<double, 3> Renderer::count_lookup_fetches(const RenderSettings& render,
+                                                     const ShadowSettings& shadow) {
   gl::Texture counts(gl::TextureInfo{.format = GL_R32UI,
                                      .width = render.width,
                                      .height = render.height,
-                                     .label = "backprojection fetch counts"});
+                                     .label = "shadow lookup fetch counts"});
   const GLuint zero = 0;
   glClearTexImage(counts.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   lighting_pass_.count_fetches(counts.id());

@@ -154,11 +154,12 @@ class Renderer {
   // the light's shadow views tiled three to a row (ViewTilingPass).
   // The ao view is the AO texture as the lighting pass reads it.
   [[nodiscard]] Image read_view();
-  // Renders the frame again in backprojection's fetch-counting variant
-  // (LightingPass::count_fetches) and returns its texel reads per pixel
-  // that sees geometry, all lights together: {min, mean, max}.
-  [[nodiscard]] std::array<double, 3> count_backprojection_fetches(const RenderSettings& render,
-                                                                   const ShadowSettings& shadow);
+  // Renders the frame again in the lookups' fetch-counting variant
+  // (LightingPass::count_fetches; for the settings that
+  // LightingPass::counts_fetches() names) and returns their texel reads
+  // per pixel that sees geometry, all lights together: {min, mean, max}.
+  [[nodiscard]] std::array<double, 3> count_lookup_fetches(const RenderSettings& render,
+                                                           const ShadowSettings& shadow);
   // The texture read_view() reads, left on the GPU (a window shows it),
   // and how its values are encoded. Valid until the next render().
   [[nodiscard]] ViewSource view_source();

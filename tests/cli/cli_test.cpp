@@ -109,6 +109,28 @@ TEST(Cli, BenchWritesJsonWithEveryPass) {
   EXPECT_TRUE(sat.at("runs").at(0).at("passes").contains("SAT columns"));
 }
 
+// PCSS's and backprojection's texel reads per pixel (a texelFetch, gather
+// or compare each), counted in a variant of the lighting pass: PCSS reads
+// at most its two blocker searches' samples and its filter's taps;
+// techniques whose reads do not vary per pixel are not counted.
+TEST(Cli, BenchCountsTheSoftShadowLookupsTexelReads) {
+  const nlohmann::json j = bench_json(
+      "--frames 1 --warmup 0 --technique hard,pcss,backprojection --light spot --light-size 1.5 "
+      "--pcss-blocker-samples 8 --pcss-filter-samples 16 --width 64 --height 36 "
+      "--shadow-map-size 256",
+      "bench-fetches.json");
+  ASSERT_EQ(j.at("runs").size(), 3u);
+  EXPECT_FALSE(j.at("runs").at(0).contains("fetches_per_pixel"));
+  const auto& pcss = j.at("runs").at(1).at("fetches_per_pixel");
+  const auto& backprojection = j.at("runs").at(2).at("fetches_per_pixel");
+  for (const auto& fetches : {pcss, backprojection}) {
+    EXPECT_GT(fetches.at("mean").get<double>(), 0.0);
+    EXPECT_LE(fetches.at("min").get<double>(), fetches.at("mean").get<double>());
+    EXPECT_LE(fetches.at("mean").get<double>(), fetches.at("max").get<double>());
+  }
+  EXPECT_LE(pcss.at("max").get<double>(), 2 * 8 + 16);
+}
+
 // --technique none is the frame without shadows: it has no maps, so no
 // pass over them and no yardstick copying them.
 TEST(Cli, BenchTimesAFrameWithoutShadows) {

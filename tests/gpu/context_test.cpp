@@ -142,11 +142,13 @@ TEST_F(GpuTest, EveryShaderCompiles) {
       EXPECT_NO_THROW(gl::Program::compute(path, defines)) << path;
     }
   }
-  // Backprojection's fetch-counting variant (LightingPass::count_fetches).
-  EXPECT_NO_THROW(
-      gl::Program::graphics("common/fullscreen.vert", "render/lighting.frag",
-                            {{"SHADOW_TECHNIQUE", std::to_string(TECHNIQUE_BACKPROJECTION)},
-                             {"BACKPROJECTION_COUNT_FETCHES", "1"}}));
+  // The lookups' fetch-counting variant (LightingPass::count_fetches).
+  for (int technique : {TECHNIQUE_PCSS, TECHNIQUE_BACKPROJECTION}) {
+    EXPECT_NO_THROW(gl::Program::graphics(
+        "common/fullscreen.vert", "render/lighting.frag",
+        {{"SHADOW_TECHNIQUE", std::to_string(technique)}, {"SHADOW_COUNT_FETCHES", "1"}}))
+        << technique;
+  }
   // The programs of the other views, and of the options compiled in only
   // where they are on (LightingPass::program_for).
   for (int technique = TECHNIQUE_NONE; technique <= TECHNIQUE_EVSM4; ++technique) {
