@@ -269,20 +269,37 @@ def main():
     scene.collection.objects.link(cam_obj)
     scene.camera = cam_obj
 
+    # The light (the ratio of the two renders does not depend on its
+    # strength): a spot light's square source, the sun's disc of
+    # directions (its angular diameter), a point light's sphere.
     light = scene_desc["lights"][job.get("light", 0)]
-    if light["type"] != "spot":
-        raise SystemExit("pathtrace-check: only spot lights are supported")
-    position = Vector(light["position"])
-    direction = (Vector(light["target"]) - position).normalized()
-    # stable_up (src/shadow/light_view.cpp): the shadow map's, and so the
-    # reference square's, orientation.
-    up = Vector((0, 0, -1)) if abs(direction.y) > 0.99 else Vector((0, 1, 0))
-    light_data = bpy.data.lights.new("square", "AREA")
-    light_data.shape = "SQUARE"
-    light_data.size = job["light_size"]
-    light_data.energy = 1000.0
-    light_obj = bpy.data.objects.new("square", light_data)
-    light_obj.matrix_world = Matrix.Translation(to_blender(position)) @ look_rotation(direction, up).to_4x4()
+    if light["type"] == "spot":
+        position = Vector(light["position"])
+        direction = (Vector(light["target"]) - position).normalized()
+        # stable_up (src/shadow/light_view.cpp): the shadow map's, and so
+        # the reference square's, orientation.
+        up = Vector((0, 0, -1)) if abs(direction.y) > 0.99 else Vector((0, 1, 0))
+        light_data = bpy.data.lights.new("square", "AREA")
+        light_data.shape = "SQUARE"
+        light_data.size = job["light_size"]
+        light_data.energy = 1000.0
+        placement = Matrix.Translation(to_blender(position)) @ look_rotation(direction, up).to_4x4()
+    elif light["type"] == "directional":
+        direction = Vector(light["direction"]).normalized()
+        light_data = bpy.data.lights.new("sun", "SUN")
+        light_data.angle = math.radians(job["light_size"])
+        light_data.energy = 3.0
+        placement = look_rotation(direction, Vector((0, 1, 0)) if abs(direction.y) < 0.99
+                                  else Vector((0, 0, -1))).to_4x4()
+    elif light["type"] == "point":
+        light_data = bpy.data.lights.new("sphere", "POINT")
+        light_data.shadow_soft_size = 0.5 * job["light_size"]
+        light_data.energy = 1000.0
+        placement = Matrix.Translation(to_blender(Vector(light["position"])))
+    else:
+        raise SystemExit("pathtrace-check: unknown light type " + str(light["type"]))
+    light_obj = bpy.data.objects.new("light", light_data)
+    light_obj.matrix_world = placement
     light_obj.visible_camera = False
     scene.collection.objects.link(light_obj)
 
