@@ -202,6 +202,12 @@ def add_object(name, shape, material):
     return obj
 
 
+def stable_up(direction):
+    # stable_up (src/shadow/light_view.cpp): a light view's up, and so the
+    # orientation of its shadow map and of the reference's square.
+    return Vector((0, 0, -1)) if abs(direction.y) > 0.99 else Vector((0, 1, 0))
+
+
 def look_rotation(forward, up):
     # glm::lookAt's frame: s = f x up, u = s x f; the camera (and an area
     # light) looks down its local -z with local y up.
@@ -276,21 +282,18 @@ def main():
     if light["type"] == "spot":
         position = Vector(light["position"])
         direction = (Vector(light["target"]) - position).normalized()
-        # stable_up (src/shadow/light_view.cpp): the shadow map's, and so
-        # the reference square's, orientation.
-        up = Vector((0, 0, -1)) if abs(direction.y) > 0.99 else Vector((0, 1, 0))
         light_data = bpy.data.lights.new("square", "AREA")
         light_data.shape = "SQUARE"
         light_data.size = job["light_size"]
         light_data.energy = 1000.0
-        placement = Matrix.Translation(to_blender(position)) @ look_rotation(direction, up).to_4x4()
+        placement = (Matrix.Translation(to_blender(position)) @
+                     look_rotation(direction, stable_up(direction)).to_4x4())
     elif light["type"] == "directional":
         direction = Vector(light["direction"]).normalized()
         light_data = bpy.data.lights.new("sun", "SUN")
         light_data.angle = math.radians(job["light_size"])
         light_data.energy = 3.0
-        placement = look_rotation(direction, Vector((0, 1, 0)) if abs(direction.y) < 0.99
-                                  else Vector((0, 0, -1))).to_4x4()
+        placement = look_rotation(direction, stable_up(direction)).to_4x4()
     elif light["type"] == "point":
         light_data = bpy.data.lights.new("sphere", "POINT")
         light_data.shadow_soft_size = 0.5 * job["light_size"]
