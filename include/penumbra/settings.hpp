@@ -175,13 +175,12 @@ struct ShadowMapSettings {
   // whose cells it spans in at most this many, so the work per pixel is
   // bounded. A cell stands at the mean depth of its texels, and one that a
   // silhouette cuts is read texel by texel where the cells are 4 texels
-  // wide (docs/rendering.md). Default scene, source 1.5, 320x180, 1024^2
-  // maps: RMSE 0.0246 at 16, 0.0167 at 32, 0.0115 at 40 (cells at their
-  // nearest depth, cut ones as quarters). 640x360, 2048^2 maps, 256 rays,
-  // default scene's spot at 1.5: 0.00305 at 64, 0.00296 at 96, 0.00298 at
-  // 128; the lighting pass (bench, llvmpipe) 1127, 2357 and 2685 ms,
-  // PCSS's 124 ms. Virtual shadow maps read their region texel by texel
-  // at a level where it spans at most VIRTUAL_BACKPROJECTION_WINDOW texels.
+  // wide (docs/rendering.md). 640x360, 2048^2 maps, 256 rays, the default
+  // scene's spot at 1.5: RMSE 0.0049 at 16, 0.0038 at 32, 0.0028 at 64;
+  // the lighting pass (bench, llvmpipe) 400, 602 and 1066 ms, PCSS's 79
+  // ms; 96 and 128 buy no more (docs/rendering.md). Virtual shadow maps
+  // read their region texel by texel at a level where it spans at most
+  // VIRTUAL_BACKPROJECTION_WINDOW texels.
   int backprojection_cells = 64;
   // Moment soft shadows (vsm, msm, msm16 with --filter sat): the filter
   // width follows the estimated penumbra, at least the fixed --blur.

@@ -65,7 +65,8 @@
 // most; a wider region is read from the hierarchy's level whose cells it
 // spans in at most this many.
 // The coarsest cells (2^level texels wide) whose 2 x 2 around the receiver
-// are read as texels: up to 16 x 16 gathers. Default scene, source 1.5,
+// are read as texels: up to 16 x 16 gathers; coarser ones around them as
+// cells (backprojection_near_patches()). Default scene, source 1.5,
 // 4096^2 maps (cells of 8 texels), 640x360: RMSE 0.0148 at 2, 0.0117 at 3.
 #define BACKPROJECTION_REFINE_LEVEL 3
 // How far apart, in source widths, the projections of a 2 x 2 of cells'
@@ -995,6 +996,56 @@ void backprojection_cell_patch(sampler2DArray depth_maps, sampler2DArray hierarc
   }
 }
 
+// The lower left of the 2 x 2 cells of the hierarchy's level level - 1
+// (2^level texels wide, `cells` of them) around the receiver's lookup.
+ivec2 backprojection_near_cells(BackprojectionReceiver r, int level, ivec2 cells) {
+  return clamp(ivec2(floor(r.center / float(1 << level) - 0.5)), ivec2(0),
+               max(cells - 2, ivec2(0)));
+}
+
+// Hides the source points behind the 2 x 2 cells of 2^level texels around
+// the receiver's lookup (backprojection_near_cells()), nearest first and
+// finer the nearer: the 2 x 2 of cells BACKPROJECTION_REFINE_LEVEL wide
+// (or `level`, if finer) as texels, then each wider level's 2 x 2 up to
+// `level`'s as the cells of the level below it (backprojection_cell_patch()),
+// those read already left: 16 texels by 16 and 12 cells a level at most.
+// A contact further than a few texels from the receiver lies in a cell of
+// its own, which the receiver's plane cuts, and is read finer there. The
+// texels alone up to `level`'s 2 x 2 cost too much where the region is
+// wide (4 x 4 gathers a level); with the cells of `level` as they are, the
+// default scene's spot light 6 wide (640x360) read the ground along the
+// box's lit foot as umbra where the reference reads 0.93 lit (RMSE 0.0206;
+// so, 0.0142), and with --backprojection-cells 16 its spot at 1.5 did
+// the same (0.0180; so, 0.0045).
+void backprojection_near_patches(sampler2DArray depth_maps, sampler2DArray hierarchy, int layer,
+                                 GpuShadowView view, BackprojectionReceiver r, int level,
+                                 float nearest_extent, inout uvec4 low, inout uvec4 high) {
+  ivec2 size = textureSize(depth_maps, 0).xy;
+  int finest = min(level, BACKPROJECTION_REFINE_LEVEL);
+  ivec2 cells = backprojection_cells(hierarchy, finest - 1);
+  ivec2 inner = backprojection_near_cells(r, finest, cells);
+  ivec2 t0 = inner << finest;
+  ivec2 t1 = mix(t0 + (2 << finest), size, equal(inner + 1, cells - 1)) - 1;
+  backprojection_texel_patches(depth_maps, layer, view, r, t0, t1, low, high);
+  for (int ring = finest; ring < level; ++ring) {
+    // Level ring + 1's 2 x 2 in cells of `ring` (the last cell of a row
+    // or column takes an odd remainder), but `inner`, read above.
+    ivec2 wider_cells = backprojection_cells(hierarchy, ring);
+    ivec2 outer = backprojection_near_cells(r, ring + 1, wider_cells);
+    ivec2 c0 = outer << 1;
+    ivec2 c1 = min(mix(c0 + 3, cells - 1, equal(outer + 1, wider_cells - 1)), cells - 1);
+    ivec2 n = c1 - c0 + 1;
+    for (int k = 0; k < n.x * n.y; ++k) {
+      ivec2 c = c0 + ivec2(k % n.x, k / n.x);
+      if (all(greaterThanEqual(c, inner)) && all(lessThanEqual(c, inner + 1))) continue;
+      backprojection_cell_patch(depth_maps, hierarchy, layer, view, r, ring, cells, c,
+                                nearest_extent, low, high);
+    }
+    cells = wider_cells;
+    inner = outer;
+  }
+}
+
 // A cube face's axis and up vector: twins of cube_face_axis() and
 // cube_face_up() in src/shadow/cube_views.cpp, whose glm::lookAt() makes
 // each face's view.
@@ -1170,21 +1221,6 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     int level = min(findMSB((span - 1) / max_cells) + 1,
                     backprojection_levels(hierarchy));
     ivec2 cells = backprojection_cells(hierarchy, level - 1);
-    // The 2 x 2 cells around the receiver are its texels: there a blocker
-    // is nearest, its patch hides the most of the source, and a cell the
-    // receiver's plane cuts (a contact: the box's foot) would hide all of
-    // it from the receiver inside it. Default scene, 640x360, spot, RMSE
-    // at sources 0.5 / 1.5: 0.0056 / 0.0138 with cells only, 0.0049 /
-    // 0.0116 so, 0.0045 / 0.0114 with every cut cell's texels (at 1.5x the
-    // lighting pass's time; this: 1.1x).
-    ivec2 near_cells =
-        clamp(ivec2(floor(r.center / float(1 << level) - 0.5)), ivec2(0), max(cells - 2, ivec2(0)));
-    bool refine_near = level <= BACKPROJECTION_REFINE_LEVEL;
-    if (refine_near) {
-      ivec2 t0 = near_cells << level;
-      ivec2 t1 = mix(t0 + (2 << level), size, equal(near_cells + 1, cells - 1)) - 1;
-      backprojection_texel_patches(depth_maps, layer, view, r, t0, t1, low, high);
-    }
     ivec2 lo = min(max(first >> level, ivec2(1)) - 1, cells - 1);
     ivec2 hi = min(last >> level, cells - 1);
     // The least extent of the patches there and of their neighbours: at
@@ -1194,6 +1230,17 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
     float nearest_extent = backprojection_least_extent(
         view, r, vec2(lo << level) - r.center, vec2(n1 + 1) - r.center,
         backprojection_depth_bounds(hierarchy, layer, lo << level, n1).x);
+    // The 2 x 2 cells around the receiver are read finer: there a blocker
+    // is nearest, its patch hides the most of the source, and a cell the
+    // receiver's plane cuts (a contact: the box's foot) would hide all of
+    // it from the receiver inside it (backprojection_near_patches()).
+    // Default scene, 640x360, spot, RMSE at sources 0.5 / 1.5: 0.0056 /
+    // 0.0138 with cells only, 0.0049 / 0.0116 so, 0.0045 / 0.0114 with
+    // every cut cell's texels (at 1.5x the lighting pass's time; this:
+    // 1.1x).
+    ivec2 near_cells = backprojection_near_cells(r, level, cells);
+    backprojection_near_patches(depth_maps, hierarchy, layer, view, r, level, nearest_extent, low,
+                                high);
     // The cells two by two, from the hierarchy's next level (the last
     // one of a row or column takes an odd remainder): a 2 x 2 behind the
     // receiver's plane hides nothing; one wholly in front whose depths
@@ -1243,7 +1290,7 @@ float shadow_backprojection(sampler2DArray depth_maps, sampler2DArray hierarchy,
           }
           // The second surfaces near the receiver are mostly its own surface
           // seen past a caster (the ground under the sphere): read as cells.
-          bool refine = refine_near && surface == 0;
+          bool refine = surface == 0;
           bool near = refine && all(lessThanEqual(c0, near_cells + 1)) &&
                       all(greaterThanEqual(c1, near_cells));
           if (!near && b.y < plane) {
