@@ -379,8 +379,9 @@ float shadow_factor(int i, vec3 world, vec3 normal, vec3 shading_normal, bool re
   GpuLight light = lights[i];
 #if VIRTUAL_SHADOWS
   if (virtual_shadow.lights[i].y > 0) {
-    return virtual_shadow_factor(i, shadow_params, light, world, normal, shading_normal,
-                                 rotation, interleaved_gradient_noise(floor(gl_FragCoord.xy)));
+    float noise = interleaved_gradient_noise(floor(gl_FragCoord.xy));
+    return counted_lookup(virtual_shadow_factor(i, shadow_params, light, world, normal,
+                                                shading_normal, rotation, noise));
   }
 #endif
   ViewSelection selected = select_shadow_view(light, world, camera_depth(world));

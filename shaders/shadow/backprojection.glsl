@@ -549,7 +549,6 @@ vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, i
       for (int tx = t0.x; tx <= t1.x; tx += 2) {                                                   \
         ivec2 t = ivec2(tx, ty);                                                                   \
         vec4 g = GATHER(depth_maps, layer, t);                                                     \
-        SHADOW_FETCHED(1);                                                                 \
         /* Lower row (x: left, y: right) and upper row. */                                         \
         vec2 lower = backprojection_pair_extents(view, r, t, ivec2(1, 0), g.w, g.z, size);         \
         vec2 upper = backprojection_pair_extents(view, r, t + ivec2(0, 1), ivec2(1, 0), g.x,       \
@@ -564,14 +563,12 @@ vec2 backprojection_pair_extents(GpuShadowView view, BackprojectionReceiver r, i
         vec2 right_depth = vec2(1.0), above_depth = vec2(1.0);                                     \
         if (own.y > 0.0 || own.w > 0.0) {                                                          \
           vec4 h = GATHER(depth_maps, layer, t + ivec2(2, 0));                                     \
-          SHADOW_FETCHED(1);                                                               \
           right = backprojection_pair_extents(view, r, t + ivec2(2, 0), ivec2(0, 1), h.w, h.x,     \
                                               size);                                               \
           right_depth = h.wx;                                                                      \
         }                                                                                          \
         if (own.z > 0.0 || own.w > 0.0) {                                                          \
           vec4 h = GATHER(depth_maps, layer, t + ivec2(0, 2));                                     \
-          SHADOW_FETCHED(1);                                                               \
           above = backprojection_pair_extents(view, r, t + ivec2(0, 2), ivec2(1, 0), h.w, h.z,     \
                                               size);                                               \
           above_depth = h.wz;                                                                      \

@@ -30,7 +30,6 @@
       vec2 sample_point = center + point * (0.5 * search);                                     \
       ivec2 lower_left = ivec2(floor(sample_point - 0.5));                                     \
       vec4 occluders = GATHER(depth_maps, v, lower_left);                                      \
-      SHADOW_FETCHED(1);                                                                       \
       for (int c = 0; c < 4; ++c) {                                                            \
         /* Each texel against the receiver's plane at that texel. */                           \
         vec2 offset = vec2(lower_left + gathered[c]) + 0.5 - center;                           \
@@ -132,6 +131,5 @@ float shadow_pcss(sampler2DArray depth_maps, sampler2DArrayShadow compare_maps, 
   float kernel = pcss_kernel_width(width);
   vec2 shift = square_sample_shift(noise);
   int taps = pcss_filter_sample_count(kernel, filter_samples);
-  SHADOW_FETCHED(taps);
   return shadow_pcf_bilinear(compare_maps, v, s.uv, z, gradient, kernel, taps, shift);
 }

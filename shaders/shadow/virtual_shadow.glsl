@@ -34,6 +34,7 @@ layout(binding = UNIT_VIRTUAL_BOUNDS) uniform sampler2DArray virtual_bounds;
 const float VIRTUAL_MISSING_DEPTH = 2.0;
 
 uint virtual_page_entry(int level, ivec2 page) {
+  SHADOW_FETCHED(1);
   return texelFetch(virtual_page_table, ivec3(virtual_level_slot(level, page), level), 0).r;
 }
 
@@ -43,6 +44,7 @@ float virtual_texel_depth(int level, ivec2 texel) {
   texel = clamp(texel, ivec2(0), ivec2(virtual_level_texels(level) - 1));
   uint entry = virtual_page_entry(level, texel / VIRTUAL_PAGE_TEXELS);
   if ((entry & PAGE_RESIDENT) == 0u) return VIRTUAL_MISSING_DEPTH;
+  SHADOW_FETCHED(1);
   return texelFetch(virtual_pool,
                     ivec3(texel & (VIRTUAL_PAGE_TEXELS - 1), int(entry & PAGE_INDEX_MASK)), 0)
       .r;
@@ -103,11 +105,11 @@ vec2 virtual_depth_bounds(int level, ivec2 first, ivec2 last) {
     for (int cx = lo.x; cx <= hi.x; ++cx) {
       ivec2 texel = ivec2(cx, cy) * cell;
       uint entry = virtual_page_entry(level, texel / VIRTUAL_PAGE_TEXELS);
-      SHADOW_FETCHED(1);
       if ((entry & PAGE_RESIDENT) == 0u) {
         bounds.y = max(bounds.y, VIRTUAL_MISSING_DEPTH);
         continue;
       }
+      SHADOW_FETCHED(1);
       vec2 m = texelFetch(virtual_bounds,
                           ivec3((texel & (VIRTUAL_PAGE_TEXELS - 1)) / cell,
                                 int(entry & PAGE_INDEX_MASK)),

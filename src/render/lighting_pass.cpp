@@ -36,9 +36,8 @@ const char* flag(bool on) {
 }  // namespace
 
 bool LightingPass::counts_fetches(const ShadowSettings& settings) {
-  return (settings.technique == Technique::Pcss ||
-          settings.technique == Technique::Backprojection) &&
-         settings.shadow_maps != ShadowMapKind::Virtual;
+  return settings.technique == Technique::Pcss ||
+         settings.technique == Technique::Backprojection;
 }
 
 const gl::Program& LightingPass::program_for(const ShadowSettings& settings, int view) {

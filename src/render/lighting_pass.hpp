@@ -35,7 +35,8 @@ class LightingPass {
   void count_fetches(GLuint counts) { fetch_counts_ = counts; }
   // Whether count_fetches() counts the lookups of these settings: the two
   // soft shadows of the light's own source whose work varies per pixel,
-  // PCSS and backprojection, through the light's own maps (not virtual).
+  // PCSS and backprojection, through the light's own maps or its virtual
+  // ones (whose every texel read is a page table's and a pool's).
   [[nodiscard]] static bool counts_fetches(const ShadowSettings& settings);
 
   // RGBA32F: rgb as the view defines, alpha 1 where geometry was seen.

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/cli_run.hpp"
+#include "penumbra/shadow/virtual_clipmap.hpp"
 
 namespace {
 
@@ -112,23 +113,33 @@ TEST(Cli, BenchWritesJsonWithEveryPass) {
 // PCSS's and backprojection's texel reads per pixel (a texelFetch, gather
 // or compare each), counted in a variant of the lighting pass: PCSS reads
 // at most its two blocker searches' samples and its filter's taps;
-// techniques whose reads do not vary per pixel are not counted.
+// techniques whose reads do not vary per pixel are not counted. Through
+// virtual maps every texel is two reads, its page table's entry and the
+// pool's texel, so a gather or a compare is eight, and finding the
+// resident level reads an entry a level.
 TEST(Cli, BenchCountsTheSoftShadowLookupsTexelReads) {
-  const nlohmann::json j = bench_json(
+  const std::string options =
       "--frames 1 --warmup 0 --technique hard,pcss,backprojection --light spot --light-size 1.5 "
       "--pcss-blocker-samples 8 --pcss-filter-samples 16 --width 64 --height 36 "
-      "--shadow-map-size 256",
-      "bench-fetches.json");
-  ASSERT_EQ(j.at("runs").size(), 3u);
-  EXPECT_FALSE(j.at("runs").at(0).contains("fetches_per_pixel"));
-  const auto& pcss = j.at("runs").at(1).at("fetches_per_pixel");
-  const auto& backprojection = j.at("runs").at(2).at("fetches_per_pixel");
-  for (const auto& fetches : {pcss, backprojection}) {
-    EXPECT_GT(fetches.at("mean").get<double>(), 0.0);
-    EXPECT_LE(fetches.at("min").get<double>(), fetches.at("mean").get<double>());
-    EXPECT_LE(fetches.at("mean").get<double>(), fetches.at("max").get<double>());
+      "--shadow-map-size 256";
+  const nlohmann::json j = bench_json(options, "bench-fetches.json");
+  const nlohmann::json virtual_maps =
+      bench_json(options + " --shadow-maps virtual", "bench-virtual-fetches.json");
+  for (const nlohmann::json* bench : {&j, &virtual_maps}) {
+    ASSERT_EQ(bench->at("runs").size(), 3u);
+    EXPECT_FALSE(bench->at("runs").at(0).contains("fetches_per_pixel"));
+    for (int run : {1, 2}) {
+      const auto& fetches = bench->at("runs").at(run).at("fetches_per_pixel");
+      EXPECT_GT(fetches.at("mean").get<double>(), 0.0);
+      EXPECT_LE(fetches.at("min").get<double>(), fetches.at("mean").get<double>());
+      EXPECT_LE(fetches.at("mean").get<double>(), fetches.at("max").get<double>());
+    }
   }
+  const auto& pcss = j.at("runs").at(1).at("fetches_per_pixel");
+  const auto& virtual_pcss = virtual_maps.at("runs").at(1).at("fetches_per_pixel");
   EXPECT_LE(pcss.at("max").get<double>(), 2 * 8 + 16);
+  EXPECT_LE(virtual_pcss.at("max").get<double>(), 8 * (2 * 8 + 16) + penumbra::kMaxVirtualLevels);
+  EXPECT_GT(virtual_pcss.at("mean").get<double>(), pcss.at("mean").get<double>());
 }
 
 // --technique none is the frame without shadows: it has no maps, so no
