@@ -347,6 +347,8 @@ void add_bench_command_options(CLI::App& command, BenchArgs& args) {
        "penumbra bench --technique vsm --sweep blur --filter sat"},
       {"one sub-frame of accumulated soft shadows, and what 64 of them cost",
        "penumbra bench --technique hard --accumulate 64"},
+      {"the source's two soft shadows, with the texels each reads per pixel",
+       "penumbra bench --technique pcss,backprojection --light-size 1.5"},
       {"the depth and resolve passes' cost per sample count of multisampled maps",
        "penumbra bench --technique vsm,msm --sweep msaa"},
   }));

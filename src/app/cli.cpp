@@ -198,7 +198,9 @@ std::unique_ptr<CLI::App> make_cli(CliArgs& args) {
                "images"),
       args.compare);
   add_bench_command_options(
-      *command("bench", "GPU time of every pass per technique, against a bandwidth yardstick"),
+      *command("bench",
+               "GPU time of every pass per technique, against a bandwidth yardstick; the "
+               "texels PCSS and backprojection read per pixel"),
       args.bench);
   add_report_command_options(
       *command("report",
