@@ -111,7 +111,6 @@ const float BACKPROJECTION_PLANE_SLACK = 0.1;
 // cell of the study within 0.0001 or better.
 const float BACKPROJECTION_SLIVER_SHARPNESS = 256.0;
 
-
 // Backprojection's normal offset, in texels, for a receiver whose
 // triangle's normal makes the angle theta with the direction to the light
 // `to_light`, where the settings' max_slope caps its depth gradient

@@ -130,6 +130,6 @@ float shadow_pcss(sampler2DArray depth_maps, sampler2DArrayShadow compare_maps, 
   }
   float kernel = pcss_kernel_width(width);
   vec2 shift = square_sample_shift(noise);
-  int taps = pcss_filter_sample_count(kernel, filter_samples);
-  return shadow_pcf_bilinear(compare_maps, v, s.uv, z, gradient, kernel, taps, shift);
+  return shadow_pcf_bilinear(compare_maps, v, s.uv, z, gradient, kernel,
+                             pcss_filter_sample_count(kernel, filter_samples), shift);
 }

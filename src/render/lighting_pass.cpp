@@ -36,8 +36,7 @@ const char* flag(bool on) {
 }  // namespace
 
 bool LightingPass::counts_fetches(const ShadowSettings& settings) {
-  return settings.technique == Technique::Pcss ||
-         settings.technique == Technique::Backprojection;
+  return settings.technique == Technique::Pcss || settings.technique == Technique::Backprojection;
 }
 
 const gl::Program& LightingPass::program_for(const ShadowSettings& settings, int view) {
